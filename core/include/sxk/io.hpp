@@ -1,0 +1,86 @@
+// Mesh files: Medit .mesh, Gmsh .msh (2.2 and 4.1 ASCII), TetGen .node/.ele(/.face), OFF, OBJ,
+// and VTK XML .vtu (write only). The format follows the file extension.
+//
+// Readers never return a half-built mesh and never crash on bad input: every problem throws
+// InputError naming the file, the 1-based line and the reason. What they check: truncated
+// files, counts that do not match, indices out of range, NaN/inf coordinates, unknown keywords,
+// binary garbage, and, through Mesh::assign_elements, duplicate and non-manifold elements.
+// Inverted elements (negative exact orientation when topological == ambient dimension) are an
+// error unless ReadOptions::reorient is set, which flips them and counts them.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "sxk/config.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/predicates.hpp"
+
+namespace sxk {
+
+enum class Format { medit, gmsh, tetgen, off, obj, vtu };
+
+SXK_API std::string_view to_string(Format format);
+// By extension: .mesh .msh .node .ele .off .obj .vtu; nullopt otherwise.
+SXK_API std::optional<Format> format_from_extension(const std::filesystem::path& path);
+
+// A reader's complaint. what() is "FILE:LINE: reason" (LINE is 0 when the problem is not tied to
+// a line, e.g. a missing file).
+class SXK_API InputError : public std::runtime_error {
+public:
+    InputError(std::string file, std::size_t line, std::string reason);
+    const std::string& file() const { return m_file; }
+    std::size_t line() const { return m_line; }
+    const std::string& reason() const { return m_reason; }
+
+private:
+    std::string m_file;
+    std::size_t m_line;
+    std::string m_reason;
+};
+
+// A writer's complaint (cannot open, disk full, format cannot hold the mesh).
+class SXK_API OutputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct ReadOptions {
+    bool reorient = false;  // flip inverted elements instead of refusing the file
+};
+
+struct ReadReport {
+    std::size_t reoriented = 0;  // elements flipped because of ReadOptions::reorient
+};
+
+// Reads a mesh file; for TetGen give either X.node or X.ele (the other, and X.face if present,
+// are found beside it). Throws InputError.
+SXK_API Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options = {},
+                       ReadReport* report = nullptr);
+
+// Reads from a stream (fuzzers, tests); `name` is used in error messages. TetGen needs two
+// streams and has its own entry point.
+SXK_API Mesh read_mesh(std::istream& in, Format format, const std::string& name,
+                       const ReadOptions& options = {}, ReadReport* report = nullptr);
+SXK_API Mesh read_tetgen(std::istream& node, const std::string& node_name, std::istream& ele,
+                         const std::string& ele_name, const ReadOptions& options = {},
+                         ReadReport* report = nullptr);
+
+struct WriteOptions {
+    int gmsh_version = 41;                      // 22 or 41
+    Positions positions = Positions::deformed;  // which coordinates go into the file
+    bool quality_cell_data = true;              // .vtu: aspect ratio etc. per element
+};
+
+// Writes by extension (for TetGen give X.node or X.ele: writes X.node, X.ele and X.face).
+// OFF and OBJ hold triangles: a tetrahedral mesh is written as its boundary surface.
+// Throws OutputError.
+SXK_API void write_mesh(const Mesh& mesh, const std::filesystem::path& path,
+                        const WriteOptions& options = {});
+
+}  // namespace sxk

@@ -1,0 +1,255 @@
+// The simplicial mesh: connectivity after Nienhuys' thesis chapter 7, plus geometry.
+//
+// Connectivity. An Element represents an oriented d-simplex and owns d+1 Face objects, one per
+// (d-1)-simplex, stored in the order of the invariant
+//
+//   (7.1)  faces(t)[i] represents simplex(t).subn(i)
+//   (7.2)  a face belongs to exactly the element that lists it
+//   (7.3)  mate(f) is invalid_id (f on the boundary) or a face whose simplex is -simplex(f)
+//   (7.4)  each d- and (d-1)-simplex is represented by one object only
+//   (7.5)  the boundary map holds exactly the faces sigma with -sigma not a face of the mesh
+//
+// and validate() checks these plus face-connected vertex stars (the connectedness condition at
+// the end of §7.3, which makes star(v) traversable from any element of it).
+//
+//          c                        Element <a,b,c> (positive: counter-clockwise)
+//         / \                        faces[0] = +<b,c>   mate -> face <c,b> of the neighbour
+//   f[1] /   \ f[0]                  faces[1] = -<a,c> = <c,a>
+//       /  E  \       d              faces[2] = +<a,b>
+//      a ----- b     /
+//        f[2]  \    /                boundary: the faces whose mate is invalid_id, keyed in
+//               \  /                 the boundary map by their simplex
+//                ..
+//
+// Storage (DESIGN.md "made fast"): elements and faces live in contiguous pools addressed by
+// 32-bit ids with free lists; a Face stores only its element and its mate (8 bytes) and derives
+// its simplex from (7.1). Identities: an ElementId/FaceId stays valid until the object is freed;
+// change_elements keeps both element and face identities.
+//
+// Geometry. Every vertex has a reference position (the undeformed material) and a deformed
+// position (the simulated shape; cuts act on it, thesis §3.2.2). Points always have three
+// coordinates; in a planar mesh (ambient dimension 2) z is 0.
+//
+// Edits are transactions: replace_elements and change_elements check their arguments first and
+// either complete or leave the mesh (and what watchers saw) exactly as it was, returning why.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "sxk/config.hpp"
+#include "sxk/detail/boundary_map.hpp"
+#include "sxk/ids.hpp"
+#include "sxk/outcome.hpp"
+#include "sxk/simplex.hpp"
+#include "sxk/watcher.hpp"
+
+namespace sxk {
+
+using Point = std::array<double, 3>;
+
+// One element's vertex substitution pi for change_elements: vertex j of the element's current
+// canonical simplex becomes new_vertices[j].
+struct ElementSubstitution {
+    ElementId element = invalid_id;
+    std::array<VertexId, 4> new_vertices{invalid_id, invalid_id, invalid_id, invalid_id};
+};
+
+// Labels of (d-1)-faces, as Medit "Triangles"/"Edges" references or Gmsh physical tags carry
+// them: keyed by the positively oriented simplex, kept for faces on the boundary or on
+// interfaces between materials, written back by the formats that have them.
+using FaceLabels = std::unordered_map<Simplex, int, SimplexHash>;
+
+class SXK_API Mesh {
+public:
+    // topological_dimension: 2 (triangles) or 3 (tetrahedra); ambient_dimension: 2 or 3, at
+    // least the topological one. Anything else throws std::invalid_argument.
+    Mesh(int topological_dimension, int ambient_dimension);
+
+    // Copies connectivity, geometry and labels; never watchers (a watcher watches one mesh).
+    Mesh(const Mesh& other);
+    Mesh& operator=(const Mesh& other);
+    Mesh(Mesh&& other) noexcept;
+    Mesh& operator=(Mesh&& other) noexcept;
+    ~Mesh();
+
+    int topological_dimension() const { return m_dimension; }
+    int ambient_dimension() const { return m_ambient; }
+    // d+1: vertices per element, faces per element.
+    int element_vertex_count() const { return m_dimension + 1; }
+
+    // ---- vertices and positions ---------------------------------------------------------------
+    std::size_t vertex_count() const { return m_reference.size(); }
+    // Adds a vertex with both positions; returns its id (ids are dense: 0, 1, 2, ...).
+    VertexId add_vertex(const Point& reference, const Point& deformed);
+    VertexId add_vertex(const Point& position) { return add_vertex(position, position); }
+    const Point& reference(VertexId v) const { return m_reference[v]; }
+    const Point& deformed(VertexId v) const { return m_deformed[v]; }
+    void set_reference(VertexId v, const Point& p) { m_reference[v] = p; }
+    void set_deformed(VertexId v, const Point& p) { m_deformed[v] = p; }
+    std::span<const Point> reference_positions() const { return m_reference; }
+    std::span<const Point> deformed_positions() const { return m_deformed; }
+    // Some element containing v, or invalid_id for a vertex in no element.
+    ElementId vertex_element(VertexId v) const { return m_vertex_element[v]; }
+
+    // ---- elements -----------------------------------------------------------------------------
+    std::size_t element_count() const { return m_element_count; }
+    // One past the largest element id ever handed out: iterate 0..capacity and skip dead ids.
+    std::size_t element_capacity() const { return m_elements.size(); }
+    bool is_element(ElementId t) const {
+        return t < m_elements.size() && m_elements[t].simplex.count() != 0;
+    }
+    const Simplex& simplex(ElementId t) const { return m_elements[t].simplex; }
+    FaceId face(ElementId t, int i) const { return m_elements[t].faces[static_cast<std::size_t>(i)]; }
+    std::span<const FaceId> faces(ElementId t) const {
+        return {m_elements[t].faces.data(), static_cast<std::size_t>(m_dimension + 1)};
+    }
+    int label(ElementId t) const { return m_elements[t].label; }
+    void set_label(ElementId t, int label) { m_elements[t].label = label; }
+    // The vertex of t not in face f (f must be a face of t).
+    VertexId opposite_vertex(ElementId t, FaceId f) const;
+    // The face of t not containing vertex v (v must be a vertex of t).
+    FaceId opposite_face(ElementId t, VertexId v) const;
+    // The neighbour of t across its i-th face, or invalid_id on the boundary.
+    ElementId neighbor(ElementId t, int i) const;
+
+    // ---- faces --------------------------------------------------------------------------------
+    std::size_t face_capacity() const { return m_faces.size(); }
+    bool is_face(FaceId f) const { return f < m_faces.size() && m_faces[f].element != invalid_id; }
+    ElementId face_element(FaceId f) const { return m_faces[f].element; }
+    FaceId mate(FaceId f) const { return m_faces[f].mate; }
+    // i such that faces(face_element(f))[i] == f.
+    int face_slot(FaceId f) const;
+    // simplex(face_element(f)).subn(face_slot(f)), by invariant 7.1.
+    Simplex face_simplex(FaceId f) const;
+
+    // ---- boundary -----------------------------------------------------------------------------
+    std::size_t boundary_face_count() const { return m_boundary.size(); }
+    // The boundary face representing exactly sigma (orientation included), or invalid_id.
+    FaceId find_boundary_face(const Simplex& sigma) const;
+    template <class Visit>  // visit(FaceId)
+    void for_each_boundary_face(Visit&& visit) const {
+        m_boundary.for_each([&](const detail::BoundaryMap::Key&, FaceId f) { visit(f); });
+    }
+    // Boundary faces sorted by id (deterministic order for writers and tests).
+    std::vector<FaceId> boundary_faces() const;
+
+    // ---- building and editing -----------------------------------------------------------------
+    void reserve(std::size_t vertices, std::size_t elements);
+
+    // Builds the connectivity of an element-less mesh from a simplex soup in one pass (sorting
+    // faces by vertex instead of going through the boundary map: the fast path for readers).
+    // Refuses, naming the index of an offending simplex in `item`, when a simplex has the wrong
+    // size, a repeated vertex or a vertex id >= vertex_count(), when two simplexes have the same
+    // vertices, or when a face is shared by more than two elements or by two with the same
+    // orientation (inconsistent orientation or non-manifold). Labels may be empty (all 0).
+    // On refusal the mesh is unchanged. Watchers are initialised afterwards.
+    Outcome<Done> assign_elements(std::span<const Simplex> simplexes, std::span<const int> labels = {});
+
+    // Thesis §7.3 replace-elements, with face reuse and the matched-pair optimisation: removes
+    // `old_elements`, adds one element per new simplex. Faces whose simplex occurs both before
+    // and after keep their FaceId. New elements get `labels[i]` (or, if labels is empty, the
+    // label of old_elements[0], or 0). Returns the ids of the new elements in input order.
+    //
+    // Refuses (mesh untouched) when: an old id is not an element or repeats; a new simplex has
+    // the wrong size, a repeated vertex or an unknown vertex; two new simplexes have the same
+    // vertices; a face occurs twice with the same orientation among the new simplexes; or a new
+    // face already exists with the same orientation in an element that stays (invariant 7.4).
+    Outcome<std::vector<ElementId>> replace_elements(std::span<const ElementId> old_elements,
+                                                     std::span<const Simplex> new_simplexes,
+                                                     std::span<const int> labels = {});
+
+    // Thesis §7.3 change-elements: applies a vertex substitution per element, keeping every
+    // element and face identity (Fig. 7.5). Refuses (mesh untouched) when an element is unknown
+    // or repeats, a substituted simplex has a repeated or unknown vertex, two resulting elements
+    // have the same vertices, or a resulting face would exist twice with the same orientation.
+    Outcome<Done> change_elements(std::span<const ElementSubstitution> substitution);
+
+    // ---- checking -----------------------------------------------------------------------------
+    // Checks invariants 7.1-7.5, that no element or face is represented twice, vertex anchors,
+    // and face-connected vertex stars. Returns the first broken invariant in words, e.g.
+    // "invariant 7.3 (mate): face 12 of element 4 ...". O(n) expected time.
+    Outcome<Done> validate() const;
+
+    // ---- watchers -----------------------------------------------------------------------------
+    // The watcher must outlive its registration; it is initialised at once.
+    void add_watcher(Watcher& watcher);
+    void remove_watcher(Watcher& watcher);
+
+    // ---- labels -------------------------------------------------------------------------------
+    FaceLabels& face_labels() { return m_face_labels; }
+    const FaceLabels& face_labels() const { return m_face_labels; }
+
+    // Bytes held by the connectivity and geometry arrays (capacity, not size).
+    std::size_t memory_bytes() const;
+
+private:
+    struct ElementRecord {
+        Simplex simplex;                // count() == 0: free; then faces[0] is the next free id
+        std::array<FaceId, 4> faces{invalid_id, invalid_id, invalid_id, invalid_id};
+        int label = 0;
+    };
+    struct FaceRecord {
+        ElementId element = invalid_id;  // invalid_id: free; then mate is the next free id
+        FaceId mate = invalid_id;
+    };
+
+    friend class EditContext;
+
+    ElementId allocate_element();
+    void free_element(ElementId t);
+    FaceId allocate_face();
+    void free_face(FaceId f);
+    bool has_face_outside(const Simplex& sigma, std::span<const ElementId> excluded) const;
+
+    int m_dimension;
+    int m_ambient;
+    std::vector<Point> m_reference;
+    std::vector<Point> m_deformed;
+    std::vector<ElementId> m_vertex_element;
+    std::vector<ElementRecord> m_elements;
+    std::vector<FaceRecord> m_faces;
+    ElementId m_free_element = invalid_id;
+    FaceId m_free_face = invalid_id;
+    std::size_t m_element_count = 0;
+    detail::BoundaryMap m_boundary;
+    FaceLabels m_face_labels;
+    std::vector<Watcher*> m_watchers;
+};
+
+// Iterates the ids of live elements: for (ElementId t : elements(mesh)).
+class ElementRange {
+public:
+    class Iterator {
+    public:
+        Iterator(const Mesh* mesh, ElementId t) : m_mesh(mesh), m_t(t) { skip(); }
+        ElementId operator*() const { return m_t; }
+        Iterator& operator++() {
+            ++m_t;
+            skip();
+            return *this;
+        }
+        bool operator==(const Iterator& other) const { return m_t == other.m_t; }
+
+    private:
+        void skip() {
+            while (m_t < m_mesh->element_capacity() && !m_mesh->is_element(m_t)) ++m_t;
+        }
+        const Mesh* m_mesh;
+        ElementId m_t;
+    };
+    explicit ElementRange(const Mesh& mesh) : m_mesh(&mesh) {}
+    Iterator begin() const { return {m_mesh, 0}; }
+    Iterator end() const { return {m_mesh, static_cast<ElementId>(m_mesh->element_capacity())}; }
+
+private:
+    const Mesh* m_mesh;
+};
+inline ElementRange elements(const Mesh& mesh) { return ElementRange(mesh); }
+
+}  // namespace sxk

@@ -1,0 +1,33 @@
+// Exact geometric predicates (CGAL Exact_predicates_inexact_constructions_kernel, behind one
+// internal header: no CGAL type appears here). Inputs are doubles; results are exact signs.
+#pragma once
+
+#include "sxk/config.hpp"
+#include "sxk/mesh.hpp"
+
+namespace sxk {
+
+enum class Sign : int { negative = -1, zero = 0, positive = 1 };
+
+// Sign of det[b-a, c-a]: positive when a, b, c turn counter-clockwise (x, y only).
+SXK_API Sign orient2d(const Point& a, const Point& b, const Point& c);
+// Sign of det[b-a, c-a, d-a]: positive when d lies on the side of plane (a,b,c) that
+// sees a, b, c clockwise... i.e. the tetrahedron (a,b,c,d) has positive volume.
+SXK_API Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d);
+// Positive when d lies inside the circle through a, b, c, which must be counter-clockwise.
+SXK_API Sign incircle(const Point& a, const Point& b, const Point& c, const Point& d);
+// Positive when e lies inside the sphere through a, b, c, d, which must be positively oriented.
+SXK_API Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d,
+                      const Point& e);
+
+enum class Positions { reference, deformed };
+
+// Exact orientation of element t in the chosen positions, taking the simplex sign into account:
+// positive means the element is correctly oriented (counter-clockwise triangle, positive
+// volume tetrahedron). Only defined when topological == ambient dimension; for triangle
+// surfaces in 3D it returns Sign::positive unless the triangle is degenerate (collinear
+// vertices: Sign::zero).
+SXK_API Sign element_orientation(const Mesh& mesh, ElementId t,
+                                 Positions positions = Positions::deformed);
+
+}  // namespace sxk

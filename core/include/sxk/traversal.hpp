@@ -1,0 +1,28 @@
+// Traversal of the connectivity (thesis §7.2).
+#pragma once
+
+#include <vector>
+
+#include "sxk/config.hpp"
+#include "sxk/mesh.hpp"
+
+namespace sxk {
+
+// Thesis cycle-around: the elements containing sigma = face_simplex(entry).subn(j), a
+// (d-2)-simplex (the vertex triangles turn around in 2D, the edge tetrahedra turn around in 3D).
+// j in 0..d-1. The thesis walks one way and stops at the boundary; here, when the walk meets
+// the boundary it walks the other way from entry's mate too, so the result is the whole ring
+// for interior and boundary sigma alike. Elements are listed in ring order.
+SXK_API std::vector<ElementId> cycle_around(const Mesh& mesh, FaceId entry, int j);
+
+// star(v) = the elements containing v, found by walking face neighbours from
+// mesh.vertex_element(v) (valid meshes have face-connected stars, §7.3). Empty for a vertex in
+// no element.
+SXK_API std::vector<ElementId> star(const Mesh& mesh, VertexId v);
+
+// The same walk starting from a given element that contains v; appends to `out`.
+// `scratch` avoids allocation in hot loops (it is cleared first).
+SXK_API void collect_star(const Mesh& mesh, VertexId v, ElementId start,
+                          std::vector<ElementId>& out);
+
+}  // namespace sxk

@@ -1,0 +1,45 @@
+// Mesh connectivity watchers (thesis §7.4).
+//
+// A watcher keeps state of its own (solver arrays, spatial indexes, render buffers) in step with
+// the mesh. When added to a Mesh it is initialised with the whole mesh (the thesis'
+// init_elements + init_boundary); after that every edit reports each *net* change exactly once,
+// after the edit completed (so the mesh it sees is consistent):
+//
+//   element_removed   an element that existed before the edit is gone (its id may already be
+//                     reused by an element reported as added in the same edit)
+//   element_changed   change_elements gave an element new vertices; identity kept
+//   element_added     a new element exists
+//   boundary_removed  a face that was on the boundary no longer is (matched, or deleted)
+//   boundary_changed  a boundary face kept its identity and stays on the boundary, but its
+//                     simplex changed (change_elements)
+//   boundary_added    a face that was not on the boundary now is
+//
+// Transient boundary changes inside one edit (the thesis' remove-then-add of faces that end up
+// where they were) are not reported. A refused edit reports nothing.
+#pragma once
+
+#include "sxk/ids.hpp"
+#include "sxk/simplex.hpp"
+
+namespace sxk {
+
+class Mesh;
+
+class Watcher {
+public:
+    virtual ~Watcher() = default;
+
+    virtual void init(const Mesh& /*mesh*/) {}
+    virtual void element_removed(const Mesh& /*mesh*/, ElementId /*element*/,
+                                 const Simplex& /*was*/) {}
+    virtual void element_changed(const Mesh& /*mesh*/, ElementId /*element*/,
+                                 const Simplex& /*was*/) {}
+    virtual void element_added(const Mesh& /*mesh*/, ElementId /*element*/) {}
+    virtual void boundary_removed(const Mesh& /*mesh*/, FaceId /*face*/,
+                                  const Simplex& /*was*/) {}
+    virtual void boundary_changed(const Mesh& /*mesh*/, FaceId /*face*/,
+                                  const Simplex& /*was*/) {}
+    virtual void boundary_added(const Mesh& /*mesh*/, FaceId /*face*/) {}
+};
+
+}  // namespace sxk
