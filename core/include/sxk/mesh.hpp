@@ -151,6 +151,14 @@ public:
     // On refusal the mesh is unchanged. Watchers are initialised afterwards.
     Outcome<Done> assign_elements(std::span<const Simplex> simplexes, std::span<const int> labels = {});
 
+    // The thesis' add-element, one simplex after the other, with no check beyond what the data
+    // structure needs to stay addressable (sizes, distinct and known vertices, refused as above).
+    // Duplicates, non-manifold faces and inconsistent orientations are built as they come and
+    // leave an invalid structure that validate() then names (Fig. 7.8: not every invalid change
+    // can be caught cheaply). `sxk validate` reads files this way to report what is wrong.
+    Outcome<Done> assign_elements_unchecked(std::span<const Simplex> simplexes,
+                                            std::span<const int> labels = {});
+
     // Thesis §7.3 replace-elements, with face reuse and the matched-pair optimisation: removes
     // `old_elements`, adds one element per new simplex. Faces whose simplex occurs both before
     // and after keep their FaceId. New elements get `labels[i]` (or, if labels is empty, the
@@ -205,6 +213,8 @@ private:
     void free_element(ElementId t);
     FaceId allocate_face();
     void free_face(FaceId f);
+    // True when sigma (a face, or a whole element by its vertices) exists in an element not in
+    // the sorted list `excluded`; walks the star of sigma's first vertex.
     bool has_face_outside(const Simplex& sigma, std::span<const ElementId> excluded) const;
 
     int m_dimension;

@@ -1,0 +1,136 @@
+// The plug-in ABI: what a plug-in shared object exports and what a host (the sxk CLI, or any
+// application through PluginHost) may ask of it.
+//
+// A plug-in is a MODULE library exporting one C function
+//
+//     extern "C" const sxk_plugin_info* sxk_plugin_entry(void);
+//
+// whose result describes the plug-in. `abi_version` is the first field and is a uint32 in every
+// version of this header, so a host can read it from a plug-in built against any version and
+// refuse the plug-in before touching anything else. Everything after it may change from one ABI
+// version to the next: SXK_PLUGIN_ABI_VERSION is bumped whenever this struct, sxk::Plugin or
+// sxk::PluginCommand change layout or meaning.
+//
+// Behind the C entry point the plug-in is a C++ object (sxk::Plugin), so a plug-in must be
+// built with the same compiler family and standard library as the host; the ABI version guards
+// simplexkit's side of the contract, not the C++ toolchain's.
+//
+// Writing a plug-in (see docs/plugins.md):
+//
+//     class Stats final : public sxk::Plugin { ... };
+//     SXK_PLUGIN(stats, Stats, "0.1.0", "histograms of element quality");
+//
+// defines `sxk_plugin_entry_stats()` and, unless SXK_PLUGIN_STATIC is defined (static builds
+// that link several plug-ins into one program), the generic `sxk_plugin_entry()`.
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <span>
+#include <string>
+#include <string_view>
+
+#define SXK_PLUGIN_ABI_VERSION 1u
+
+// Entry points must be visible although the project builds with hidden visibility.
+#if defined(_WIN32)
+#define SXK_PLUGIN_EXPORT __declspec(dllexport)
+#else
+#define SXK_PLUGIN_EXPORT __attribute__((visibility("default")))
+#endif
+
+namespace sxk {
+
+class Mesh;
+
+// A subcommand a plug-in adds to sxk ("sxk stats MESH", "sxk cut snap ...").
+class PluginCommand {
+public:
+    virtual ~PluginCommand() = default;
+
+    // The words after "sxk": "stats", or "cut snap" for a two-word command. Lowercase words
+    // separated by single spaces, none starting with '-'.
+    virtual std::string_view name() const = 0;
+    // One line for `sxk plugins` and `sxk --help`.
+    virtual std::string_view summary() const = 0;
+
+    // Runs the command on the arguments after its name words (`--help` included: the command
+    // prints its own usage). Returns 0 on success, 1 when the operation was refused or its
+    // result is invalid, 2 on a usage or input error. Errors go to `err` as
+    // "sxk: FILE:LINE: reason". Must not call exit(); may throw, the host reports it.
+    virtual int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) = 0;
+
+    // Commands that work on one mesh file may also work on a mesh the application holds in
+    // memory: `args` are then the arguments without the MESH operand, `mesh_name` stands for
+    // the file name in messages. The default refuses with exit code 2.
+    virtual bool accepts_mesh() const { return false; }
+    virtual int run_on_mesh(const Mesh& /*mesh*/, std::string_view /*mesh_name*/,
+                            std::span<const std::string> /*args*/, std::ostream& /*out*/,
+                            std::ostream& err) {
+        err << "sxk: " << name() << ": this command needs a mesh file\n";
+        return 2;
+    }
+};
+
+// A loaded plug-in. It owns its commands; they stay valid as long as the plug-in object.
+class Plugin {
+public:
+    virtual ~Plugin() = default;
+
+    virtual std::span<PluginCommand* const> commands() = 0;
+
+    // Other services (a cutter's step API, a watcher factory, ...), looked up by a name the
+    // plug-in and the application agree on, e.g. "sxk.cutter/1"; the application casts the
+    // result to the interface that name documents. nullptr: not offered.
+    virtual void* service(std::string_view /*name*/) { return nullptr; }
+};
+
+}  // namespace sxk
+
+extern "C" {
+
+// What sxk_plugin_entry returns. Static storage owned by the plug-in.
+struct sxk_plugin_info {
+    std::uint32_t abi_version;  // SXK_PLUGIN_ABI_VERSION the plug-in was built with; first field
+    const char* name;           // unique among loaded plug-ins: [a-z0-9_]+
+    const char* version;        // the plug-in's own version, e.g. "0.1.0"
+    const char* summary;        // one line
+    sxk::Plugin* (*create)();   // nullptr on failure (never throws)
+    void (*destroy)(sxk::Plugin* plugin);
+};
+
+using sxk_plugin_entry_fn = const sxk_plugin_info* (*)();
+
+}  // extern "C"
+
+namespace sxk {
+inline constexpr const char* plugin_entry_symbol = "sxk_plugin_entry";
+}  // namespace sxk
+
+#if defined(SXK_PLUGIN_STATIC)
+#define SXK_PLUGIN_DEFAULT_ENTRY_(NAME)
+#else
+#define SXK_PLUGIN_DEFAULT_ENTRY_(NAME)                                                         \
+    extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry() {                    \
+        return sxk_plugin_entry_##NAME();                                                       \
+    }
+#endif
+
+// Defines the entry point(s) of plug-in NAME (an identifier) whose sxk::Plugin subclass is
+// PLUGIN_CLASS (default-constructible). Use once, at namespace scope, outside any namespace.
+#define SXK_PLUGIN(NAME, PLUGIN_CLASS, VERSION, SUMMARY)                                        \
+    extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_##NAME() {             \
+        static const sxk_plugin_info info = {                                                   \
+            SXK_PLUGIN_ABI_VERSION, #NAME, VERSION, SUMMARY,                                    \
+            []() noexcept -> ::sxk::Plugin* {                                                   \
+                try {                                                                           \
+                    return new PLUGIN_CLASS();                                                  \
+                } catch (...) {                                                                 \
+                    return nullptr;                                                             \
+                }                                                                               \
+            },                                                                                  \
+            [](::sxk::Plugin* plugin) noexcept { delete plugin; }};                             \
+        return &info;                                                                           \
+    }                                                                                           \
+    SXK_PLUGIN_DEFAULT_ENTRY_(NAME)                                                             \
+    static_assert(SXK_PLUGIN_ABI_VERSION > 0, "lets the use end with a semicolon")

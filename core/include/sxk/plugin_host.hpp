@@ -1,0 +1,97 @@
+// Loading plug-ins into a process (DESIGN.md "Plug-ins").
+//
+// A PluginHost is an object the application owns (no global registry, STYLE.md 9): it dlopens
+// plug-in MODULE files, checks them, creates one sxk::Plugin per file and destroys and unloads
+// them again in its destructor, in reverse order of loading.
+//
+// Refusals never stop the host: a file that dlopen cannot load, that has no sxk_plugin_entry,
+// whose ABI version differs from SXK_PLUGIN_ABI_VERSION, whose info is malformed, or whose name
+// is already taken is unloaded again and recorded in diagnostics() as (path, reason); the host
+// goes on with the next file. The sxk CLI prints them as "sxk: warning: PATH: reason".
+//
+// Search path of load_default_folders(), in this order (the first plug-in of a name wins):
+//   1. the build tree's plug-in folder (SXK_PLUGIN_BUILD_DIR), but only while this library runs
+//      from the build tree: an installed library never picks up stale build products;
+//   2. the install folder <libdir>/simplexkit/plugins, found beside this library (dladdr), so a
+//      relocated install tree works;
+//   3. each folder of the environment variable SXK_PLUGIN_PATH (colon-separated).
+// Applications add folders of their own with load_folder(), before or after the defaults.
+// A folder's *.so files are loaded in name order; the same file reached twice is loaded once.
+//
+// Plug-ins stay loaded until the host is destroyed: PluginCommand pointers, services and any
+// watcher a plug-in registered must not outlive it.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sxk/config.hpp"
+#include "sxk/plugin.hpp"
+
+namespace sxk {
+
+struct LoadedPlugin {
+    std::string name;
+    std::string version;
+    std::string summary;
+    std::filesystem::path path;  // the .so file, or the origin given to add_static()
+    Plugin* plugin = nullptr;    // owned by the host
+};
+
+struct PluginDiagnostic {
+    std::filesystem::path path;
+    std::string reason;
+};
+
+// A command and the plug-in that provides it.
+struct FoundCommand {
+    PluginCommand* command = nullptr;
+    const LoadedPlugin* plugin = nullptr;
+    std::size_t words = 0;  // how many leading arguments name the command
+};
+
+class SXK_API PluginHost {
+public:
+    PluginHost();
+    ~PluginHost();
+    PluginHost(const PluginHost&) = delete;
+    PluginHost& operator=(const PluginHost&) = delete;
+    PluginHost(PluginHost&&) noexcept;
+    PluginHost& operator=(PluginHost&&) noexcept;
+
+    // The folders load_default_folders() searches, in order (existing or not).
+    static std::vector<std::filesystem::path> default_folders();
+
+    // Loads every plug-in of the default folders; missing default folders are skipped quietly,
+    // a missing SXK_PLUGIN_PATH entry is reported.
+    void load_default_folders();
+    // Loads every *.so in `folder` (a plug-in file is accepted too). A missing folder is
+    // reported. Returns the number of plug-ins loaded.
+    std::size_t load_folder(const std::filesystem::path& folder);
+    // Loads one plug-in file; false (and a diagnostic) when refused.
+    bool load_file(const std::filesystem::path& file);
+    // Registers a plug-in linked into the program (built with SXK_PLUGIN_STATIC; pass
+    // sxk_plugin_entry_NAME()). Checked like a loaded one; `origin` names it in messages.
+    bool add_static(const sxk_plugin_info* info, std::string origin);
+
+    std::span<const LoadedPlugin> plugins() const;
+    std::span<const PluginDiagnostic> diagnostics() const;
+    // The plug-in called `name`, or nullptr.
+    Plugin* find(std::string_view name) const;
+    // The command whose name words are the longest prefix of `args` ("cut snap" before "cut"),
+    // or {nullptr, nullptr, 0}.
+    FoundCommand find_command(std::span<const std::string> args) const;
+    // All commands, in loading order.
+    std::vector<FoundCommand> commands() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+}  // namespace sxk

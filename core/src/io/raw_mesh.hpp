@@ -1,0 +1,79 @@
+// What a reader collected, and the one place where it becomes a Mesh.
+//
+// Readers only parse: they turn file indices into 0-based vertex ids (checking the range, since
+// only they know the file's numbering) and remember on which line each vertex and cell stood.
+// build_mesh then does every check that is the same for all formats, in this order, before the
+// caller ever sees a Mesh (readers never return a half-built mesh):
+//
+//   1. topological dimension = that of the largest cells present (tetrahedra, else triangles);
+//      cells one dimension lower are labelled faces; lower ones are ignored
+//   2. ambient dimension: what the file said, or (formats that always store x y z) 2 when the
+//      mesh is made of triangles and every z is exactly 0
+//   3. repeated vertices within a cell
+//   4. orientation, when topological == ambient dimension: exact orient2d/orient3d of the
+//      vertices in file order; negative is "element N is inverted" unless ReadOptions::reorient
+//      (zero, a flat element, is accepted: repairing those is the degeneracy plug-in's job)
+//   5. Mesh::assign_elements: duplicates, faces shared by three or more elements, neighbours
+//      with inconsistent orientation; its refusal names an element index, mapped back to the
+//      element's number and line
+//   6. vertex stars connected through faces (the kernel's invariant, which assign_elements does
+//      not check: two tetrahedra touching only at a vertex)
+//   7. labelled faces: no repeated vertex, listed once, and a face of some element
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sxk/io.hpp"
+#include "sxk/mesh.hpp"
+
+namespace sxk::io {
+
+// Cells with `size` vertices each (2: edges, 3: triangles, 4: tetrahedra), as listed in a file.
+struct CellList {
+    explicit CellList(int size) : size(size) {}
+    int size;
+    std::vector<VertexId> vertices;     // size per cell, file order, 0-based
+    std::vector<int> labels;            // one per cell
+    std::vector<std::size_t> lines;     // one per cell
+    std::vector<std::int64_t> numbers;  // the file's numbers (Gmsh tags, TetGen ids); empty: 1, 2, ...
+    std::string file;                   // where the cells were read
+
+    std::size_t count() const { return lines.size(); }
+    std::int64_t number(std::size_t i) const {
+        return numbers.empty() ? static_cast<std::int64_t>(i) + 1 : numbers[i];
+    }
+};
+
+struct RawMesh {
+    std::vector<Point> points;
+    std::vector<std::size_t> point_lines;     // one per point
+    std::vector<std::int64_t> point_numbers;  // the file's numbers; empty: vertex_base + id
+    std::int64_t vertex_base = 1;
+    std::string vertex_file;
+
+    int ambient = 3;              // as the file says
+    bool ambient_from_z = false;  // the file always stores x y z: decide by the z rule
+
+    CellList edges{2};
+    CellList triangles{3};
+    CellList tetrahedra{4};
+
+    std::int64_t vertex_number(VertexId v) const {
+        return point_numbers.empty() ? vertex_base + static_cast<std::int64_t>(v) : point_numbers[v];
+    }
+};
+
+// Checks everything listed at the top and builds the mesh; throws InputError.
+// `fallback_file` names the file for problems tied to no list (e.g. "no triangles or tetrahedra").
+Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOptions& options,
+                ReadReport* report);
+
+// Room for `wanted` records, but never more than the text left could hold (a header claiming a
+// billion vertices must not allocate gigabytes before the file runs out).
+std::size_t plausible_count(std::int64_t wanted, std::size_t bytes_left, std::size_t bytes_per_record);
+
+}  // namespace sxk::io

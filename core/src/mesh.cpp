@@ -1,0 +1,160 @@
+// Mesh basics: construction, pools, accessors, watchers. The edit primitives live in files of
+// their own (assign_elements.cpp, replace_elements.cpp, change_elements.cpp, validate.cpp).
+#include "sxk/mesh.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace sxk {
+
+Mesh::Mesh(int topological_dimension, int ambient_dimension)
+    : m_dimension(topological_dimension), m_ambient(ambient_dimension) {
+    if (topological_dimension < 2 || topological_dimension > 3)
+        throw std::invalid_argument("topological dimension must be 2 or 3, not " +
+                                    std::to_string(topological_dimension));
+    if (ambient_dimension < topological_dimension || ambient_dimension > 3)
+        throw std::invalid_argument("ambient dimension must be " +
+                                    std::string(topological_dimension == 2 ? "2 or 3" : "3") +
+                                    ", not " + std::to_string(ambient_dimension));
+}
+
+Mesh::Mesh(const Mesh& other)
+    : m_dimension(other.m_dimension),
+      m_ambient(other.m_ambient),
+      m_reference(other.m_reference),
+      m_deformed(other.m_deformed),
+      m_vertex_element(other.m_vertex_element),
+      m_elements(other.m_elements),
+      m_faces(other.m_faces),
+      m_free_element(other.m_free_element),
+      m_free_face(other.m_free_face),
+      m_element_count(other.m_element_count),
+      m_boundary(other.m_boundary),
+      m_face_labels(other.m_face_labels) {}
+
+Mesh& Mesh::operator=(const Mesh& other) {
+    if (this != &other) {
+        Mesh copy(other);
+        copy.m_watchers = std::move(m_watchers);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+Mesh::Mesh(Mesh&& other) noexcept = default;
+Mesh& Mesh::operator=(Mesh&& other) noexcept = default;
+Mesh::~Mesh() = default;
+
+VertexId Mesh::add_vertex(const Point& reference, const Point& deformed) {
+    m_reference.push_back(reference);
+    m_deformed.push_back(deformed);
+    m_vertex_element.push_back(invalid_id);
+    return static_cast<VertexId>(m_reference.size() - 1);
+}
+
+void Mesh::reserve(std::size_t vertices, std::size_t elements) {
+    m_reference.reserve(vertices);
+    m_deformed.reserve(vertices);
+    m_vertex_element.reserve(vertices);
+    m_elements.reserve(elements);
+    m_faces.reserve(elements * static_cast<std::size_t>(m_dimension + 1));
+}
+
+VertexId Mesh::opposite_vertex(ElementId t, FaceId f) const {
+    // faces[i] represents simplex.subn(i), the face without vertex i (invariant 7.1)
+    const ElementRecord& e = m_elements[t];
+    for (int i = 0; i <= m_dimension; ++i)
+        if (e.faces[static_cast<std::size_t>(i)] == f) return e.simplex.vertex(i);
+    return invalid_id;
+}
+
+FaceId Mesh::opposite_face(ElementId t, VertexId v) const {
+    const int i = m_elements[t].simplex.index(v);
+    return i < 0 ? invalid_id : m_elements[t].faces[static_cast<std::size_t>(i)];
+}
+
+ElementId Mesh::neighbor(ElementId t, int i) const {
+    const FaceId m = m_faces[m_elements[t].faces[static_cast<std::size_t>(i)]].mate;
+    return m == invalid_id ? invalid_id : m_faces[m].element;
+}
+
+int Mesh::face_slot(FaceId f) const {
+    const ElementRecord& e = m_elements[m_faces[f].element];
+    for (int i = 0; i <= m_dimension; ++i)
+        if (e.faces[static_cast<std::size_t>(i)] == f) return i;
+    return -1;
+}
+
+Simplex Mesh::face_simplex(FaceId f) const {
+    return m_elements[m_faces[f].element].simplex.subn(face_slot(f));
+}
+
+FaceId Mesh::find_boundary_face(const Simplex& sigma) const {
+    const FaceId f = m_boundary.find(sigma);
+    if (f == invalid_id || !(face_simplex(f) == sigma)) return invalid_id;
+    return f;
+}
+
+std::vector<FaceId> Mesh::boundary_faces() const {
+    std::vector<FaceId> faces;
+    faces.reserve(m_boundary.size());
+    for_each_boundary_face([&](FaceId f) { faces.push_back(f); });
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+ElementId Mesh::allocate_element() {
+    if (m_free_element != invalid_id) {
+        const ElementId t = m_free_element;
+        m_free_element = m_elements[t].faces[0];
+        m_elements[t] = ElementRecord{};
+        ++m_element_count;
+        return t;
+    }
+    m_elements.emplace_back();
+    ++m_element_count;
+    return static_cast<ElementId>(m_elements.size() - 1);
+}
+
+void Mesh::free_element(ElementId t) {
+    m_elements[t] = ElementRecord{};
+    m_elements[t].faces[0] = m_free_element;
+    m_free_element = t;
+    --m_element_count;
+}
+
+FaceId Mesh::allocate_face() {
+    if (m_free_face != invalid_id) {
+        const FaceId f = m_free_face;
+        m_free_face = m_faces[f].mate;
+        m_faces[f] = FaceRecord{};
+        return f;
+    }
+    m_faces.emplace_back();
+    return static_cast<FaceId>(m_faces.size() - 1);
+}
+
+void Mesh::free_face(FaceId f) {
+    m_faces[f] = FaceRecord{invalid_id, m_free_face};
+    m_free_face = f;
+}
+
+void Mesh::add_watcher(Watcher& watcher) {
+    if (std::find(m_watchers.begin(), m_watchers.end(), &watcher) == m_watchers.end())
+        m_watchers.push_back(&watcher);
+    watcher.init(*this);
+}
+
+void Mesh::remove_watcher(Watcher& watcher) {
+    m_watchers.erase(std::remove(m_watchers.begin(), m_watchers.end(), &watcher), m_watchers.end());
+}
+
+std::size_t Mesh::memory_bytes() const {
+    return m_reference.capacity() * sizeof(Point) + m_deformed.capacity() * sizeof(Point) +
+           m_vertex_element.capacity() * sizeof(ElementId) +
+           m_elements.capacity() * sizeof(ElementRecord) + m_faces.capacity() * sizeof(FaceRecord) +
+           m_boundary.memory_bytes();
+}
+
+}  // namespace sxk

@@ -1,0 +1,59 @@
+// Exact predicates through CGAL's filtered kernel: interval arithmetic first, exact arithmetic
+// only when the interval cannot decide, so the common case costs a few floating-point
+// operations more than the naive determinant.
+#include "sxk/predicates.hpp"
+
+#include "cgal_kernel.hpp"
+
+namespace sxk {
+
+using detail::to_cgal_2;
+using detail::to_cgal_3;
+using detail::to_sign;
+
+Sign orient2d(const Point& a, const Point& b, const Point& c) {
+    return to_sign(CGAL::orientation(to_cgal_2(a), to_cgal_2(b), to_cgal_2(c)));
+}
+
+Sign orient3d(const Point& a, const Point& b, const Point& c, const Point& d) {
+    // CGAL::orientation(p,q,r,s) is POSITIVE when s lies on the positive side of (p,q,r), i.e.
+    // det[q-p, r-p, s-p] > 0: the same convention as ours.
+    return to_sign(CGAL::orientation(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c), to_cgal_3(d)));
+}
+
+Sign incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+    // side_of_oriented_circle is POSITIVE inside for a counter-clockwise circle
+    return to_sign(CGAL::side_of_oriented_circle(to_cgal_2(a), to_cgal_2(b), to_cgal_2(c), to_cgal_2(d)));
+}
+
+Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d, const Point& e) {
+    // side_of_oriented_sphere is POSITIVE inside for a positively oriented sphere (a,b,c,d)
+    return to_sign(CGAL::side_of_oriented_sphere(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c),
+                                                 to_cgal_3(d), to_cgal_3(e)));
+}
+
+Sign element_orientation(const Mesh& mesh, ElementId t, Positions positions) {
+    const Simplex& s = mesh.simplex(t);
+    auto point = [&](int j) -> const Point& {
+        return positions == Positions::reference ? mesh.reference(s.vertex(j)) : mesh.deformed(s.vertex(j));
+    };
+    Sign raw;
+    if (mesh.topological_dimension() == 3) {
+        raw = orient3d(point(0), point(1), point(2), point(3));
+    } else if (mesh.ambient_dimension() == 2) {
+        raw = orient2d(point(0), point(1), point(2));
+    } else {
+        // a triangle in space has no orientation of its own: only flatness (collinearity) is
+        // decidable; collinear exactly when all three coordinate projections are collinear
+        const Point& a = point(0);
+        const Point& b = point(1);
+        const Point& c = point(2);
+        const bool collinear =
+            CGAL::collinear(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c));
+        return collinear ? Sign::zero : Sign::positive;
+    }
+    if (raw == Sign::zero) return raw;
+    return (static_cast<int>(raw) * s.sign() > 0) ? Sign::positive : Sign::negative;
+}
+
+}  // namespace sxk

@@ -1,0 +1,58 @@
+// cycle_around and star (thesis §7.2).
+#include "sxk/traversal.hpp"
+
+#include <algorithm>
+
+namespace sxk {
+
+std::vector<ElementId> cycle_around(const Mesh& mesh, FaceId entry, int j) {
+    // The thesis' loop. Invariant: f == invalid_id or f's simplex is sigma plus v, with
+    // sigma = face_simplex(entry).subn(j). Enter e through f, leave through the face of e
+    // opposite v (sigma plus e's remaining vertex), continue in that face's mate.
+    auto walk = [&](FaceId start, VertexId v, FaceId stop, std::vector<ElementId>& out) {
+        for (FaceId f = start; f != invalid_id;) {
+            const ElementId e = mesh.face_element(f);
+            const FaceId exit = mesh.opposite_face(e, v);
+            v = mesh.opposite_vertex(e, f);
+            out.push_back(e);
+            f = mesh.mate(exit);
+            if (f == stop) return true;  // closed ring
+        }
+        return false;  // reached the boundary
+    };
+    const VertexId v0 = mesh.face_simplex(entry).vertex(j);
+    std::vector<ElementId> ring;
+    if (walk(entry, v0, entry, ring)) return ring;
+    // sigma is on the boundary: the thesis stops here; walk the other way too, entering the
+    // neighbour behind entry through entry's mate, so the ring is complete.
+    std::vector<ElementId> back;
+    walk(mesh.mate(entry), v0, invalid_id, back);
+    std::reverse(back.begin(), back.end());
+    back.insert(back.end(), ring.begin(), ring.end());
+    return back;
+}
+
+void collect_star(const Mesh& mesh, VertexId v, ElementId start, std::vector<ElementId>& out) {
+    if (start == invalid_id) return;
+    const std::size_t first = out.size();
+    out.push_back(start);
+    const int k = mesh.element_vertex_count();
+    for (std::size_t next = first; next < out.size(); ++next) {
+        const ElementId t = out[next];
+        const Simplex& tau = mesh.simplex(t);
+        for (int i = 0; i < k; ++i) {
+            if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
+            const ElementId n = mesh.neighbor(t, i);
+            if (n != invalid_id && std::find(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), n) == out.end())
+                out.push_back(n);
+        }
+    }
+}
+
+std::vector<ElementId> star(const Mesh& mesh, VertexId v) {
+    std::vector<ElementId> out;
+    collect_star(mesh, v, mesh.vertex_element(v), out);
+    return out;
+}
+
+}  // namespace sxk

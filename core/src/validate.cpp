@@ -1,0 +1,184 @@
+// validate(): invariants 7.1-7.5 of the thesis, uniqueness, vertex anchors and face-connected
+// vertex stars. Messages name the invariant first so that tools and tests can match on it.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "mesh_checks.hpp"
+#include "sxk/mesh.hpp"
+
+namespace sxk {
+
+using detail::describe;
+
+namespace {
+
+std::string element_name(ElementId t, const Simplex& s) {
+    return "element " + std::to_string(t) + " " + describe(s);
+}
+
+}  // namespace
+
+Outcome<Done> Mesh::validate() const {
+    const int k = m_dimension + 1;
+    const std::size_t uk = static_cast<std::size_t>(k);
+
+    // elements: well-formed simplexes whose faces point back at them (7.1, 7.2)
+    std::size_t live_elements = 0;
+    for (ElementId t = 0; t < m_elements.size(); ++t) {
+        if (!is_element(t)) continue;
+        ++live_elements;
+        const ElementRecord& e = m_elements[t];
+        if (std::string why = detail::check_simplex(e.simplex, k, vertex_count()); !why.empty())
+            return Refusal{"element " + std::to_string(t) + ": " + why, t};
+        for (std::size_t i = 0; i < uk; ++i) {
+            const FaceId f = e.faces[i];
+            if (!is_face(f))
+                return Refusal{"invariant 7.1 (faces of an element): " + element_name(t, e.simplex) +
+                                   " lists face " + (f == invalid_id ? std::string("none") : std::to_string(f)) +
+                                   " in slot " + std::to_string(i) + ", which does not exist",
+                               t};
+            if (m_faces[f].element != t)
+                return Refusal{"invariant 7.2 (face element): face " + std::to_string(f) + " in slot " +
+                                   std::to_string(i) + " of " + element_name(t, e.simplex) +
+                                   " names element " + std::to_string(m_faces[f].element),
+                               t};
+            for (std::size_t j = 0; j < i; ++j)
+                if (e.faces[j] == f)
+                    return Refusal{"invariant 7.1 (faces of an element): " + element_name(t, e.simplex) +
+                                       " lists face " + std::to_string(f) + " twice",
+                                   t};
+        }
+    }
+    if (live_elements != m_element_count)
+        return Refusal{"element count " + std::to_string(m_element_count) + " but " +
+                       std::to_string(live_elements) + " live elements"};
+
+    // faces: owned (7.2), mates mutual and opposite (7.3)
+    std::size_t mateless = 0;
+    for (FaceId f = 0; f < m_faces.size(); ++f) {
+        if (!is_face(f)) continue;
+        const ElementId t = m_faces[f].element;
+        if (!is_element(t) || face_slot(f) < 0)
+            return Refusal{"invariant 7.2 (face element): face " + std::to_string(f) +
+                           " is not among the faces of its element " + std::to_string(t)};
+        const FaceId g = m_faces[f].mate;
+        if (g == invalid_id) {
+            ++mateless;
+            continue;
+        }
+        const Simplex sigma = face_simplex(f);
+        if (!is_face(g))
+            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + describe(sigma) +
+                           " has mate " + std::to_string(g) + ", which does not exist"};
+        if (m_faces[g].mate != f)
+            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + describe(sigma) +
+                           " has mate " + std::to_string(g) + " whose mate is " +
+                           (m_faces[g].mate == invalid_id ? std::string("none") : std::to_string(m_faces[g].mate))};
+        if (!(face_simplex(g) == sigma.mate()))
+            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + describe(sigma) +
+                           " has mate " + std::to_string(g) + " " + describe(face_simplex(g)) +
+                           ", expected " + describe(sigma.mate())};
+    }
+
+    // uniqueness (7.4): no two elements with the same vertices, no simplex in two faces
+    {
+        std::vector<std::pair<Simplex, ElementId>> all;
+        all.reserve(m_element_count);
+        for (ElementId t = 0; t < m_elements.size(); ++t)
+            if (is_element(t)) all.emplace_back(Simplex(+1, m_elements[t].simplex.vertices()), t);
+        std::sort(all.begin(), all.end());
+        for (std::size_t i = 1; i < all.size(); ++i)
+            if (all[i].first == all[i - 1].first)
+                return Refusal{"invariant 7.4 (uniqueness): elements " + std::to_string(all[i - 1].second) +
+                                   " and " + std::to_string(all[i].second) + " have the same vertices " +
+                                   describe(all[i].first),
+                               all[i].second};
+    }
+    {
+        std::vector<std::pair<Simplex, FaceId>> all;
+        all.reserve(m_element_count * uk);
+        for (FaceId f = 0; f < m_faces.size(); ++f)
+            if (is_face(f)) all.emplace_back(face_simplex(f), f);
+        std::sort(all.begin(), all.end());
+        for (std::size_t i = 1; i < all.size(); ++i)
+            if (all[i].first == all[i - 1].first)
+                return Refusal{"invariant 7.4 (uniqueness): simplex " + describe(all[i].first) +
+                                   " is represented by faces " + std::to_string(all[i - 1].second) +
+                                   " (element " + std::to_string(m_faces[all[i - 1].second].element) +
+                                   ") and " + std::to_string(all[i].second) + " (element " +
+                                   std::to_string(m_faces[all[i].second].element) + ")",
+                               m_faces[all[i].second].element};
+    }
+
+    // boundary map (7.5): exactly the faces without mate, under their own simplex
+    if (m_boundary.size() != mateless)
+        return Refusal{"invariant 7.5 (boundary map): it holds " + std::to_string(m_boundary.size()) +
+                       " faces but " + std::to_string(mateless) + " faces have no mate"};
+    std::string boundary_problem;
+    m_boundary.for_each([&](const detail::BoundaryMap::Key& key, FaceId f) {
+        if (!boundary_problem.empty()) return;
+        if (!is_face(f)) {
+            boundary_problem = "invariant 7.5 (boundary map): it holds face " + std::to_string(f) +
+                               ", which does not exist";
+        } else if (m_faces[f].mate != invalid_id) {
+            boundary_problem = "invariant 7.5 (boundary map): it holds face " + std::to_string(f) + " " +
+                               describe(face_simplex(f)) + ", which has a mate";
+        } else if (detail::BoundaryMap::key_of(face_simplex(f)) != key) {
+            boundary_problem = "invariant 7.5 (boundary map): face " + std::to_string(f) + " " +
+                               describe(face_simplex(f)) + " is filed under other vertices";
+        }
+    });
+    if (!boundary_problem.empty()) return Refusal{boundary_problem};
+    for (FaceId f = 0; f < m_faces.size(); ++f)
+        if (is_face(f) && m_faces[f].mate == invalid_id && m_boundary.find(face_simplex(f)) != f)
+            return Refusal{"invariant 7.5 (boundary map): boundary face " + std::to_string(f) + " " +
+                               describe(face_simplex(f)) + " of element " +
+                               std::to_string(m_faces[f].element) + " is missing from the boundary map",
+                           m_faces[f].element};
+
+    // vertex anchors and face-connected stars (§7.3: star(v) must be (v, {})-connected)
+    std::vector<std::uint32_t> incidence(vertex_count(), 0);
+    for (ElementId t = 0; t < m_elements.size(); ++t)
+        if (is_element(t))
+            for (VertexId v : m_elements[t].simplex.vertices()) ++incidence[v];
+    std::vector<VertexId> stamp(m_elements.size(), invalid_id);
+    std::vector<ElementId> stack;
+    for (VertexId v = 0; v < vertex_count(); ++v) {
+        const ElementId a = m_vertex_element[v];
+        if (incidence[v] == 0) {
+            if (a != invalid_id)
+                return Refusal{"vertex anchor: vertex " + std::to_string(v) +
+                               " is in no element but names element " + std::to_string(a)};
+            continue;
+        }
+        if (!is_element(a) || !m_elements[a].simplex.contains(v))
+            return Refusal{"vertex anchor: vertex " + std::to_string(v) + " names element " +
+                           (a == invalid_id ? std::string("none") : std::to_string(a)) +
+                           ", which does not contain it"};
+        std::uint32_t reached = 0;
+        stack.assign(1, a);
+        stamp[a] = v;
+        while (!stack.empty()) {
+            const ElementId t = stack.back();
+            stack.pop_back();
+            ++reached;
+            for (int i = 0; i < k; ++i) {
+                if (m_elements[t].simplex.vertex(i) == v) continue;
+                const ElementId n = neighbor(t, i);
+                if (n != invalid_id && stamp[n] != v) {
+                    stamp[n] = v;
+                    stack.push_back(n);
+                }
+            }
+        }
+        if (reached != incidence[v])
+            return Refusal{"star connectivity: the star of vertex " + std::to_string(v) + " is not face-connected (" +
+                           std::to_string(reached) + " of its " + std::to_string(incidence[v]) +
+                           " elements are reachable from element " + std::to_string(a) +
+                           "; the mesh is pinched at this vertex)"};
+    }
+    return Done{};
+}
+
+}  // namespace sxk
