@@ -75,6 +75,22 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
         }
     }
 
+    // Every vertex the edit touches must keep a face-connected star.
+    {
+        std::vector<VertexId> touched;
+        for (std::size_t i = 0; i < m; ++i) {
+            for (VertexId v : m_elements[substitution[i].element].simplex.vertices()) touched.push_back(v);
+            for (VertexId v : substituted[i].vertices()) touched.push_back(v);
+        }
+        std::sort(touched.begin(), touched.end());
+        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+        for (VertexId v : touched)
+            if (const std::size_t pieces = star_pieces_after(v, changed_sorted, substituted); pieces > 1)
+                return Refusal{"star connectivity: vertex " + std::to_string(v) +
+                               " would be pinched (its star would fall into " +
+                               std::to_string(pieces) + " pieces)"};
+    }
+
     // ---- the change -----------------------------------------------------------------------------
     m_boundary.reserve(m_boundary.size() + m * uk);
     detail::EditLog log(!m_watchers.empty());
@@ -144,7 +160,11 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
 
     // vertex anchors
     for (std::size_t i = 0; i < m; ++i)
-        for (int j = 0; j < k; ++j) m_vertex_element[substituted[i].vertex(j)] = substitution[i].element;
+        for (int j = 0; j < k; ++j) {
+            ElementId& a = m_vertex_element[substituted[i].vertex(j)];
+            if (!is_element(a) || !m_elements[a].simplex.contains(substituted[i].vertex(j)))
+                a = substitution[i].element;
+        }
     for (VertexId v : old_vertices) {
         const ElementId a = m_vertex_element[v];
         if (is_element(a) && m_elements[a].simplex.contains(v)) continue;

@@ -148,6 +148,22 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
         }
     }
 
+    // Every vertex the edit touches must keep a face-connected star.
+    {
+        std::vector<VertexId> touched;
+        for (ElementId t : old_elements)
+            for (VertexId v : m_elements[t].simplex.vertices()) touched.push_back(v);
+        for (const Simplex& tau : new_simplexes)
+            for (VertexId v : tau.vertices()) touched.push_back(v);
+        std::sort(touched.begin(), touched.end());
+        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+        for (VertexId v : touched)
+            if (const std::size_t pieces = star_pieces_after(v, old_sorted, new_simplexes); pieces > 1)
+                return Refusal{"star connectivity: vertex " + std::to_string(v) +
+                               " would be pinched (its star would fall into " +
+                               std::to_string(pieces) + " pieces)"};
+    }
+
     // ---- the change -------------------------------------------------------------------------
     m_elements.reserve(m_elements.size() + m);
     m_faces.reserve(m_faces.size() + m * uk);
@@ -241,9 +257,12 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
         }
     }
 
-    // vertex anchors
+    // vertex anchors: keep those still valid (no visible change for untouched vertices)
     for (std::size_t i = 0; i < m; ++i)
-        for (int j = 0; j < k; ++j) m_vertex_element[new_simplexes[i].vertex(j)] = created[i];
+        for (int j = 0; j < k; ++j) {
+            ElementId& a = m_vertex_element[new_simplexes[i].vertex(j)];
+            if (!is_element(a) || !m_elements[a].simplex.contains(new_simplexes[i].vertex(j))) a = created[i];
+        }
     for (VertexId v : old_vertices) {
         const ElementId a = m_vertex_element[v];
         if (is_element(a) && m_elements[a].simplex.contains(v)) continue;

@@ -52,6 +52,10 @@ public:
 
 struct ReadOptions {
     bool reorient = false;  // flip inverted elements instead of refusing the file
+    // Build with Mesh::assign_elements_unchecked: duplicate, non-manifold and inconsistently
+    // oriented elements are kept (and inverted ones are not refused) so that validate() can
+    // name the broken invariant. `sxk validate` reads this way; nothing else should.
+    bool lenient = false;
 };
 
 struct ReadReport {

@@ -167,7 +167,8 @@ public:
     // Refuses (mesh untouched) when: an old id is not an element or repeats; a new simplex has
     // the wrong size, a repeated vertex or an unknown vertex; two new simplexes have the same
     // vertices; a face occurs twice with the same orientation among the new simplexes; or a new
-    // face already exists with the same orientation in an element that stays (invariant 7.4).
+    // face already exists with the same orientation in an element that stays (invariant 7.4); or
+    // the star of a vertex would no longer be face-connected (a pinched vertex).
     Outcome<std::vector<ElementId>> replace_elements(std::span<const ElementId> old_elements,
                                                      std::span<const Simplex> new_simplexes,
                                                      std::span<const int> labels = {});
@@ -175,7 +176,8 @@ public:
     // Thesis §7.3 change-elements: applies a vertex substitution per element, keeping every
     // element and face identity (Fig. 7.5). Refuses (mesh untouched) when an element is unknown
     // or repeats, a substituted simplex has a repeated or unknown vertex, two resulting elements
-    // have the same vertices, or a resulting face would exist twice with the same orientation.
+    // have the same vertices, a resulting face would exist twice with the same orientation, or
+    // the star of a vertex would no longer be face-connected.
     Outcome<Done> change_elements(std::span<const ElementSubstitution> substitution);
 
     // ---- checking -----------------------------------------------------------------------------
@@ -216,6 +218,10 @@ private:
     // True when sigma (a face, or a whole element by its vertices) exists in an element not in
     // the sorted list `excluded`; walks the star of sigma's first vertex.
     bool has_face_outside(const Simplex& sigma, std::span<const ElementId> excluded) const;
+    // Number of face-connected pieces star(v) would have after removing the sorted elements
+    // `removed` and adding `added` (0 when v would be in no element). Walks star(v) once.
+    std::size_t star_pieces_after(VertexId v, std::span<const ElementId> removed,
+                                  std::span<const Simplex> added) const;
 
     int m_dimension;
     int m_ambient;

@@ -16,7 +16,7 @@ namespace sxk {
 inline constexpr double pi = 3.14159265358979323846;
 
 // Thesis aspect ratio: minimum over vertices p of the distance from p to the plane (line) of
-// the opposite face, divided by the maximum edge length. 1/sqrt(2) ~ 0.8165 for the regular
+// the opposite face, divided by the maximum edge length. sqrt(2/3) ~ 0.8165 for the regular
 // tetrahedron, sqrt(3)/2 ~ 0.866 for the equilateral triangle, 0 for flat elements.
 SXK_API double aspect_ratio(std::span<const Point> vertices);
 // d * inradius / circumradius, normalised so the regular simplex has 1 (d = 2 or 3).

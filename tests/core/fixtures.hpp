@@ -1,0 +1,150 @@
+// Small meshes drawn by hand, shared by the kernel tests, and a state comparison for the
+// transaction guarantee.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "sxk/mesh.hpp"
+
+namespace sxk::test {
+
+//   d(3) ------- c(2)
+//    |        /  |          two counter-clockwise triangles <0,1,2> and <0,2,3>
+//    |   B  /    |          sharing the diagonal 0-2
+//    |    /   A  |
+//    |  /        |
+//   a(0) ------- b(1)
+inline Mesh unit_square() {
+    Mesh mesh(2, 2);
+    mesh.add_vertex({0, 0, 0});
+    mesh.add_vertex({1, 0, 0});
+    mesh.add_vertex({1, 1, 0});
+    mesh.add_vertex({0, 1, 0});
+    const std::array<Simplex, 2> triangles{Simplex(+1, {0, 1, 2}), Simplex(+1, {0, 2, 3})};
+    EXPECT_TRUE(mesh.assign_elements(triangles).ok());
+    return mesh;
+}
+
+// A planar n x n grid of unit squares, each split along its diagonal (2 n^2 triangles).
+inline Mesh planar_grid(int n) {
+    Mesh mesh(2, 2);
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), 0});
+    auto id = [n](int i, int j) { return VertexId(j * (n + 1) + i); };
+    std::vector<Simplex> triangles;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            triangles.emplace_back(+1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            triangles.emplace_back(+1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    EXPECT_TRUE(mesh.assign_elements(triangles).ok());
+    return mesh;
+}
+
+// A Kuhn (Freudenthal) cube mesh: n^3 unit cubes of 6 tetrahedra each, all sharing the cube's
+// main diagonal (0,0,0)-(1,1,1) and positively oriented. n = 8 gives the thesis' 729-node,
+// 3072-tetrahedron cube.
+inline Mesh kuhn_cube(int n) {
+    Mesh mesh(3, 3);
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), double(k)});
+    auto id = [n](int i, int j, int k) { return VertexId((k * (n + 1) + j) * (n + 1) + i); };
+    // the six paths from (0,0,0) to (1,1,1) along unit steps, one tetrahedron each
+    static constexpr std::array<std::array<int, 3>, 6> orders{
+        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+    std::vector<Simplex> tets;
+    std::vector<int> labels;
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                for (std::size_t o = 0; o < orders.size(); ++o) {
+                    std::array<int, 3> c{i, j, k};
+                    std::array<VertexId, 4> v{};
+                    v[0] = id(c[0], c[1], c[2]);
+                    for (int step = 0; step < 3; ++step) {
+                        ++c[static_cast<std::size_t>(orders[o][static_cast<std::size_t>(step)])];
+                        v[static_cast<std::size_t>(step + 1)] = id(c[0], c[1], c[2]);
+                    }
+                    // even permutations of the axes give one orientation, odd the other
+                    const int sign = (o == 0 || o == 3 || o == 4) ? +1 : -1;
+                    tets.emplace_back(sign, v);
+                    labels.push_back(static_cast<int>(o));
+                }
+    EXPECT_TRUE(mesh.assign_elements(tets, labels).ok());
+    return mesh;
+}
+
+// Everything observable through the public interface, for "bit-identical after a refusal".
+inline void expect_same_state(const Mesh& a, const Mesh& b) {
+    ASSERT_EQ(a.vertex_count(), b.vertex_count());
+    ASSERT_EQ(a.element_capacity(), b.element_capacity());
+    ASSERT_EQ(a.face_capacity(), b.face_capacity());
+    ASSERT_EQ(a.element_count(), b.element_count());
+    for (VertexId v = 0; v < a.vertex_count(); ++v) {
+        EXPECT_EQ(a.reference(v), b.reference(v));
+        EXPECT_EQ(a.deformed(v), b.deformed(v));
+        EXPECT_EQ(a.vertex_element(v), b.vertex_element(v));
+    }
+    for (ElementId t = 0; t < a.element_capacity(); ++t) {
+        ASSERT_EQ(a.is_element(t), b.is_element(t));
+        if (!a.is_element(t)) continue;
+        EXPECT_EQ(a.simplex(t), b.simplex(t));
+        EXPECT_EQ(a.label(t), b.label(t));
+        for (int i = 0; i < a.element_vertex_count(); ++i) EXPECT_EQ(a.face(t, i), b.face(t, i));
+    }
+    for (FaceId f = 0; f < a.face_capacity(); ++f) {
+        ASSERT_EQ(a.is_face(f), b.is_face(f));
+        if (!a.is_face(f)) continue;
+        EXPECT_EQ(a.face_element(f), b.face_element(f));
+        EXPECT_EQ(a.mate(f), b.mate(f));
+    }
+    EXPECT_EQ(a.boundary_faces(), b.boundary_faces());
+}
+
+}  // namespace sxk::test
+
+namespace sxk::test {
+
+// Counts every notification and keeps the set of boundary faces it believes in, so tests can
+// check "exactly once per change" against the mesh's own boundary.
+struct CountingWatcher : Watcher {
+    int inits = 0, removed = 0, changed = 0, added = 0;
+    int boundary_removed_count = 0, boundary_changed_count = 0, boundary_added_count = 0;
+    std::vector<FaceId> boundary;  // sorted
+
+    void init(const Mesh& mesh) override {
+        ++inits;
+        boundary = mesh.boundary_faces();
+    }
+    void element_removed(const Mesh&, ElementId, const Simplex&) override { ++removed; }
+    void element_changed(const Mesh&, ElementId, const Simplex&) override { ++changed; }
+    void element_added(const Mesh&, ElementId) override { ++added; }
+    void boundary_removed(const Mesh&, FaceId f, const Simplex&) override {
+        ++boundary_removed_count;
+        auto it = std::find(boundary.begin(), boundary.end(), f);
+        ASSERT_NE(it, boundary.end()) << "told twice that face " << f << " left the boundary";
+        boundary.erase(it);
+    }
+    void boundary_changed(const Mesh&, FaceId, const Simplex&) override { ++boundary_changed_count; }
+    void boundary_added(const Mesh&, FaceId f) override {
+        ++boundary_added_count;
+        ASSERT_EQ(std::find(boundary.begin(), boundary.end(), f), boundary.end())
+            << "told twice that face " << f << " joined the boundary";
+        boundary.push_back(f);
+    }
+    void reset_counts() {
+        removed = changed = added = 0;
+        boundary_removed_count = boundary_changed_count = boundary_added_count = 0;
+    }
+    void expect_in_step_with(const Mesh& mesh) {
+        std::sort(boundary.begin(), boundary.end());
+        EXPECT_EQ(boundary, mesh.boundary_faces());
+    }
+};
+
+}  // namespace sxk::test

@@ -1,0 +1,62 @@
+#include "sxk/predicates.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fixtures.hpp"
+
+namespace sxk {
+namespace {
+
+TEST(Predicates, Orientation2D) {
+    EXPECT_EQ(orient2d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), Sign::positive);
+    EXPECT_EQ(orient2d({0, 0, 0}, {0, 1, 0}, {1, 0, 0}), Sign::negative);
+    EXPECT_EQ(orient2d({0, 0, 0}, {1, 1, 0}, {2, 2, 0}), Sign::zero);
+}
+
+TEST(Predicates, Orientation2DIsExactNearCollinear) {
+    // b and c lie on the line y = x; a sits one unit in the last place off it, far below what
+    // the naive determinant's rounding error can resolve.
+    const Point b{12, 12, 0}, c{24, 24, 0};
+    const double up = std::nextafter(0.5, 1.0), down = std::nextafter(0.5, 0.0);
+    EXPECT_EQ(orient2d({0.5, 0.5, 0}, b, c), Sign::zero);
+    EXPECT_EQ(orient2d({up, 0.5, 0}, b, c), Sign::negative);   // right of b->c: clockwise
+    EXPECT_EQ(orient2d({down, 0.5, 0}, b, c), Sign::positive);
+    EXPECT_EQ(orient2d({0.5, 0.5, 0}, b, {24, std::nextafter(24.0, 25.0), 0}), Sign::positive);
+}
+
+TEST(Predicates, Orientation3D) {
+    const Point a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+    EXPECT_EQ(orient3d(a, b, c, {0, 0, 1}), Sign::positive);
+    EXPECT_EQ(orient3d(a, b, c, {0, 0, -1}), Sign::negative);
+    EXPECT_EQ(orient3d(a, b, c, {0.3, 0.3, 0}), Sign::zero);
+    EXPECT_EQ(orient3d(a, b, c, {0.3, 0.3, std::ldexp(1.0, -1000)}), Sign::positive);
+}
+
+TEST(Predicates, InCircleAndInSphere) {
+    const Point a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+    EXPECT_EQ(incircle(a, b, c, {0.5, 0.5, 0}), Sign::positive);
+    EXPECT_EQ(incircle(a, b, c, {1, 1, 0}), Sign::zero);  // cocircular
+    EXPECT_EQ(incircle(a, b, c, {2, 2, 0}), Sign::negative);
+    const Point d{0, 0, 1};
+    EXPECT_EQ(insphere(a, b, c, d, {0.25, 0.25, 0.25}), Sign::positive);
+    EXPECT_EQ(insphere(a, b, c, d, {1, 1, 1}), Sign::zero);  // the cube corner is on the sphere
+    EXPECT_EQ(insphere(a, b, c, d, {2, 2, 2}), Sign::negative);
+}
+
+TEST(Predicates, ElementOrientationHonoursTheSimplexSign) {
+    Mesh mesh = test::kuhn_cube(1);
+    for (ElementId t : elements(mesh)) EXPECT_EQ(element_orientation(mesh, t), Sign::positive);
+    // push a vertex through the opposite face: (1,1,1) is in all six tetrahedra
+    mesh.set_deformed(7, {-1, -1, -1});
+    std::size_t inverted = 0;
+    for (ElementId t : elements(mesh))
+        inverted += element_orientation(mesh, t) == Sign::negative;
+    EXPECT_EQ(inverted, 6u);
+    for (ElementId t : elements(mesh))
+        EXPECT_EQ(element_orientation(mesh, t, Positions::reference), Sign::positive);
+}
+
+}  // namespace
+}  // namespace sxk
