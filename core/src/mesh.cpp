@@ -38,6 +38,8 @@ Mesh& Mesh::operator=(const Mesh& other) {
         Mesh copy(other);
         copy.m_watchers = std::move(m_watchers);
         *this = std::move(copy);
+        // the watchers stay with this mesh, whose content is new to them
+        for (Watcher* w : m_watchers) w->init(*this);
     }
     return *this;
 }
