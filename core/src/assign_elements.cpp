@@ -120,32 +120,41 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
         }
     }
     if (first_problem.item != Refusal::npos) return first_problem;
-    entries = {};
-    bucket_start = {};
+    // release the scratch before the pools grow (assigning {} would keep the capacity)
+    std::vector<FaceEntry>().swap(entries);
+    std::vector<std::uint32_t>().swap(bucket_start);
 
-    // Everything is known to be consistent: build the pools aside, then swap them in.
-    std::vector<ElementRecord> elements(n);
-    std::vector<FaceRecord> faces(face_total);
-    detail::BoundaryMap boundary;
-    boundary.reserve(boundary_count);
-    std::vector<ElementId> vertex_element(vertex_count(), invalid_id);
-    for (std::size_t i = 0; i < n; ++i) {
-        ElementRecord& e = elements[i];
-        e.simplex = simplexes[i];
-        e.label = labels.empty() ? 0 : labels[i];
-        for (int j = 0; j < k; ++j) {
-            const std::size_t f = i * static_cast<std::size_t>(k) + static_cast<std::size_t>(j);
-            e.faces[static_cast<std::size_t>(j)] = static_cast<FaceId>(f);
-            faces[f] = FaceRecord{static_cast<ElementId>(i), mates[f]};
-            if (mates[f] == invalid_id) boundary.insert(e.simplex.subn(j), static_cast<FaceId>(f));
-            ElementId& anchor = vertex_element[e.simplex.vertex(j)];
-            if (anchor == invalid_id) anchor = static_cast<ElementId>(i);
+    // Everything is known to be consistent. The mesh has no elements, so building in place
+    // loses nothing but dead pool entries, and uses whatever capacity the caller reserved.
+    try {
+        m_elements.assign(n, ElementRecord{});
+        m_faces.assign(face_total, FaceRecord{});
+        m_boundary.clear();
+        m_boundary.reserve(boundary_count);
+        std::fill(m_vertex_element.begin(), m_vertex_element.end(), invalid_id);
+        for (std::size_t i = 0; i < n; ++i) {
+            ElementRecord& e = m_elements[i];
+            e.simplex = simplexes[i];
+            e.label = labels.empty() ? 0 : labels[i];
+            for (int j = 0; j < k; ++j) {
+                const std::size_t f = i * static_cast<std::size_t>(k) + static_cast<std::size_t>(j);
+                e.faces[static_cast<std::size_t>(j)] = static_cast<FaceId>(f);
+                m_faces[f] = FaceRecord{static_cast<ElementId>(i), mates[f]};
+                if (mates[f] == invalid_id) m_boundary.insert(e.simplex.subn(j), static_cast<FaceId>(f));
+                ElementId& anchor = m_vertex_element[e.simplex.vertex(j)];
+                if (anchor == invalid_id) anchor = static_cast<ElementId>(i);
+            }
         }
+    } catch (...) {
+        // out of memory half-way: leave an empty, valid mesh rather than a torn one
+        m_elements.clear();
+        m_faces.clear();
+        m_boundary.clear();
+        std::fill(m_vertex_element.begin(), m_vertex_element.end(), invalid_id);
+        m_free_element = m_free_face = invalid_id;
+        m_element_count = 0;
+        throw;
     }
-    m_elements = std::move(elements);
-    m_faces = std::move(faces);
-    m_boundary = std::move(boundary);
-    m_vertex_element = std::move(vertex_element);
     m_free_element = invalid_id;
     m_free_face = invalid_id;
     m_element_count = n;
