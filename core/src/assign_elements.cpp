@@ -25,8 +25,123 @@ namespace {
 struct FaceEntry {
     VertexId second;  // the face's other vertices, sorted (third is invalid_id for edges)
     VertexId third;
-    std::uint32_t face;  // element index * (d+1) + slot
+    std::uint32_t face;  // element index * k + slot
 };
+
+std::uint64_t sort_key(const FaceEntry& e) { return std::uint64_t{e.second} << 32 | e.third; }
+
+// Finds the mate of every face of the soup (invalid_id on the boundary), for k = d+1 vertices
+// per element known at compile time (divisions by k become shifts and multiplications).
+// Returns a refusal naming the smallest offending element index, or one with item npos.
+template <int k>
+Refusal match_faces(std::span<const Simplex> simplexes, std::size_t vertex_count,
+                    std::vector<FaceId>& mates, std::size_t& boundary_count) {
+    constexpr std::uint32_t ku = static_cast<std::uint32_t>(k);
+    const std::size_t n = simplexes.size();
+    const std::size_t face_total = n * ku;
+
+    // Counting sort of all faces by their smallest vertex. Face j omits vertex j of the sorted
+    // simplex, so face 0 starts at vertex 1 and the others at vertex 0.
+    std::vector<std::uint32_t> bucket_start(vertex_count + 1, 0);
+    for (const Simplex& s : simplexes) {
+        ++bucket_start[s.vertex(1) + 1];
+        bucket_start[s.vertex(0) + 1] += ku - 1;
+    }
+    for (std::size_t v = 0; v < vertex_count; ++v) bucket_start[v + 1] += bucket_start[v];
+    std::vector<FaceEntry> entries(face_total);
+    std::vector<std::int8_t> signs(n);
+    {
+        std::vector<std::uint32_t> cursor(bucket_start.begin(), bucket_start.end() - 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Simplex& s = simplexes[i];
+            const std::uint32_t base = static_cast<std::uint32_t>(i) * ku;
+            signs[i] = static_cast<std::int8_t>(s.sign());
+            const VertexId v0 = s.vertex(0), v1 = s.vertex(1), v2 = s.vertex(2);
+            const VertexId v3 = k == 4 ? s.vertex(3) : invalid_id;
+            std::uint32_t c = cursor[v0];
+            if constexpr (k == 4) {
+                entries[cursor[v1]++] = FaceEntry{v2, v3, base};
+                entries[c] = FaceEntry{v2, v3, base + 1};
+                entries[c + 1] = FaceEntry{v1, v3, base + 2};
+                entries[c + 2] = FaceEntry{v1, v2, base + 3};
+            } else {
+                entries[cursor[v1]++] = FaceEntry{v2, invalid_id, base};
+                entries[c] = FaceEntry{v2, invalid_id, base + 1};
+                entries[c + 1] = FaceEntry{v1, invalid_id, base + 2};
+            }
+            cursor[v0] = c + ku - 1;
+        }
+    }
+
+    mates.assign(face_total, invalid_id);
+    boundary_count = 0;
+    Refusal first_problem{"", Refusal::npos};
+    auto report = [&](std::size_t item, std::string why) {
+        if (item < first_problem.item) first_problem = Refusal{std::move(why), item};
+    };
+    // face j of a simplex with sign p has sign p (-1)^j
+    auto face_sign = [&](std::uint32_t f) { return ((f % ku) & 1) ? -signs[f / ku] : signs[f / ku]; };
+    auto face_simplex_of = [&](std::uint32_t f) { return simplexes[f / ku].subn(static_cast<int>(f % ku)); };
+    auto duplicate = [&](std::size_t a, std::size_t b) {
+        report(std::max(a, b), "element " + std::to_string(std::max(a, b)) + " repeats element " +
+                                   std::to_string(std::min(a, b)) + " (duplicate element)");
+    };
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+        FaceEntry* begin = entries.data() + bucket_start[v];
+        FaceEntry* end = entries.data() + bucket_start[v + 1];
+        if (end - begin <= 16) {  // buckets are small: about 10 faces per vertex in a tet mesh
+            for (FaceEntry* i = begin + 1; i < end; ++i) {
+                const FaceEntry x = *i;
+                FaceEntry* j = i;
+                for (; j > begin && sort_key(x) < sort_key(*(j - 1)); --j) *j = *(j - 1);
+                *j = x;
+            }
+        } else {
+            std::sort(begin, end, [](const FaceEntry& a, const FaceEntry& b) { return sort_key(a) < sort_key(b); });
+        }
+        for (FaceEntry* run = begin; run < end;) {
+            FaceEntry* run_end = run + 1;
+            while (run_end < end && sort_key(*run_end) == sort_key(*run)) ++run_end;
+            const std::size_t size = static_cast<std::size_t>(run_end - run);
+            if (size == 1) {
+                ++boundary_count;
+            } else if (size == 2) {
+                const std::uint32_t a = run[0].face, b = run[1].face;
+                const std::size_t ea = a / ku, eb = b / ku;
+                if (face_sign(a) != face_sign(b)) {
+                    mates[a] = b;
+                    mates[b] = a;
+                } else if (simplexes[ea].same_vertices(simplexes[eb])) {
+                    duplicate(ea, eb);
+                } else {
+                    report(std::max(ea, eb),
+                           "elements " + std::to_string(std::min(ea, eb)) + " and " +
+                               std::to_string(std::max(ea, eb)) + " share face " +
+                               describe(face_simplex_of(a)) +
+                               " with the same orientation (inconsistently oriented)");
+                }
+            } else {
+                std::size_t last = 0;
+                for (FaceEntry* e = run; e < run_end; ++e) last = std::max<std::size_t>(last, e->face / ku);
+                report(last, "face " + describe(Simplex(+1, face_simplex_of(run->face).vertices())) +
+                                 " is shared by " + std::to_string(size) + " elements (non-manifold)");
+            }
+            run = run_end;
+        }
+    }
+    // Distinct simplexes share at most one face; two faces of one element mated into the same
+    // element mean a mirror-image duplicate (same signs were caught above).
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::uint32_t j = 1; j < ku; ++j) {
+            const FaceId mj = mates[i * ku + j];
+            if (mj == invalid_id) continue;
+            for (std::uint32_t l = 0; l < j; ++l) {
+                const FaceId ml = mates[i * ku + l];
+                if (ml != invalid_id && ml / ku == mj / ku) duplicate(i, mj / ku);
+            }
+        }
+    return first_problem;
+}
 
 }  // namespace
 
@@ -44,85 +159,12 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
         if (std::string why = check_simplex(simplexes[i], k, vertex_count()); !why.empty())
             return Refusal{std::move(why), i};
 
-    // Counting sort of all faces by smallest vertex. Faces of a canonical simplex are sorted
-    // too; face j omits vertex j, so its smallest vertex is vertex(0) unless j == 0.
     const std::size_t face_total = n * static_cast<std::size_t>(k);
-    std::vector<std::uint32_t> bucket_start(vertex_count() + 1, 0);
-    for (const Simplex& s : simplexes)
-        for (int j = 0; j < k; ++j) ++bucket_start[s.vertex(j == 0 ? 1 : 0) + 1];
-    for (std::size_t v = 0; v < vertex_count(); ++v) bucket_start[v + 1] += bucket_start[v];
-    std::vector<FaceEntry> entries(face_total);
-    {
-        std::vector<std::uint32_t> cursor(bucket_start.begin(), bucket_start.end() - 1);
-        for (std::size_t i = 0; i < n; ++i) {
-            const Simplex& s = simplexes[i];
-            for (int j = 0; j < k; ++j) {
-                const Simplex face = s.subn(j);
-                entries[cursor[face.vertex(0)]++] =
-                    FaceEntry{face.vertex(1), k == 4 ? face.vertex(2) : invalid_id,
-                              static_cast<std::uint32_t>(i * static_cast<std::size_t>(k) + static_cast<std::size_t>(j))};
-            }
-        }
-    }
-
-    std::vector<FaceId> mates(face_total, invalid_id);
+    std::vector<FaceId> mates;
     std::size_t boundary_count = 0;
-    Refusal first_problem{"", Refusal::npos};
-    auto report = [&](std::size_t item, std::string why) {
-        if (item < first_problem.item) first_problem = Refusal{std::move(why), item};
-    };
-    auto face_simplex_of = [&](std::uint32_t face) {
-        return simplexes[face / static_cast<std::uint32_t>(k)].subn(static_cast<int>(face % static_cast<std::uint32_t>(k)));
-    };
-    auto by_vertices = [](const FaceEntry& a, const FaceEntry& b) {
-        return a.second != b.second ? a.second < b.second : a.third < b.third;
-    };
-    for (std::size_t v = 0; v < vertex_count(); ++v) {
-        FaceEntry* begin = entries.data() + bucket_start[v];
-        FaceEntry* end = entries.data() + bucket_start[v + 1];
-        if (end - begin <= 16) {
-            for (FaceEntry* i = begin + 1; i < end; ++i)
-                for (FaceEntry* j = i; j > begin && by_vertices(*j, *(j - 1)); --j) std::swap(*j, *(j - 1));
-        } else {
-            std::sort(begin, end, by_vertices);
-        }
-        for (FaceEntry* run = begin; run < end;) {
-            FaceEntry* run_end = run + 1;
-            while (run_end < end && run_end->second == run->second && run_end->third == run->third)
-                ++run_end;
-            const std::size_t size = static_cast<std::size_t>(run_end - run);
-            if (size == 1) {
-                ++boundary_count;
-            } else if (size == 2) {
-                const std::uint32_t a = run[0].face, b = run[1].face;
-                const std::size_t ea = a / static_cast<std::uint32_t>(k), eb = b / static_cast<std::uint32_t>(k);
-                const Simplex fa = face_simplex_of(a), fb = face_simplex_of(b);
-                if (simplexes[ea].same_vertices(simplexes[eb])) {
-                    report(std::max(ea, eb), "element " + std::to_string(std::max(ea, eb)) +
-                                                 " repeats element " + std::to_string(std::min(ea, eb)) +
-                                                 " (duplicate element)");
-                } else if (fa.sign() == fb.sign()) {
-                    report(std::max(ea, eb),
-                           "elements " + std::to_string(std::min(ea, eb)) + " and " +
-                               std::to_string(std::max(ea, eb)) + " share face " + describe(fa) +
-                               " with the same orientation (inconsistently oriented)");
-                } else {
-                    mates[a] = b;
-                    mates[b] = a;
-                }
-            } else {
-                std::size_t last = 0;
-                for (FaceEntry* e = run; e < run_end; ++e) last = std::max<std::size_t>(last, e->face / static_cast<std::uint32_t>(k));
-                report(last, "face " + describe(Simplex(+1, face_simplex_of(run->face).vertices())) + " is shared by " +
-                                 std::to_string(size) + " elements (non-manifold)");
-            }
-            run = run_end;
-        }
-    }
-    if (first_problem.item != Refusal::npos) return first_problem;
-    // release the scratch before the pools grow (assigning {} would keep the capacity)
-    std::vector<FaceEntry>().swap(entries);
-    std::vector<std::uint32_t>().swap(bucket_start);
+    Refusal problem = k == 4 ? match_faces<4>(simplexes, vertex_count(), mates, boundary_count)
+                             : match_faces<3>(simplexes, vertex_count(), mates, boundary_count);
+    if (problem.item != Refusal::npos) return problem;
 
     // Everything is known to be consistent. The mesh has no elements, so building in place
     // loses nothing but dead pool entries, and uses whatever capacity the caller reserved.
