@@ -37,7 +37,10 @@ Components connected_components(const Mesh& mesh) {
         }
     }
 
-    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+    // vecS for the graph's own edge list too: the default (listS) allocates one node per edge,
+    // 0.33 s against 0.19 s with vecS on the femur (212,936 tetrahedra, tools/make-data).
+    using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                        boost::no_property, boost::no_property, boost::vecS>;
     const Graph graph(edges.begin(), edges.end(), element_of.size());
     std::vector<std::uint32_t> component(element_of.size());
     result.count = static_cast<std::size_t>(boost::connected_components(graph, component.data()));

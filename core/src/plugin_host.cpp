@@ -47,21 +47,6 @@ fs::path core_library_path() {
     return normalized(info.dli_fname);
 }
 
-bool is_inside(const fs::path& path, const fs::path& folder) {
-    const fs::path relative = path.lexically_relative(folder);
-    return !relative.empty() && *relative.begin() != "..";
-}
-
-// The build tree's root: SXK_PLUGIN_BUILD_DIR is <build>/<libdir>/simplexkit/plugins and
-// SXK_PLUGIN_INSTALL_SUFFIX is <libdir>/simplexkit/plugins.
-fs::path build_root() {
-    const std::string build = SXK_PLUGIN_BUILD_DIR;
-    const std::string suffix = SXK_PLUGIN_INSTALL_SUFFIX;
-    if (build.size() > suffix.size() && build.ends_with(suffix))
-        return normalized(build.substr(0, build.size() - suffix.size()));
-    return {};
-}
-
 bool valid_plugin_name(const char* name) {
     if (name == nullptr || *name == '\0') return false;
     for (const char* c = name; *c; ++c)
@@ -214,18 +199,17 @@ PluginHost& PluginHost::operator=(PluginHost&& other) noexcept {
 }
 
 std::vector<fs::path> PluginHost::default_folders() {
-    std::vector<fs::path> folders;
     const fs::path library = core_library_path();
-    const fs::path root = build_root();
-    if (!library.empty() && !root.empty() && is_inside(library, root)) folders.push_back(SXK_PLUGIN_BUILD_DIR);
+    // The library running from where the build put it uses the build's plug-ins; any other copy
+    // (an install tree, even one inside the build folder) uses the folder beside it and never
+    // picks up build products.
+    if (!library.empty() && library.parent_path() == normalized(SXK_CORE_BUILD_DIR))
+        return {fs::path(SXK_PLUGIN_BUILD_DIR)};
     const fs::path suffix = SXK_PLUGIN_INSTALL_SUFFIX;
-    if (suffix.is_absolute()) {
-        folders.push_back(suffix);
-    } else if (!library.empty()) {
-        // <prefix>/<libdir>/libsimplexkit.so -> <prefix>/<libdir>/simplexkit/plugins
-        folders.push_back(library.parent_path() / "simplexkit" / "plugins");
-    }
-    return folders;
+    if (suffix.is_absolute()) return {suffix};
+    // <prefix>/<libdir>/libsimplexkit.so -> <prefix>/<libdir>/simplexkit/plugins
+    if (!library.empty()) return {library.parent_path() / "simplexkit" / "plugins"};
+    return {};
 }
 
 void PluginHost::load_default_folders() {

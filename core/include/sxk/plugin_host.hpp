@@ -10,11 +10,11 @@
 // goes on with the next file. The sxk CLI prints them as "sxk: warning: PATH: reason".
 //
 // Search path of load_default_folders(), in this order (the first plug-in of a name wins):
-//   1. the build tree's plug-in folder (SXK_PLUGIN_BUILD_DIR), but only while this library runs
-//      from the build tree: an installed library never picks up stale build products;
-//   2. the install folder <libdir>/simplexkit/plugins, found beside this library (dladdr), so a
-//      relocated install tree works;
-//   3. each folder of the environment variable SXK_PLUGIN_PATH (colon-separated).
+//   1. the build's plug-in folder (SXK_PLUGIN_BUILD_DIR) while this library runs from where the
+//      build put it; otherwise the install folder <libdir>/simplexkit/plugins beside this
+//      library (found with dladdr, so a relocated install tree works). An installed copy never
+//      picks up build products, not even when installed inside the build folder;
+//   2. each folder of the environment variable SXK_PLUGIN_PATH (colon-separated).
 // Applications add folders of their own with load_folder(), before or after the defaults.
 // A folder's *.so files are loaded in name order; the same file reached twice is loaded once.
 //
@@ -64,7 +64,8 @@ public:
     PluginHost(PluginHost&&) noexcept;
     PluginHost& operator=(PluginHost&&) noexcept;
 
-    // The folders load_default_folders() searches, in order (existing or not).
+    // The folder load_default_folders() searches before SXK_PLUGIN_PATH (see above; it may not
+    // exist). Empty when this library cannot find its own file.
     static std::vector<std::filesystem::path> default_folders();
 
     // Loads every plug-in of the default folders; missing default folders are skipped quietly,

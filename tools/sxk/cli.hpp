@@ -1,0 +1,51 @@
+// Shared pieces of the sxk commands: the context every command writes to, the registration
+// function of each built-in command (one command per file, STYLE.md 1), and mesh loading with
+// the error convention of DESIGN.md ("sxk: FILE:LINE: reason", exit code 2).
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "sxk/io.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/plugin_host.hpp"
+
+namespace sxk::cli {
+
+// Exit codes everywhere (DESIGN.md "CLI surface").
+inline constexpr int exit_success = 0;
+inline constexpr int exit_refused = 1;  // operation refused or result invalid
+inline constexpr int exit_usage = 2;    // usage or input error
+
+struct Context {
+    std::ostream& out;
+    std::ostream& err;
+    int exit_code = exit_success;
+    // Loaded only when the invocation may involve plug-ins (built-in mesh commands never run
+    // foreign code); nullptr otherwise.
+    const PluginHost* host = nullptr;
+    // Plug-in commands sxk accepts (those not clashing with a built-in name).
+    std::vector<FoundCommand> plugin_commands = {};
+};
+
+void add_info_command(CLI::App& app, Context& context);
+void add_validate_command(CLI::App& app, Context& context);
+void add_convert_command(CLI::App& app, Context& context);
+void add_quality_command(CLI::App& app, Context& context);
+void add_plugins_command(CLI::App& app, Context& context);
+
+// Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
+// context.err, sets context.exit_code to 2 and returns nullopt.
+std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options = {},
+                              ReadReport* report = nullptr);
+
+// "tetrahedron" / "triangle"; element_count_text: "1 tetrahedron", "2 tetrahedra".
+const char* element_kind(const Mesh& mesh);
+std::string element_count_text(const Mesh& mesh, std::size_t count);
+std::string element_count_text(const Mesh& mesh);
+
+}  // namespace sxk::cli

@@ -1,0 +1,61 @@
+// sxk convert IN OUT [--reorient] [--gmsh-version 22|41]: the formats follow the extensions.
+#include <memory>
+
+#include "cli.hpp"
+#include "progress.hpp"
+
+namespace sxk::cli {
+namespace {
+
+struct ConvertOptions {
+    std::string input;
+    std::string output;
+    bool reorient = false;
+    int gmsh_version = 41;
+};
+
+int run_convert(Context& context, const ConvertOptions& options) {
+    // refuse an unknown output format before spending time on the input
+    if (!format_from_extension(options.output)) {
+        context.err << "sxk: " << options.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        return exit_usage;
+    }
+    ReadOptions read_options;
+    read_options.reorient = options.reorient;
+    ReadReport report;
+    std::optional<Mesh> mesh = load_mesh(context, options.input, read_options, &report);
+    if (!mesh) return exit_usage;
+
+    WriteOptions write_options;
+    write_options.gmsh_version = options.gmsh_version;
+    try {
+        Progress progress("writing " + options.output);
+        write_mesh(*mesh, options.output, write_options);
+    } catch (const std::exception& error) {
+        // the mesh was read; the writer refused it (cannot open, format cannot hold it)
+        context.err << "sxk: " << options.output << ":0: " << error.what() << '\n';
+        return exit_refused;
+    }
+    context.out << options.input << " -> " << options.output << ": " << mesh->vertex_count() << " vertices, "
+                << element_count_text(*mesh);
+    if (options.reorient) context.out << ", " << report.reoriented << " reoriented";
+    context.out << '\n';
+    return exit_success;
+}
+
+}  // namespace
+
+void add_convert_command(CLI::App& app, Context& context) {
+    auto options = std::make_shared<ConvertOptions>();
+    CLI::App* command = app.add_subcommand(
+        "convert", "Convert between formats by extension: .mesh .msh .node/.ele .off .obj .vtu (write only)");
+    command->add_option("IN", options->input, "Input mesh file")->required();
+    command->add_option("OUT", options->output, "Output mesh file")->required();
+    command->add_flag("--reorient", options->reorient, "Flip inverted elements instead of refusing the input");
+    command->add_option("--gmsh-version", options->gmsh_version, "Gmsh ASCII format version of a .msh output")
+        ->check(CLI::IsMember({22, 41}))
+        ->capture_default_str();
+    command->callback([&context, options] { context.exit_code = run_convert(context, *options); });
+}
+
+}  // namespace sxk::cli

@@ -1,0 +1,37 @@
+#include <new>
+
+#include "cli.hpp"
+#include "progress.hpp"
+
+namespace sxk::cli {
+
+std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options,
+                              ReadReport* report) {
+    try {
+        Progress progress("reading " + file);
+        return read_mesh(file, options, report);
+    } catch (const InputError& error) {
+        context.err << "sxk: " << error.what() << '\n';
+    } catch (const std::bad_alloc&) {
+        context.err << "sxk: " << file << ":0: out of memory while reading\n";
+    } catch (const std::exception& error) {
+        // readers promise InputError; anything else (filesystem errors) still names the file
+        context.err << "sxk: " << file << ":0: " << error.what() << '\n';
+    }
+    context.exit_code = exit_usage;
+    return std::nullopt;
+}
+
+std::string element_count_text(const Mesh& mesh, std::size_t count) {
+    const bool tetrahedra = mesh.topological_dimension() == 3;
+    const char* noun = count == 1 ? (tetrahedra ? "tetrahedron" : "triangle") : (tetrahedra ? "tetrahedra" : "triangles");
+    return std::to_string(count) + ' ' + noun;
+}
+
+std::string element_count_text(const Mesh& mesh) { return element_count_text(mesh, mesh.element_count()); }
+
+const char* element_kind(const Mesh& mesh) {
+    return mesh.topological_dimension() == 3 ? "tetrahedron" : "triangle";
+}
+
+}  // namespace sxk::cli

@@ -1,0 +1,121 @@
+// sxk: the simplexkit command-line tool (DESIGN.md "The CLI surface").
+//
+// Built-in commands (info, validate, convert, quality) never load plug-ins, so a broken plug-in
+// can neither slow them down nor crash them. Everything else loads the plug-ins first, prints
+// what was refused as "sxk: warning: PATH: reason", and dispatches plug-in commands by their
+// name words before CLI11 sees the arguments: a plug-in parses its own options and prints its
+// own --help.
+#include <algorithm>
+#include <array>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace sxk::cli {
+namespace {
+
+constexpr std::array<std::string_view, 5> builtin_commands = {"info", "validate", "convert", "quality", "plugins"};
+
+bool is_builtin(std::string_view word) {
+    return std::find(builtin_commands.begin(), builtin_commands.end(), word) != builtin_commands.end();
+}
+
+// Loads plug-ins, prints the refusals, and keeps the commands that do not clash with built-ins.
+void load_plugins(PluginHost& host, Context& context) {
+    host.load_default_folders();
+    for (const PluginDiagnostic& diagnostic : host.diagnostics())
+        context.err << "sxk: warning: " << diagnostic.path.string() << ": " << diagnostic.reason << '\n';
+    for (const FoundCommand& found : host.commands()) {
+        const std::string_view name = found.command->name();
+        if (is_builtin(name.substr(0, name.find(' ')))) {
+            context.err << "sxk: warning: " << found.plugin->path.string() << ": command '" << name
+                        << "' clashes with a built-in command; ignored\n";
+            continue;
+        }
+        context.plugin_commands.push_back(found);
+    }
+    context.host = &host;
+}
+
+int run_plugin_command(const FoundCommand& found, std::span<const std::string> args, Context& context) {
+    try {
+        return found.command->run(args, context.out, context.err);
+    } catch (const InputError& error) {
+        context.err << "sxk: " << error.what() << '\n';
+        return exit_usage;
+    } catch (const std::exception& error) {
+        context.err << "sxk: " << found.command->name() << ": " << error.what() << '\n';
+        return exit_refused;
+    }
+}
+
+std::string plugin_footer(const Context& context) {
+    if (context.plugin_commands.empty()) return {};
+    std::string footer = "Plug-in commands (sxk COMMAND --help for their options):\n";
+    for (const FoundCommand& found : context.plugin_commands) {
+        std::string name(found.command->name());
+        name.resize(std::max<std::size_t>(name.size() + 2, 16), ' ');
+        footer += "  " + name + std::string(found.command->summary()) + "  [" + found.plugin->name + "]\n";
+    }
+    return footer;
+}
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    Context context{out, err};
+    PluginHost host;
+    const bool needs_plugins = args.empty() || (args[0] != "--version" && !(is_builtin(args[0]) && args[0] != "plugins"));
+    if (needs_plugins) {
+        load_plugins(host, context);
+        const FoundCommand found = host.find_command(args);
+        if (found.command && std::find_if(context.plugin_commands.begin(), context.plugin_commands.end(),
+                                          [&](const FoundCommand& usable) {
+                                              return usable.command == found.command;
+                                          }) != context.plugin_commands.end())
+            return run_plugin_command(found, std::span(args).subspan(found.words), context);
+    }
+
+    CLI::App app("simplexkit: simplicial meshes (triangles, tetrahedra) after Nienhuys' thesis ch. 7", "sxk");
+    app.set_version_flag("--version", "sxk " SXK_VERSION);
+    app.require_subcommand(1);
+    app.footer(plugin_footer(context));
+    add_info_command(app, context);
+    add_validate_command(app, context);
+    add_convert_command(app, context);
+    add_quality_command(app, context);
+    add_plugins_command(app, context);
+
+    if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {
+        err << "sxk: unknown command '" << args[0] << "' (see sxk --help and sxk plugins)\n";
+        return exit_usage;
+    }
+    try {
+        // CLI11 wants the arguments last-first
+        std::vector<std::string> reversed(args.rbegin(), args.rend());
+        app.parse(reversed);
+    } catch (const CLI::ParseError& error) {
+        if (error.get_exit_code() == 0) return app.exit(error, out, err);  // --help, --version
+        std::string command = "sxk";
+        for (const CLI::App* selected : app.get_subcommands()) command += " " + selected->get_name();
+        err << "sxk: " << error.what() << "\nRun '" << command << " --help' for more information.\n";
+        return exit_usage;
+    }
+    return context.exit_code;
+}
+
+}  // namespace
+}  // namespace sxk::cli
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        return sxk::cli::run(args, std::cout, std::cerr);
+    } catch (const std::exception& error) {
+        // a bug, not an input problem: say so instead of terminating with an abort
+        std::cerr << "sxk: internal error: " << error.what() << '\n';
+        return sxk::cli::exit_refused;
+    }
+}
