@@ -1,5 +1,4 @@
-// connected_components: face-adjacency components through Boost.Graph. (In-process; lives with
-// the CLI tests because `sxk info` is its user.)
+// connected_components: face-adjacency components through Boost.Graph.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -6,7 +6,28 @@
 // files, counts that do not match, indices out of range, NaN/inf coordinates, unknown keywords,
 // binary garbage, and, through Mesh::assign_elements, duplicate and non-manifold elements.
 // Inverted elements (negative exact orientation when topological == ambient dimension) are an
-// error unless ReadOptions::reorient is set, which flips them and counts them.
+// error unless ReadOptions::reorient is set, which flips them and counts them. Flat elements
+// (orientation exactly zero) are read as they are. A vertex whose elements do not connect
+// through faces (two tetrahedra touching at a corner) is refused: the kernel cannot hold it.
+//
+// Dimensions. The topological dimension is that of the largest cells in the file (tetrahedra,
+// else triangles; a file with neither is refused). The ambient dimension is what the file says
+// where it says it (Medit "Dimension", the TetGen .node dimension); formats that always store
+// x y z (Gmsh, OFF, OBJ) make a planar mesh (ambient 2) exactly when the mesh is made of
+// triangles and every z is 0 (-0 included; planar meshes store z = +0).
+//
+// Labels. Element labels: Medit element refs, Gmsh physical tags (2.2: the element's first tag;
+// 4.1: the first physical tag of its entity), the first TetGen region attribute; OFF and OBJ
+// have none (0). Face labels (Mesh::face_labels(), keyed by the face's vertex set as
+// Simplex(+1, ...) with sign +1, whichever way the file orients it): the cells one dimension
+// below the mesh (Medit Triangles/Edges refs, Gmsh lower-dimensional elements' physical tags,
+// TetGen .face markers, or .edge markers for triangle meshes as Triangle writes them). Every
+// labelled face must be a face of the mesh. Writers write exactly these faces back (boundary
+// faces outward), never invented ones; TetGen without face labels writes the plain boundary
+// without markers.
+//
+// Error messages number elements as the file does (Gmsh element tags, TetGen element numbers),
+// else 1, 2, ... in file order; vertices likewise (OFF from 0, Medit and OBJ from 1).
 #pragma once
 
 #include <cstddef>
@@ -81,7 +102,9 @@ struct WriteOptions {
     bool quality_cell_data = true;              // .vtu: aspect ratio etc. per element
 };
 
-// Writes by extension (for TetGen give X.node or X.ele: writes X.node, X.ele and X.face).
+// Writes by extension (for TetGen give X.node or X.ele: writes X.node, X.ele and X.face, or
+// X.edge for a triangle mesh). Positions are written in the shortest form that reads back to
+// the same double, so write -> read is exact.
 // OFF and OBJ hold triangles: a tetrahedral mesh is written as its boundary surface.
 // Throws OutputError.
 SXK_API void write_mesh(const Mesh& mesh, const std::filesystem::path& path,

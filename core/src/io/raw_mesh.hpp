@@ -36,11 +36,12 @@ namespace sxk::io {
 struct CellList {
     explicit CellList(int size) : size(size) {}
     int size;
-    std::vector<VertexId> vertices;     // size per cell, file order, 0-based
-    std::vector<int> labels;            // one per cell
-    std::vector<std::size_t> lines;     // one per cell
-    std::vector<std::int64_t> numbers;  // the file's numbers (Gmsh tags, TetGen ids); empty: 1, 2, ...
-    std::string file;                   // where the cells were read
+    std::vector<VertexId> vertices;  // size per cell, file order, 0-based
+    std::vector<int> labels;         // one per cell
+    std::vector<std::size_t> lines;  // one per cell
+    std::vector<std::int64_t>
+        numbers;       // the file's numbers (Gmsh tags, TetGen ids); empty: 1, 2, ...
+    std::string file;  // where the cells were read
 
     std::size_t count() const { return lines.size(); }
     std::int64_t number(std::size_t i) const {
@@ -63,7 +64,8 @@ struct RawMesh {
     CellList tetrahedra{4};
 
     std::int64_t vertex_number(VertexId v) const {
-        return point_numbers.empty() ? vertex_base + static_cast<std::int64_t>(v) : point_numbers[v];
+        return point_numbers.empty() ? vertex_base + static_cast<std::int64_t>(v)
+                                     : point_numbers[v];
     }
 };
 
@@ -74,6 +76,7 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
 
 // Room for `wanted` records, but never more than the text left could hold (a header claiming a
 // billion vertices must not allocate gigabytes before the file runs out).
-std::size_t plausible_count(std::int64_t wanted, std::size_t bytes_left, std::size_t bytes_per_record);
+std::size_t plausible_count(std::int64_t wanted, std::size_t bytes_left,
+                            std::size_t bytes_per_record);
 
 }  // namespace sxk::io

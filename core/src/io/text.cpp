@@ -20,21 +20,26 @@ std::string load_file(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::error_code error;
     const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status)) throw InputError(name, 0, "no such file");
-    if (std::filesystem::is_directory(status)) throw InputError(name, 0, "is a directory");
+    if (!std::filesystem::exists(status))
+        throw InputError(name, 0, "no such file");
+    if (std::filesystem::is_directory(status))
+        throw InputError(name, 0, "is a directory");
     // stdio rather than ifstream: one fread into a buffer of the file's size, and errno for
     // the reason when it fails (permissions, I/O error).
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"),
-                                                          &std::fclose);
-    if (!file) throw InputError(name, 0, std::string("cannot open: ") + std::strerror(errno));
+                                                         &std::fclose);
+    if (!file)
+        throw InputError(name, 0, std::string("cannot open: ") + std::strerror(errno));
     std::string data;
     const auto size = std::filesystem::file_size(path, error);
-    if (!error) data.resize(static_cast<std::size_t>(size));
+    if (!error)
+        data.resize(static_cast<std::size_t>(size));
     std::size_t got = std::fread(data.data(), 1, data.size(), file.get());
     data.resize(got);
     // pipes and files that grew meanwhile: read whatever is left
     char chunk[65536];
-    while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) data.append(chunk, got);
+    while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0)
+        data.append(chunk, got);
     if (std::ferror(file.get()))
         throw InputError(name, 0, std::string("cannot read: ") + std::strerror(errno));
     return data;
@@ -42,14 +47,19 @@ std::string load_file(const std::filesystem::path& path) {
 
 std::string load_stream(std::istream& in, const std::string& name) {
     std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw InputError(name, 0, "cannot read the stream");
+    if (in.bad())
+        throw InputError(name, 0, "cannot read the stream");
     return data;
 }
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-bool is_space(char c) { return is_blank(c) || c == '\n'; }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+bool is_space(char c) {
+    return is_blank(c) || c == '\n';
+}
 
 std::string hex_byte(unsigned char c) {
     static constexpr char digits[] = "0123456789ABCDEF";
@@ -59,13 +69,15 @@ std::string hex_byte(unsigned char c) {
 }  // namespace
 
 std::string_view check_text(std::string_view text, const std::string& name) {
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
     const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
     const std::size_t size = text.size();
     std::size_t i = 0;
     auto fail = [&](std::size_t at) {
         const std::size_t line =
-            1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+            1 + static_cast<std::size_t>(
+                    std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
         throw InputError(name, line, "binary data (byte " + hex_byte(bytes[at]) + ")");
     };
     while (i < size) {
@@ -75,16 +87,19 @@ std::string_view check_text(std::string_view text, const std::string& name) {
             continue;
         }
         if (c < 0x80) {
-            if (c != '\n' && c != '\t' && c != '\r' && c != '\v' && c != '\f') fail(i);
+            if (c != '\n' && c != '\t' && c != '\r' && c != '\v' && c != '\f')
+                fail(i);
             ++i;
             continue;
         }
         // UTF-8: a lead byte announcing 1..3 continuation bytes 10xxxxxx (0xC0/0xC1 and
         // 0xF5.. can only start overlong or out-of-range sequences)
-        const int more = (c >= 0xC2 && c <= 0xDF) ? 1 : (c >= 0xE0 && c <= 0xEF) ? 2
-                         : (c >= 0xF0 && c <= 0xF4)  ? 3
-                                                     : -1;
-        if (more < 0) fail(i);
+        const int more = (c >= 0xC2 && c <= 0xDF)   ? 1
+                         : (c >= 0xE0 && c <= 0xEF) ? 2
+                         : (c >= 0xF0 && c <= 0xF4) ? 3
+                                                    : -1;
+        if (more < 0)
+            fail(i);
         for (int k = 1; k <= more; ++k)
             if (i + static_cast<std::size_t>(k) >= size ||
                 (bytes[i + static_cast<std::size_t>(k)] & 0xC0) != 0x80)
@@ -103,7 +118,8 @@ void Cursor::skip(bool cross_lines) {
         if (is_blank(c)) {
             ++m_p;
         } else if (c == '\n') {
-            if (!cross_lines) return;
+            if (!cross_lines)
+                return;
             ++m_line;
             ++m_p;
         } else if (c == m_comment && m_comment != '\0') {
@@ -117,7 +133,8 @@ void Cursor::skip(bool cross_lines) {
 
 std::string_view Cursor::take_token() {
     const char* start = m_p;
-    while (m_p < m_end && !is_space(*m_p)) ++m_p;
+    while (m_p < m_end && !is_space(*m_p))
+        ++m_p;
     m_token_line = m_line;
     m_in_line = true;
     return {start, static_cast<std::size_t>(m_p - start)};
@@ -130,20 +147,23 @@ bool Cursor::at_end() {
 
 std::string_view Cursor::next() {
     skip(true);
-    if (m_p == m_end) return {};
+    if (m_p == m_end)
+        return {};
     return take_token();
 }
 
 std::string_view Cursor::peek() {
     skip(true);
     const char* start = m_p;
-    while (start < m_end && !is_space(*start)) ++start;
+    while (start < m_end && !is_space(*start))
+        ++start;
     return {m_p, static_cast<std::size_t>(start - m_p)};
 }
 
 std::string_view Cursor::need(const char* what) {
     const std::string_view token = next();
-    if (token.empty()) fail(std::string("truncated file: expected ") + what);
+    if (token.empty())
+        fail(std::string("truncated file: expected ") + what);
     return token;
 }
 
@@ -160,7 +180,8 @@ bool Cursor::next_line() {
         ++m_line;
     }
     skip(true);
-    if (m_p == m_end) return false;
+    if (m_p == m_end)
+        return false;
     m_in_line = true;
     m_token_line = m_line;
     return true;
@@ -168,13 +189,15 @@ bool Cursor::next_line() {
 
 std::string_view Cursor::next_in_line() {
     skip(false);
-    if (m_p == m_end || *m_p == '\n') return {};
+    if (m_p == m_end || *m_p == '\n')
+        return {};
     return take_token();
 }
 
 std::string_view Cursor::need_in_line(const char* what) {
     const std::string_view token = next_in_line();
-    if (token.empty()) fail(std::string("missing ") + what);
+    if (token.empty())
+        fail(std::string("missing ") + what);
     return token;
 }
 
@@ -190,7 +213,8 @@ namespace {
 // Only called for tokens from_chars accepted as a number, so the syntax is known to be valid.
 bool overflows(std::string_view token) {
     std::size_t i = 0;
-    if (i < token.size() && (token[i] == '-' || token[i] == '+')) ++i;
+    if (i < token.size() && (token[i] == '-' || token[i] == '+'))
+        ++i;
     std::int64_t digits_before_point = 0;  // significant digits before '.'
     std::int64_t zeros_after_point = 0;    // zeros between '.' and the first significant digit
     bool significant = false, point = false;
@@ -200,7 +224,8 @@ bool overflows(std::string_view token) {
             point = true;
         } else if (c != '0' || significant) {
             significant = true;
-            if (!point) ++digits_before_point;
+            if (!point)
+                ++digits_before_point;
         } else if (point) {
             ++zeros_after_point;
         }
@@ -209,10 +234,12 @@ bool overflows(std::string_view token) {
     if (i < token.size()) {
         ++i;
         bool negative = false;
-        if (i < token.size() && (token[i] == '-' || token[i] == '+')) negative = token[i++] == '-';
+        if (i < token.size() && (token[i] == '-' || token[i] == '+'))
+            negative = token[i++] == '-';
         for (; i < token.size(); ++i)
             exponent = std::min<std::int64_t>(exponent * 10 + (token[i] - '0'), 1'000'000'000);
-        if (negative) exponent = -exponent;
+        if (negative)
+            exponent = -exponent;
     }
     const std::int64_t magnitude =
         (digits_before_point > 0 ? digits_before_point : -zeros_after_point) + exponent;
@@ -224,22 +251,26 @@ bool overflows(std::string_view token) {
 double Cursor::to_double(std::string_view token, const char* what) const {
     std::string_view digits = token;
     // from_chars takes no '+' (C++ follows strtol's grammar minus the plus); files have them
-    if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
+    if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-')
+        digits.remove_prefix(1);
     double value = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (end != digits.data() + digits.size() || error == std::errc::invalid_argument)
         fail(std::string("expected ") + what + ", found " + quote(token));
     if (error == std::errc::result_out_of_range) {
-        if (overflows(digits)) fail("coordinate is not finite");
+        if (overflows(digits))
+            fail("coordinate is not finite");
         return digits[0] == '-' ? -0.0 : 0.0;
     }
-    if (!std::isfinite(value)) fail("coordinate is not finite");
+    if (!std::isfinite(value))
+        fail("coordinate is not finite");
     return value;
 }
 
 std::int64_t Cursor::to_integer(std::string_view token, const char* what) const {
     std::string_view digits = token;
-    if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
+    if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-')
+        digits.remove_prefix(1);
     std::int64_t value = 0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (end != digits.data() + digits.size() || error == std::errc::invalid_argument)
@@ -257,7 +288,9 @@ std::int64_t Cursor::to_integer(std::string_view token, const char* what, std::i
     return value;
 }
 
-void Cursor::fail(const std::string& reason) const { fail_at(m_token_line, reason); }
+void Cursor::fail(const std::string& reason) const {
+    fail_at(m_token_line, reason);
+}
 
 void Cursor::fail_at(std::size_t line, const std::string& reason) const {
     throw InputError(m_name, line, reason);
@@ -265,10 +298,12 @@ void Cursor::fail_at(std::size_t line, const std::string& reason) const {
 
 std::string quote(std::string_view token) {
     constexpr std::size_t limit = 24;
-    if (token.size() <= limit) return "'" + std::string(token) + "'";
+    if (token.size() <= limit)
+        return "'" + std::string(token) + "'";
     // cut at a UTF-8 character boundary so the message stays valid text
     std::size_t cut = limit;
-    while (cut > 0 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80) --cut;
+    while (cut > 0 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80)
+        --cut;
     return "'" + std::string(token.substr(0, cut)) + "...'";
 }
 
@@ -287,8 +322,9 @@ void append_number(std::string& out, std::int64_t value) {
 void write_file(const std::filesystem::path& path, std::string_view data) {
     const std::string name = path.string();
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "wb"),
-                                                          &std::fclose);
-    if (!file) throw OutputError("cannot write " + name + ": " + std::strerror(errno));
+                                                         &std::fclose);
+    if (!file)
+        throw OutputError("cannot write " + name + ": " + std::strerror(errno));
     if (std::fwrite(data.data(), 1, data.size(), file.get()) != data.size())
         throw OutputError("cannot write " + name + ": " + std::strerror(errno));
     // a full disk often shows only when the buffer is flushed
