@@ -61,8 +61,9 @@ struct ElementSubstitution {
 };
 
 // Labels of (d-1)-faces, as Medit "Triangles"/"Edges" references or Gmsh physical tags carry
-// them: keyed by the positively oriented simplex, kept for faces on the boundary or on
-// interfaces between materials, written back by the formats that have them.
+// them, kept for faces on the boundary or on interfaces between materials and written back by
+// the formats that have them. The key is Simplex(+1, sorted vertices) whatever the orientation
+// of the face in the mesh or in the file: a label belongs to the vertex set, not to one side.
 using FaceLabels = std::unordered_map<Simplex, int, SimplexHash>;
 
 class SXK_API Mesh {

@@ -6,12 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <istream>
 #include <iterator>
-#include <limits>
 #include <memory>
-#include <sstream>
 #include <system_error>
 
 namespace sxk::io {

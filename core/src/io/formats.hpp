@@ -1,0 +1,48 @@
+// The per-format readers and writers behind read_mesh/write_mesh (io.cpp dispatches).
+//
+// Readers get the whole file as text that already passed check_text and is not blank; they
+// throw InputError. Writers return the file's content (the caller writes it in one go) and throw
+// OutputError when the format cannot hold the mesh.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sxk/io.hpp"
+#include "sxk/mesh.hpp"
+
+namespace sxk::io {
+
+Mesh read_medit(std::string_view text, const std::string& name, const ReadOptions& options,
+                ReadReport* report);
+Mesh read_gmsh(std::string_view text, const std::string& name, const ReadOptions& options,
+               ReadReport* report);
+Mesh read_off(std::string_view text, const std::string& name, const ReadOptions& options,
+              ReadReport* report);
+Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions& options,
+              ReadReport* report);
+
+// TetGen: .node and .ele, and optionally the labelled faces (.face for tetrahedra, .edge for
+// triangles; face_text == nullptr when there is no such file).
+struct TetgenText {
+    std::string_view node;
+    std::string node_name;
+    std::string_view ele;
+    std::string ele_name;
+    const std::string_view* face = nullptr;
+    std::string face_name;
+};
+Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report);
+
+std::string write_medit(const Mesh& mesh, const WriteOptions& options);
+std::string write_gmsh(const Mesh& mesh, const WriteOptions& options);
+std::string write_off(const Mesh& mesh, const WriteOptions& options);
+std::string write_obj(const Mesh& mesh, const WriteOptions& options);
+std::string write_vtu(const Mesh& mesh, const WriteOptions& options);
+struct TetgenFiles {
+    std::string node, ele, face;  // face: .face for tetrahedra, .edge for triangles
+};
+TetgenFiles write_tetgen(const Mesh& mesh, const WriteOptions& options);
+
+}  // namespace sxk::io

@@ -1,0 +1,193 @@
+// read_mesh / write_mesh: choose the format, load the text, hand it to the format's reader.
+#include "sxk/io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <istream>
+
+#include "formats.hpp"
+#include "text.hpp"
+
+namespace sxk {
+
+InputError::InputError(std::string file, std::size_t line, std::string reason)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " + reason),
+      m_file(std::move(file)),
+      m_line(line),
+      m_reason(std::move(reason)) {}
+
+std::string_view to_string(Format format) {
+    switch (format) {
+        case Format::medit:
+            return "medit";
+        case Format::gmsh:
+            return "gmsh";
+        case Format::tetgen:
+            return "tetgen";
+        case Format::off:
+            return "off";
+        case Format::obj:
+            return "obj";
+        case Format::vtu:
+            return "vtu";
+    }
+    return "unknown";
+}
+
+std::optional<Format> format_from_extension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".mesh")
+        return Format::medit;
+    if (extension == ".msh")
+        return Format::gmsh;
+    if (extension == ".node" || extension == ".ele")
+        return Format::tetgen;
+    if (extension == ".off")
+        return Format::off;
+    if (extension == ".obj")
+        return Format::obj;
+    if (extension == ".vtu")
+        return Format::vtu;
+    return std::nullopt;
+}
+
+namespace {
+
+bool blank(std::string_view text) {
+    return std::all_of(text.begin(), text.end(), [](char c) {
+        return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+    });
+}
+
+// Every reader starts the same way: refuse binary data, then an empty file.
+std::string_view checked(const std::string& data, const std::string& name) {
+    const std::string_view text = io::check_text(data, name);
+    if (blank(text))
+        throw InputError(name, 0, "empty file");
+    return text;
+}
+
+Mesh read_text(std::string_view text, Format format, const std::string& name,
+               const ReadOptions& options, ReadReport* report) {
+    switch (format) {
+        case Format::medit:
+            return io::read_medit(text, name, options, report);
+        case Format::gmsh:
+            return io::read_gmsh(text, name, options, report);
+        case Format::off:
+            return io::read_off(text, name, options, report);
+        case Format::obj:
+            return io::read_obj(text, name, options, report);
+        case Format::tetgen:
+            throw InputError(name, 0,
+                             "TetGen meshes need a .node and an .ele stream (read_tetgen)");
+        case Format::vtu:
+            break;
+    }
+    throw InputError(name, 0, ".vtu files are written, not read");
+}
+
+}  // namespace
+
+Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, ReadReport* report) {
+    const std::string name = path.string();
+    const std::optional<Format> format = format_from_extension(path);
+    if (!format)
+        throw InputError(name, 0,
+                         "unknown mesh file extension '" + path.extension().string() + "'");
+    if (*format == Format::tetgen) {
+        // X.node and X.ele belong together; X.face (tetrahedra) or X.edge (triangles) carries
+        // the boundary markers when it exists
+        std::filesystem::path node = path, ele = path, face = path, edge = path;
+        node.replace_extension(".node");
+        ele.replace_extension(".ele");
+        face.replace_extension(".face");
+        edge.replace_extension(".edge");
+        const std::string node_data = io::load_file(node);
+        const std::string ele_data = io::load_file(ele);
+        io::TetgenText text;
+        text.node_name = node.string();
+        text.ele_name = ele.string();
+        text.node = checked(node_data, text.node_name);
+        text.ele = checked(ele_data, text.ele_name);
+        // which of .face/.edge applies depends on the .ele file; read both if present, the
+        // reader picks one
+        std::string face_data;
+        std::string_view face_text;
+        const bool tetrahedra = [&] {
+            // the .ele header "count nodes-per-element ..."; nodes per element defaults to 4
+            io::Cursor header(text.ele, text.ele_name, '#');
+            header.next_line();
+            header.next_in_line();
+            const std::string_view per_element = header.next_in_line();
+            return per_element != "3" && per_element != "6";
+        }();
+        const std::filesystem::path& labels = tetrahedra ? face : edge;
+        if (std::filesystem::exists(labels)) {
+            text.face_name = labels.string();
+            face_data = io::load_file(labels);
+            face_text = checked(face_data, text.face_name);
+            text.face = &face_text;
+        }
+        return io::read_tetgen_text(text, options, report);
+    }
+    const std::string data = io::load_file(path);
+    return read_text(checked(data, name), *format, name, options, report);
+}
+
+Mesh read_mesh(std::istream& in, Format format, const std::string& name, const ReadOptions& options,
+               ReadReport* report) {
+    const std::string data = io::load_stream(in, name);
+    return read_text(checked(data, name), format, name, options, report);
+}
+
+Mesh read_tetgen(std::istream& node, const std::string& node_name, std::istream& ele,
+                 const std::string& ele_name, const ReadOptions& options, ReadReport* report) {
+    const std::string node_data = io::load_stream(node, node_name);
+    const std::string ele_data = io::load_stream(ele, ele_name);
+    io::TetgenText text;
+    text.node_name = node_name;
+    text.ele_name = ele_name;
+    text.node = checked(node_data, node_name);
+    text.ele = checked(ele_data, ele_name);
+    return io::read_tetgen_text(text, options, report);
+}
+
+void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
+    const std::optional<Format> format = format_from_extension(path);
+    if (!format)
+        throw OutputError("cannot write " + path.string() + ": unknown mesh file extension '" +
+                          path.extension().string() + "'");
+    switch (*format) {
+        case Format::medit:
+            io::write_file(path, io::write_medit(mesh, options));
+            return;
+        case Format::gmsh:
+            io::write_file(path, io::write_gmsh(mesh, options));
+            return;
+        case Format::off:
+            io::write_file(path, io::write_off(mesh, options));
+            return;
+        case Format::obj:
+            io::write_file(path, io::write_obj(mesh, options));
+            return;
+        case Format::vtu:
+            io::write_file(path, io::write_vtu(mesh, options));
+            return;
+        case Format::tetgen: {
+            const io::TetgenFiles files = io::write_tetgen(mesh, options);
+            std::filesystem::path node = path, ele = path, face = path;
+            node.replace_extension(".node");
+            ele.replace_extension(".ele");
+            face.replace_extension(mesh.topological_dimension() == 3 ? ".face" : ".edge");
+            io::write_file(node, files.node);
+            io::write_file(ele, files.ele);
+            io::write_file(face, files.face);
+            return;
+        }
+    }
+}
+
+}  // namespace sxk

@@ -1,0 +1,136 @@
+// OFF (Object File Format, as Geomview, CGAL and the CGAL data sets write it): triangles only.
+//
+//   OFF                     (or COFF, NOFF, CNOFF: vertices may carry colours/normals)
+//   nv nf ne                (may stand on the OFF line; ne is ignored)
+//   x y z                   nv lines
+//   3 a b c [colour]        nf lines, 0-based vertex indices
+//
+// Faces with more than three vertices are refused (the mesh is simplicial). OFF holds no labels.
+// Always x y z: a mesh whose z are all 0 is planar (ambient dimension 2), and then the
+// triangles must be counter-clockwise. Written tetrahedral meshes become their boundary.
+#include "formats.hpp"
+#include "raw_mesh.hpp"
+#include "text.hpp"
+#include "writing.hpp"
+
+namespace sxk::io {
+
+Mesh read_off(std::string_view text, const std::string& name, const ReadOptions& options,
+              ReadReport* report) {
+    Cursor in(text, name, '#');
+    RawMesh raw;
+    raw.vertex_file = raw.triangles.file = name;
+    raw.vertex_base = 0;
+    raw.ambient_from_z = true;
+
+    if (!in.next_line())
+        in.fail("truncated file: expected OFF");
+    const std::string_view header = in.need_in_line("OFF");
+    if (header != "OFF" && header != "COFF" && header != "NOFF" && header != "CNOFF") {
+        if (header.size() >= 3 && header.substr(header.size() - 3) == "OFF")
+            in.fail("unsupported OFF variant " + quote(header));
+        in.fail("expected OFF, found " + quote(header));
+    }
+    const bool extras = header != "OFF";  // colours or normals after the coordinates
+    if (in.line_done() && !in.next_line())
+        in.fail("truncated file: expected the number of vertices");
+    const std::int64_t nv =
+        in.to_integer(in.need_in_line("number of vertices"), "number of vertices", 0,
+                      static_cast<std::int64_t>(invalid_id) - 1);
+    const std::int64_t nf = in.to_integer(in.need_in_line("number of faces"), "number of faces", 0,
+                                          static_cast<std::int64_t>(invalid_id) - 1);
+    if (!in.line_done())
+        in.to_integer(in.next_in_line(), "number of edges");
+    if (!in.line_done())
+        in.fail("unexpected value " + quote(in.next_in_line()) + " after the counts");
+
+    const std::size_t reserve = plausible_count(nv, text.size(), 6);
+    raw.points.reserve(reserve);
+    raw.point_lines.reserve(reserve);
+    static constexpr const char* axes[] = {"x coordinate", "y coordinate", "z coordinate"};
+    for (std::int64_t v = 0; v < nv; ++v) {
+        if (!in.next_line())
+            in.fail("truncated file: the header declares " + std::to_string(nv) +
+                    " vertices, found " + std::to_string(v));
+        Point p{0, 0, 0};
+        for (std::size_t c = 0; c < 3; ++c)
+            p[c] = in.to_double(in.need_in_line(axes[c]), axes[c]);
+        if (extras) {
+            while (!in.line_done())
+                in.to_double(in.next_in_line(), "colour or normal component");
+        } else if (!in.line_done()) {
+            in.fail("unexpected value " + quote(in.next_in_line()) +
+                    " after the vertex coordinates");
+        }
+        raw.points.push_back(p);
+        raw.point_lines.push_back(in.line());
+    }
+
+    CellList& cells = raw.triangles;
+    const std::size_t faces = plausible_count(nf, text.size(), 8);
+    cells.vertices.reserve(3 * faces);
+    cells.lines.reserve(faces);
+    cells.labels.reserve(faces);
+    for (std::int64_t f = 0; f < nf; ++f) {
+        if (!in.next_line())
+            in.fail("truncated file: the header declares " + std::to_string(nf) + " faces, found " +
+                    std::to_string(f));
+        const std::string face = "face " + std::to_string(f + 1);
+        const std::int64_t size =
+            in.to_integer(in.need_in_line("number of face vertices"), "number of face vertices");
+        if (size > 3)
+            in.fail(face + " has " + std::to_string(size) +
+                    " vertices: only triangles are supported");
+        if (size < 3)
+            in.fail(face + " has " + std::to_string(size) + " vertices: a face needs 3");
+        cells.lines.push_back(in.line());
+        for (int j = 0; j < 3; ++j) {
+            const std::int64_t index =
+                in.to_integer(in.need_in_line("vertex index"), "vertex index");
+            if (index < 0 || index >= nv)
+                in.fail("vertex index " + std::to_string(index) + " out of range (0.." +
+                        std::to_string(nv - 1) + ")");
+            cells.vertices.push_back(static_cast<VertexId>(index));
+        }
+        // a colour may follow (index or RGB[A])
+        while (!in.line_done())
+            in.to_double(in.next_in_line(), "colour component");
+        cells.labels.push_back(0);
+    }
+    if (in.next_line())
+        in.fail("more data than the header declares (" + std::to_string(nv) + " vertices, " +
+                std::to_string(nf) + " faces)");
+    return build_mesh(raw, name, options, report);
+}
+
+std::string write_off(const Mesh& mesh, const WriteOptions& options) {
+    const std::span<const Point> positions = chosen_positions(mesh, options);
+    const Surface surface = triangle_surface(mesh);
+    std::string out;
+    out.reserve(surface.vertices.size() * 60 + surface.triangles.size() * 24);
+    out += "OFF\n# written by simplexkit\n";
+    append_number(out, surface.vertices.size());
+    out += ' ';
+    append_number(out, surface.triangles.size());
+    out += " 0\n";
+    for (VertexId v : surface.vertices) {
+        const Point& p = positions[v];
+        append_number(out, p[0]);
+        out += ' ';
+        append_number(out, p[1]);
+        out += ' ';
+        append_number(out, p[2]);
+        out += '\n';
+    }
+    for (const auto& t : surface.triangles) {
+        out += '3';
+        for (VertexId v : t) {
+            out += ' ';
+            append_number(out, v);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+}  // namespace sxk::io

@@ -1,0 +1,294 @@
+// TetGen (and Triangle) .node / .ele / .face (.edge): one record per line, '#' comments.
+//
+//   X.node   "N dim #attributes markers(0|1)"        then "id x y [z] attributes... [marker]"
+//   X.ele    "M nodes(3|4) #attributes"              then "id a b c [d] attributes..."
+//   X.face   "F markers(0|1)"                        then "id a b c [marker] [adjacent tets]"
+//   X.edge   (triangle meshes, as Triangle writes it) "id a b [marker]"
+//
+// Numbering starts at 0 or 1, as the first node says; nodes must then be numbered
+// consecutively, and the .ele and .face indices use the same base. The first element attribute
+// (TetGen's region attribute) is the element label; .face (.edge) markers are face labels, kept
+// only when the header says markers are present. A 2-dimensional .node file makes a planar
+// mesh. Second-order elements (6 or 10 nodes) are refused.
+#include <climits>
+#include <cmath>
+
+#include "formats.hpp"
+#include "raw_mesh.hpp"
+#include "text.hpp"
+#include "writing.hpp"
+
+namespace sxk::io {
+
+namespace {
+
+void start(Cursor& in, const char* what) {
+    if (!in.next_line())
+        in.fail(std::string("truncated file: expected ") + what);
+}
+
+// Header fields after the first may be left out; they default as in TetGen's own reader.
+std::int64_t optional_field(Cursor& in, const char* what, std::int64_t fallback, std::int64_t low,
+                            std::int64_t high) {
+    const std::string_view token = in.next_in_line();
+    return token.empty() ? fallback : in.to_integer(token, what, low, high);
+}
+
+void end_of_line(Cursor& in) {
+    if (!in.line_done())
+        in.fail("unexpected value " + quote(in.next_in_line()) + " at the end of the line");
+}
+
+// Next record line, or "truncated file" when the header promised more.
+void record(Cursor& in, const char* things, std::int64_t declared, std::int64_t index) {
+    if (!in.next_line())
+        in.fail("truncated file: the header declares " + std::to_string(declared) + " " + things +
+                ", found " + std::to_string(index));
+}
+
+void no_more_records(Cursor& in, const char* things, std::int64_t declared) {
+    if (in.next_line())
+        in.fail("more " + std::string(things) + " than the " + std::to_string(declared) +
+                " the header declares");
+}
+
+// An attribute as a label: TetGen writes region attributes as numbers that may carry a
+// fraction ("1" or "1.0"); the label is that number when it is an integer.
+int attribute_label(Cursor& in, std::string_view token) {
+    const double value = in.to_double(token, "attribute");
+    if (value != std::floor(value) || value < INT_MIN || value > INT_MAX)
+        in.fail("region attribute " + quote(token) + " is not an integer");
+    return static_cast<int>(value);
+}
+
+// Reads "a b c" vertex indices of a record into `cells`, checking them against the node range.
+void read_indices(Cursor& in, CellList& cells, int count, std::int64_t base,
+                  std::size_t vertex_count) {
+    for (int j = 0; j < count; ++j) {
+        const std::int64_t index = in.to_integer(in.need_in_line("vertex index"), "vertex index");
+        if (index == 0 && base == 1)
+            in.fail("vertex index 0: indices start at 1");
+        if (index < base || index - base >= static_cast<std::int64_t>(vertex_count))
+            in.fail("vertex index " + std::to_string(index) + " out of range (" +
+                    std::to_string(base) + ".." +
+                    std::to_string(base + static_cast<std::int64_t>(vertex_count) - 1) + ")");
+        cells.vertices.push_back(static_cast<VertexId>(index - base));
+    }
+}
+
+}  // namespace
+
+Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report) {
+    RawMesh raw;
+    raw.vertex_file = text.node_name;
+    raw.triangles.file = raw.tetrahedra.file = text.ele_name;
+
+    // ---- .node ---------------------------------------------------------------------------------
+    Cursor node(text.node, text.node_name, '#');
+    start(node, "the number of nodes");
+    const std::int64_t nodes =
+        node.to_integer(node.need_in_line("number of nodes"), "number of nodes", 0,
+                        static_cast<std::int64_t>(invalid_id) - 1);
+    const std::string_view dim_token = node.next_in_line();
+    const std::int64_t dimension = dim_token.empty() ? 3 : node.to_integer(dim_token, "dimension");
+    if (dimension != 2 && dimension != 3)
+        node.fail("dimension must be 2 or 3, found " + quote(dim_token));
+    const std::int64_t node_attributes =
+        optional_field(node, "number of attributes", 0, 0, INT_MAX);
+    const std::int64_t node_markers = optional_field(node, "boundary marker flag", 0, 0, 1);
+    end_of_line(node);
+    raw.ambient = static_cast<int>(dimension);
+    const std::size_t reserve = plausible_count(nodes, text.node.size(), 8);
+    raw.points.reserve(reserve);
+    raw.point_lines.reserve(reserve);
+    std::int64_t base = 0;
+    static constexpr const char* axes[] = {"x coordinate", "y coordinate", "z coordinate"};
+    for (std::int64_t i = 0; i < nodes; ++i) {
+        record(node, "nodes", nodes, i);
+        const std::string_view id_token = node.need_in_line("node number");
+        const std::int64_t id = node.to_integer(id_token, "node number");
+        if (i == 0) {
+            if (id != 0 && id != 1)
+                node.fail("the first node must be numbered 0 or 1, found " + quote(id_token));
+            base = id;
+        } else if (id != base + i) {
+            node.fail("node " + std::to_string(id) + " out of sequence: expected " +
+                      std::to_string(base + i));
+        }
+        Point p{0, 0, 0};
+        for (std::int64_t c = 0; c < dimension; ++c)
+            p[static_cast<std::size_t>(c)] = node.to_double(node.need_in_line(axes[c]), axes[c]);
+        for (std::int64_t a = 0; a < node_attributes; ++a)
+            node.to_double(node.need_in_line("attribute"), "attribute");
+        if (node_markers)
+            node.to_integer(node.need_in_line("boundary marker"), "boundary marker");
+        end_of_line(node);
+        raw.points.push_back(p);
+        raw.point_lines.push_back(node.line());
+    }
+    no_more_records(node, "nodes", nodes);
+    raw.vertex_base = base;
+
+    // ---- .ele ----------------------------------------------------------------------------------
+    Cursor ele(text.ele, text.ele_name, '#');
+    start(ele, "the number of elements");
+    const std::int64_t count =
+        ele.to_integer(ele.need_in_line("number of elements"), "number of elements", 0,
+                       static_cast<std::int64_t>(invalid_id) - 1);
+    const std::string_view per_token = ele.next_in_line();
+    const std::int64_t per_element =
+        per_token.empty() ? 4 : ele.to_integer(per_token, "nodes per element");
+    if (per_element == 6 || per_element == 10)
+        ele.fail("second-order elements (" + std::to_string(per_element) +
+                 " nodes) are not supported");
+    if (per_element != 3 && per_element != 4)
+        ele.fail("nodes per element must be 3 or 4, found " + quote(per_token));
+    if (per_element == 4 && dimension == 2)
+        ele.fail("tetrahedra need a 3-dimensional .node file");
+    const std::int64_t attributes = optional_field(ele, "number of attributes", 0, 0, INT_MAX);
+    end_of_line(ele);
+    CellList& cells = per_element == 4 ? raw.tetrahedra : raw.triangles;
+    {
+        const std::size_t n = plausible_count(count, text.ele.size(), 10);
+        cells.vertices.reserve(n * static_cast<std::size_t>(per_element));
+        cells.labels.reserve(n);
+        cells.lines.reserve(n);
+        cells.numbers.reserve(n);
+    }
+    for (std::int64_t i = 0; i < count; ++i) {
+        record(ele, "elements", count, i);
+        cells.numbers.push_back(
+            ele.to_integer(ele.need_in_line("element number"), "element number"));
+        cells.lines.push_back(ele.line());
+        read_indices(ele, cells, static_cast<int>(per_element), base, raw.points.size());
+        int label = 0;
+        for (std::int64_t a = 0; a < attributes; ++a) {
+            const std::string_view token = ele.need_in_line("attribute");
+            if (a == 0)
+                label = attribute_label(ele, token);
+            else
+                ele.to_double(token, "attribute");
+        }
+        cells.labels.push_back(label);
+        end_of_line(ele);
+    }
+    no_more_records(ele, "elements", count);
+
+    // ---- .face / .edge -------------------------------------------------------------------------
+    if (text.face) {
+        CellList& faces = per_element == 4 ? raw.triangles : raw.edges;
+        faces.file = text.face_name;
+        Cursor in(*text.face, text.face_name, '#');
+        start(in, "the number of faces");
+        const std::int64_t face_count =
+            in.to_integer(in.need_in_line("number of faces"), "number of faces", 0,
+                          static_cast<std::int64_t>(invalid_id) - 1);
+        const std::int64_t markers = optional_field(in, "boundary marker flag", 0, 0, 1);
+        end_of_line(in);
+        const std::size_t n = plausible_count(face_count, text.face->size(), 8);
+        CellList scratch(faces.size);  // the faces are checked but not kept without markers
+        CellList& target = markers ? faces : scratch;
+        target.vertices.reserve(n * static_cast<std::size_t>(faces.size));
+        for (std::int64_t i = 0; i < face_count; ++i) {
+            record(in, "faces", face_count, i);
+            target.numbers.push_back(in.to_integer(in.need_in_line("face number"), "face number"));
+            target.lines.push_back(in.line());
+            read_indices(in, target, faces.size, base, raw.points.size());
+            target.labels.push_back(
+                markers ? static_cast<int>(in.to_integer(in.need_in_line("boundary marker"),
+                                                         "boundary marker", INT_MIN, INT_MAX))
+                        : 0);
+            // tetgen -nn appends the two tetrahedra adjacent to the face
+            if (!in.line_done()) {
+                in.to_integer(in.next_in_line(), "adjacent element");
+                in.to_integer(in.need_in_line("adjacent element"), "adjacent element");
+            }
+            end_of_line(in);
+        }
+        no_more_records(in, "faces", face_count);
+    }
+    return build_mesh(raw, text.ele_name, options, report);
+}
+
+TetgenFiles write_tetgen(const Mesh& mesh, const WriteOptions& options) {
+    const std::span<const Point> positions = chosen_positions(mesh, options);
+    const int dimension = mesh.ambient_dimension();
+    const int d = mesh.topological_dimension();
+    TetgenFiles files;
+
+    std::string& node = files.node;
+    node.reserve(mesh.vertex_count() * 64);
+    append_number(node, mesh.vertex_count());
+    node += ' ';
+    append_number(node, dimension);
+    node += " 0 0\n";
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        append_number(node, v);
+        for (int c = 0; c < dimension; ++c) {
+            node += ' ';
+            append_number(node, positions[v][static_cast<std::size_t>(c)]);
+        }
+        node += '\n';
+    }
+    node += "# written by simplexkit\n";
+
+    bool labelled = false;
+    for (ElementId t : elements(mesh))
+        labelled = labelled || mesh.label(t) != 0;
+    std::string& ele = files.ele;
+    ele.reserve(mesh.element_count() * 40);
+    append_number(ele, mesh.element_count());
+    ele += ' ';
+    append_number(ele, d + 1);
+    ele += labelled ? " 1\n" : " 0\n";
+    std::size_t number = 0;
+    for (ElementId t : elements(mesh)) {
+        append_number(ele, number++);
+        const auto v = oriented_vertices(mesh.simplex(t));
+        for (int j = 0; j <= d; ++j) {
+            ele += ' ';
+            append_number(ele, v[static_cast<std::size_t>(j)]);
+        }
+        if (labelled) {
+            ele += ' ';
+            append_number(ele, mesh.label(t));
+        }
+        ele += '\n';
+    }
+    ele += "# written by simplexkit\n";
+
+    // the labelled faces with their markers; without labels the plain boundary, so the file
+    // still is what TetGen users expect (and reads back as no labels)
+    std::string& face = files.face;
+    auto face_line = [&](std::size_t i, const Simplex& s) {
+        append_number(face, i);
+        const auto v = oriented_vertices(s);
+        for (int j = 0; j < d; ++j) {
+            face += ' ';
+            append_number(face, v[static_cast<std::size_t>(j)]);
+        }
+    };
+    if (!mesh.face_labels().empty()) {
+        const auto faces = sorted_face_labels(mesh);
+        append_number(face, faces.size());
+        face += " 1\n";
+        for (std::size_t i = 0; i < faces.size(); ++i) {
+            face_line(i, faces[i].first);
+            face += ' ';
+            append_number(face, faces[i].second);
+            face += '\n';
+        }
+    } else {
+        const std::vector<FaceId> boundary = mesh.boundary_faces();
+        append_number(face, boundary.size());
+        face += " 0\n";
+        for (std::size_t i = 0; i < boundary.size(); ++i) {
+            face_line(i, mesh.face_simplex(boundary[i]));
+            face += '\n';
+        }
+    }
+    face += "# written by simplexkit\n";
+    return files;
+}
+
+}  // namespace sxk::io
