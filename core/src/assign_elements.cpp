@@ -6,7 +6,7 @@
 // mates are adjacent entries: linear in the number of faces with small sorts, 12 bytes of
 // scratch per face, and sequential memory access. It also sees every face at once, so
 // duplicates, non-manifold faces and inconsistent orientations are all detected before the mesh
-// is touched.
+// is touched; so are pinched vertices, by a walk over each vertex star.
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -165,6 +165,41 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
     Refusal problem = k == 4 ? match_faces<4>(simplexes, vertex_count(), mates, boundary_count)
                              : match_faces<3>(simplexes, vertex_count(), mates, boundary_count);
     if (problem.item != Refusal::npos) return problem;
+
+    // Face-connected vertex stars (§7.3), the one invariant the face matching cannot see: walk
+    // each star through mates of faces containing its vertex and count what is reached.
+    {
+        std::vector<std::uint32_t> incidence(vertex_count(), 0);
+        std::vector<std::uint32_t> first(vertex_count(), invalid_id);
+        for (std::size_t i = 0; i < n; ++i)
+            for (VertexId v : simplexes[i].vertices())
+                if (incidence[v]++ == 0) first[v] = static_cast<std::uint32_t>(i);
+        std::vector<VertexId> stamp(n, invalid_id);
+        std::vector<std::uint32_t> stack;
+        const std::uint32_t ku = static_cast<std::uint32_t>(k);
+        for (VertexId v = 0; v < vertex_count(); ++v) {
+            if (incidence[v] <= 1) continue;
+            std::uint32_t reached = 0;
+            stack.assign(1, first[v]);
+            stamp[first[v]] = v;
+            while (!stack.empty()) {
+                const std::uint32_t t = stack.back();
+                stack.pop_back();
+                ++reached;
+                for (std::uint32_t j = 0; j < ku; ++j) {
+                    if (simplexes[t].vertex(static_cast<int>(j)) == v) continue;
+                    const FaceId m = mates[t * ku + j];
+                    if (m == invalid_id || stamp[m / ku] == v) continue;
+                    stamp[m / ku] = v;
+                    stack.push_back(m / ku);
+                }
+            }
+            if (reached != incidence[v])
+                return Refusal{"star connectivity: the elements around vertex " + std::to_string(v) +
+                                   " are not connected through faces (the mesh is pinched there)",
+                               first[v]};
+        }
+    }
 
     // Everything is known to be consistent. The mesh has no elements, so building in place
     // loses nothing but dead pool entries, and uses whatever capacity the caller reserved.

@@ -103,7 +103,13 @@ TEST(AssignElementsUnchecked, PinchedVertexBreaksStarConnectivity) {
     Mesh mesh(3, 3);
     for (int i = 0; i < 7; ++i) mesh.add_vertex({double(i), 0, 0});
     const std::array<Simplex, 2> pinched{Simplex(+1, {0, 1, 2, 3}), Simplex(+1, {0, 4, 5, 6})};
-    ASSERT_TRUE(mesh.assign_elements(pinched).ok());  // faces are fine
+    // the checked build refuses it; the unchecked one builds it for validate() to name
+    const auto refused = mesh.assign_elements(pinched);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.reason(),
+              "star connectivity: the elements around vertex 0 are not connected through faces "
+              "(the mesh is pinched there)");
+    ASSERT_TRUE(mesh.assign_elements_unchecked(pinched).ok());
     const auto verdict = mesh.validate();
     ASSERT_FALSE(verdict.ok());
     EXPECT_EQ(verdict.reason(),

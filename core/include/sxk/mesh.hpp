@@ -148,7 +148,9 @@ public:
     // Refuses, naming the index of an offending simplex in `item`, when a simplex has the wrong
     // size, a repeated vertex or a vertex id >= vertex_count(), when two simplexes have the same
     // vertices, or when a face is shared by more than two elements or by two with the same
-    // orientation (inconsistent orientation or non-manifold). Labels may be empty (all 0).
+    // orientation (inconsistent orientation or non-manifold), or when the elements around a
+    // vertex are not connected through faces (a pinched vertex: "star connectivity: ...", item =
+    // an element of that star). Labels may be empty (all 0).
     // On refusal the mesh is unchanged. Watchers are initialised afterwards.
     Outcome<Done> assign_elements(std::span<const Simplex> simplexes, std::span<const int> labels = {});
 

@@ -288,12 +288,14 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
         }
     } else {
         if (auto built = mesh.assign_elements(simplexes, cells.labels); !built) {
+            // a pinched vertex is best named on the vertex's own line
+            if (built.reason().rfind("star connectivity", 0) == 0)
+                check_vertex_stars(raw, simplexes, static_cast<int>(k));
             const std::size_t item = built.refusal().item;
             if (item >= n)
                 fail(cells.file, 0, built.reason());
             explain_refusal(raw, cells, simplexes, item, built.reason());
         }
-        check_vertex_stars(raw, simplexes, static_cast<int>(k));
     }
     add_face_labels(faces, mesh);
     if (report)
