@@ -295,13 +295,20 @@ void Cursor::fail_at(std::size_t line, const std::string& reason) const {
 
 std::string quote(std::string_view token) {
     constexpr std::size_t limit = 24;
-    if (token.size() <= limit)
-        return "'" + std::string(token) + "'";
-    // cut at a UTF-8 character boundary so the message stays valid text
-    std::size_t cut = limit;
-    while (cut > 0 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80)
-        --cut;
-    return "'" + std::string(token.substr(0, cut)) + "...'";
+    // appended piece by piece: g++ 12 reports a spurious -Wrestrict for "'" + std::string(...)
+    std::string quoted(1, '\'');
+    if (token.size() <= limit) {
+        quoted.append(token);
+    } else {
+        // cut at a UTF-8 character boundary so the message stays valid text
+        std::size_t cut = limit;
+        while (cut > 0 && (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80)
+            --cut;
+        quoted.append(token.substr(0, cut));
+        quoted.append("...");
+    }
+    quoted.push_back('\'');
+    return quoted;
 }
 
 void append_number(std::string& out, double value) {
