@@ -26,9 +26,10 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
     for (std::size_t i = 0; i < m; ++i)
         if (!is_element(substitution[i].element))
             return Refusal{"element " + std::to_string(substitution[i].element) + " does not exist", i};
-    std::vector<ElementId> changed_sorted;
-    changed_sorted.reserve(m);
-    for (const ElementSubstitution& s : substitution) changed_sorted.push_back(s.element);
+    std::vector<ElementId> changed_in_order;
+    changed_in_order.reserve(m);
+    for (const ElementSubstitution& s : substitution) changed_in_order.push_back(s.element);
+    std::vector<ElementId> changed_sorted = changed_in_order;
     std::sort(changed_sorted.begin(), changed_sorted.end());
     if (auto d = std::adjacent_find(changed_sorted.begin(), changed_sorted.end());
         d != changed_sorted.end())
@@ -82,13 +83,9 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
             for (VertexId v : m_elements[substitution[i].element].simplex.vertices()) touched.push_back(v);
             for (VertexId v : substituted[i].vertices()) touched.push_back(v);
         }
-        std::sort(touched.begin(), touched.end());
-        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-        for (VertexId v : touched)
-            if (const std::size_t pieces = star_pieces_after(v, changed_sorted, substituted); pieces > 1)
-                return Refusal{"star connectivity: vertex " + std::to_string(v) +
-                               " would be pinched (its star would fall into " +
-                               std::to_string(pieces) + " pieces)"};
+        if (Refusal pinch = refuse_pinched_stars(std::move(touched), changed_sorted, substituted);
+            !pinch.reason.empty())
+            return pinch;
     }
 
     // ---- the change -----------------------------------------------------------------------------
@@ -158,23 +155,7 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
         }
     }
 
-    // vertex anchors
-    for (std::size_t i = 0; i < m; ++i)
-        for (int j = 0; j < k; ++j) {
-            ElementId& a = m_vertex_element[substituted[i].vertex(j)];
-            if (!is_element(a) || !m_elements[a].simplex.contains(substituted[i].vertex(j)))
-                a = substitution[i].element;
-        }
-    for (VertexId v : old_vertices) {
-        const ElementId a = m_vertex_element[v];
-        if (is_element(a) && m_elements[a].simplex.contains(v)) continue;
-        m_vertex_element[v] = invalid_id;
-        for (ElementId n : neighbours)
-            if (m_elements[n].simplex.contains(v)) {
-                m_vertex_element[v] = n;
-                break;
-            }
-    }
+    repair_anchors(substituted, changed_in_order, old_vertices, neighbours);
 
     log.publish(*this, m_watchers);
     return Done{};

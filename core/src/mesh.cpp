@@ -159,4 +159,25 @@ std::size_t Mesh::memory_bytes() const {
            m_boundary.memory_bytes();
 }
 
+void Mesh::repair_anchors(std::span<const Simplex> added, std::span<const ElementId> added_ids,
+                          std::span<const VertexId> old_vertices,
+                          std::span<const ElementId> neighbours) {
+    // keep anchors that still hold their vertex: untouched vertices see no change at all
+    for (std::size_t i = 0; i < added.size(); ++i)
+        for (VertexId v : added[i].vertices()) {
+            ElementId& a = m_vertex_element[v];
+            if (!is_element(a) || !m_elements[a].simplex.contains(v)) a = added_ids[i];
+        }
+    for (VertexId v : old_vertices) {
+        const ElementId a = m_vertex_element[v];
+        if (is_element(a) && m_elements[a].simplex.contains(v)) continue;
+        m_vertex_element[v] = invalid_id;
+        for (ElementId n : neighbours)
+            if (m_elements[n].simplex.contains(v)) {
+                m_vertex_element[v] = n;
+                break;
+            }
+    }
+}
+
 }  // namespace sxk

@@ -155,13 +155,9 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
             for (VertexId v : m_elements[t].simplex.vertices()) touched.push_back(v);
         for (const Simplex& tau : new_simplexes)
             for (VertexId v : tau.vertices()) touched.push_back(v);
-        std::sort(touched.begin(), touched.end());
-        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-        for (VertexId v : touched)
-            if (const std::size_t pieces = star_pieces_after(v, old_sorted, new_simplexes); pieces > 1)
-                return Refusal{"star connectivity: vertex " + std::to_string(v) +
-                               " would be pinched (its star would fall into " +
-                               std::to_string(pieces) + " pieces)"};
+        if (Refusal pinch = refuse_pinched_stars(std::move(touched), old_sorted, new_simplexes);
+            !pinch.reason.empty())
+            return pinch;
     }
 
     // ---- the change -------------------------------------------------------------------------
@@ -257,22 +253,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
         }
     }
 
-    // vertex anchors: keep those still valid (no visible change for untouched vertices)
-    for (std::size_t i = 0; i < m; ++i)
-        for (int j = 0; j < k; ++j) {
-            ElementId& a = m_vertex_element[new_simplexes[i].vertex(j)];
-            if (!is_element(a) || !m_elements[a].simplex.contains(new_simplexes[i].vertex(j))) a = created[i];
-        }
-    for (VertexId v : old_vertices) {
-        const ElementId a = m_vertex_element[v];
-        if (is_element(a) && m_elements[a].simplex.contains(v)) continue;
-        m_vertex_element[v] = invalid_id;
-        for (ElementId n : neighbours)
-            if (m_elements[n].simplex.contains(v)) {
-                m_vertex_element[v] = n;
-                break;
-            }
-    }
+    repair_anchors(new_simplexes, created, old_vertices, neighbours);
 
     log.publish(*this, m_watchers);
     return created;

@@ -2,6 +2,7 @@
 // (v, {})-connected, or traversal from an anchor misses elements and dissection is undefined).
 #include <algorithm>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "sxk/mesh.hpp"
@@ -61,6 +62,19 @@ std::size_t Mesh::star_pieces_after(VertexId v, std::span<const ElementId> remov
         }
     }
     return pieces;
+}
+
+Refusal Mesh::refuse_pinched_stars(std::vector<VertexId> touched,
+                                   std::span<const ElementId> removed,
+                                   std::span<const Simplex> added) const {
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    for (VertexId v : touched)
+        if (const std::size_t pieces = star_pieces_after(v, removed, added); pieces > 1)
+            return Refusal{"star connectivity: vertex " + std::to_string(v) +
+                           " would be pinched (its star would fall into " + std::to_string(pieces) +
+                           " pieces)"};
+    return Refusal{};
 }
 
 }  // namespace sxk

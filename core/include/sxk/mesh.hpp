@@ -225,6 +225,16 @@ private:
     // `removed` and adding `added` (0 when v would be in no element). Walks star(v) once.
     std::size_t star_pieces_after(VertexId v, std::span<const ElementId> removed,
                                   std::span<const Simplex> added) const;
+    // The refusal of an edit that would pinch one of the vertices `touched` (any order,
+    // repeats allowed), or an empty reason.
+    Refusal refuse_pinched_stars(std::vector<VertexId> touched, std::span<const ElementId> removed,
+                                 std::span<const Simplex> added) const;
+    // After an edit: vertices of the elements `added` (ids `added_ids`) get an anchor if theirs
+    // no longer holds them; vertices of `old_vertices` that lost theirs take one of
+    // `neighbours` (elements next to the edited ones) that contains them, or none.
+    void repair_anchors(std::span<const Simplex> added, std::span<const ElementId> added_ids,
+                        std::span<const VertexId> old_vertices,
+                        std::span<const ElementId> neighbours);
 
     int m_dimension;
     int m_ambient;

@@ -413,18 +413,6 @@ Mesh read_gmsh(std::string_view text, const std::string& name, const ReadOptions
     return build_mesh(reader.read(), name, options, report);
 }
 
-namespace {
-
-void append_point(std::string& out, const Point& p) {
-    append_number(out, p[0]);
-    out += ' ';
-    append_number(out, p[1]);
-    out += ' ';
-    append_number(out, p[2]);
-}
-
-}  // namespace
-
 std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
     if (options.gmsh_version != 22 && options.gmsh_version != 41)
         throw OutputError("Gmsh version must be 22 or 41, not " +
@@ -442,7 +430,7 @@ std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
         for (std::size_t v = 0; v < positions.size(); ++v) {
             append_number(out, v + 1);
             out += ' ';
-            append_point(out, positions[v]);
+            append_xyz(out, positions[v]);
             out += '\n';
         }
         out += "$EndNodes\n$Elements\n";
@@ -517,9 +505,9 @@ std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
     auto entity = [&](std::size_t tag, int label) {
         append_number(out, tag);
         out += ' ';
-        append_point(out, low);
+        append_xyz(out, low);
         out += ' ';
-        append_point(out, high);
+        append_xyz(out, high);
         if (label != 0) {
             out += " 1 ";
             append_number(out, label);
@@ -547,7 +535,7 @@ std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
         out += '\n';
     }
     for (const Point& p : positions) {
-        append_point(out, p);
+        append_xyz(out, p);
         out += '\n';
     }
     out += "$EndNodes\n$Elements\n";

@@ -128,11 +128,7 @@ std::string write_obj(const Mesh& mesh, const WriteOptions& options) {
     for (VertexId v : surface.vertices) {
         const Point& p = positions[v];
         out += "v ";
-        append_number(out, p[0]);
-        out += ' ';
-        append_number(out, p[1]);
-        out += ' ';
-        append_number(out, p[2]);
+        append_xyz(out, p);
         out += '\n';
     }
     for (const auto& t : surface.triangles) {

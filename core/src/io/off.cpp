@@ -115,11 +115,7 @@ std::string write_off(const Mesh& mesh, const WriteOptions& options) {
     out += " 0\n";
     for (VertexId v : surface.vertices) {
         const Point& p = positions[v];
-        append_number(out, p[0]);
-        out += ' ';
-        append_number(out, p[1]);
-        out += ' ';
-        append_number(out, p[2]);
+        append_xyz(out, p);
         out += '\n';
     }
     for (const auto& t : surface.triangles) {

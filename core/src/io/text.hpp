@@ -14,6 +14,8 @@
 // Both skip comments that start with the cursor's comment character at the start of a token.
 #pragma once
 
+#include <array>
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -111,6 +113,14 @@ inline void append_number(std::string& out, std::size_t value) {
 }
 inline void append_number(std::string& out, std::uint32_t value) {
     append_number(out, static_cast<std::int64_t>(value));
+}
+// "x y z" of a point, each coordinate in shortest round-trip form.
+inline void append_xyz(std::string& out, const std::array<double, 3>& p) {
+    append_number(out, p[0]);
+    out += ' ';
+    append_number(out, p[1]);
+    out += ' ';
+    append_number(out, p[2]);
 }
 
 // Writes `data` to `path` in one go; OutputError when it cannot (open, write or close fails).

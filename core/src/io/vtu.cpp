@@ -58,11 +58,7 @@ std::string write_vtu(const Mesh& mesh, const WriteOptions& options) {
     open_array(out, "Float64", "Points", 3);
     for (const Point& p : positions) {
         out += "          ";
-        append_number(out, p[0]);
-        out += ' ';
-        append_number(out, p[1]);
-        out += ' ';
-        append_number(out, p[2]);
+        append_xyz(out, p);
         out += '\n';
     }
     close_array(out);
