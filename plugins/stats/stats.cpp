@@ -140,8 +140,9 @@ std::optional<Options> parse(std::span<const std::string> args, bool with_mesh, 
         std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last-first
         app.parse(reversed);
     } catch (const CLI::ParseError& error) {
-        if (error.get_exit_code() == 0) {
-            code = app.exit(error, out, err);
+        if (error.get_exit_code() == 0) {  // --help: print the usage, succeed
+            out << app.help();
+            code = 0;
             return std::nullopt;
         }
         err << "sxk: stats: " << error.what() << "\nRun 'sxk stats --help' for more information.\n";
