@@ -32,6 +32,19 @@ Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d, co
                                                  to_cgal_3(d), to_cgal_3(e)));
 }
 
+bool collinear(const Point& a, const Point& b, const Point& c) {
+    return CGAL::collinear(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c));
+}
+
+Sign normal_alignment(const Point& a, const Point& b, const Point& c, const Point& d,
+                      const Point& e, const Point& f) {
+    using P = detail::ExactKernel::Point_3;
+    auto exact = [](const Point& p) { return P(p[0], p[1], p[2]); };
+    const auto n0 = CGAL::cross_product(exact(b) - exact(a), exact(c) - exact(a));
+    const auto n1 = CGAL::cross_product(exact(e) - exact(d), exact(f) - exact(d));
+    return to_sign(CGAL::sign(n0 * n1));
+}
+
 Sign element_orientation(const Mesh& mesh, ElementId t, Positions positions) {
     const Simplex& s = mesh.simplex(t);
     auto point = [&](int j) -> const Point& {
@@ -48,9 +61,7 @@ Sign element_orientation(const Mesh& mesh, ElementId t, Positions positions) {
         const Point& a = point(0);
         const Point& b = point(1);
         const Point& c = point(2);
-        const bool collinear =
-            CGAL::collinear(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c));
-        return collinear ? Sign::zero : Sign::positive;
+        return collinear(a, b, c) ? Sign::zero : Sign::positive;
     }
     if (raw == Sign::zero) return raw;
     return (static_cast<int>(raw) * s.sign() > 0) ? Sign::positive : Sign::negative;

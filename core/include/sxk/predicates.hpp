@@ -20,6 +20,14 @@ SXK_API Sign incircle(const Point& a, const Point& b, const Point& c, const Poin
 SXK_API Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d,
                       const Point& e);
 
+// True when a, b, c lie on one line (exactly; any ambient dimension).
+SXK_API bool collinear(const Point& a, const Point& b, const Point& c);
+// Sign of the dot product of the normals (b-a)x(c-a) and (e-d)x(f-d) of two triangles in
+// space: negative when the triangles face opposite ways (a surface folding over an edge). A
+// degree-4 polynomial no orientation test decides; evaluated exactly.
+SXK_API Sign normal_alignment(const Point& a, const Point& b, const Point& c, const Point& d,
+                              const Point& e, const Point& f);
+
 enum class Positions { reference, deformed };
 
 // Exact orientation of element t in the chosen positions, taking the simplex sign into account:

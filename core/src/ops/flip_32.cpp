@@ -1,0 +1,56 @@
+// flip_32 (thesis §5.2.2, edge removal, the inverse of the face flip; §7.3 replace-elements).
+#include "sxk/ops/flip_32.hpp"
+
+#include "ops/tet_flip_checks.hpp"
+
+namespace sxk {
+
+Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
+                                          const TetFlipOptions& options) {
+    if (Refusal r = detail::refuse_bad_edge_arguments(mesh, entry, j, "flip_32"); !r.reason.empty())
+        return r;
+    const Simplex edge = mesh.face_simplex(entry).subn(j);
+    const VertexId a = edge.vertex(0);
+    const VertexId b = edge.vertex(1);
+    const std::vector<ElementId> ring = cycle_around(mesh, entry, j);
+    if (detail::ring_touches_boundary(mesh, ring, a, b))
+        return Refusal{"flip_32: edge " + detail::to_text(Simplex(+1, {a, b})) +
+                       " is on the boundary"};
+    if (ring.size() != 3)
+        return Refusal{"flip_32: edge " + detail::to_text(Simplex(+1, {a, b})) + " has degree " +
+                       std::to_string(ring.size()) + ", not 3"};
+
+    // tau = <ab, c, d> for two ring vertices c, d; e is the ring vertex not in tau.
+    const Simplex tau = mesh.simplex(ring[0]);
+    VertexId c = invalid_id, d = invalid_id;
+    for (const VertexId v : tau.vertices())
+        if (v != a && v != b) (c == invalid_id ? c : d) = v;
+    const VertexId e = detail::fourth_vertex(mesh.simplex(ring[1]).contains(c) ? mesh.simplex(ring[1])
+                                                                              : mesh.simplex(ring[2]),
+                                             a, b, c);
+    // Thesis Fig. 5.9: if cde is already a triangle of the mesh (outside the ring, necessarily),
+    // the flip would represent it three times.
+    {
+        const std::vector<ElementId> around = star(mesh, c);
+        for (const ElementId t : around) {
+            const Simplex& s = mesh.simplex(t);
+            if (s.contains(d) && s.contains(e))
+                return Refusal{"flip_32: triangle " + detail::to_text(Simplex(+1, {c, d, e})) +
+                               " already exists"};
+        }
+    }
+    // Replacing b (resp. a) by e in <ab,c,d> gives the tetrahedron <cde,a> (resp. <cde,b>) with
+    // the orientation the ring induces: exactly the inverse of flip_23's substitutions.
+    const std::array<Simplex, 2> created{tau.substituted(b, e), tau.substituted(a, e)};
+    if (Refusal r = detail::refuse_non_positive(mesh, created, options, "flip_32"); !r.reason.empty())
+        return r;
+
+    const int label = mesh.label(mesh.face_element(entry));
+    const std::array<int, 2> labels{label, label};
+    auto result = mesh.replace_elements(ring, created, labels);
+    if (!result.ok()) return Refusal{"flip_32: " + result.reason()};
+    const std::vector<ElementId>& ids = *result;
+    return std::array<ElementId, 2>{ids[0], ids[1]};
+}
+
+}  // namespace sxk

@@ -1,0 +1,107 @@
+// The 2-2 edge flip (thesis §5.2.1, Fig. 5.9; one replace-elements call as in §7.3, Fig. 7.4).
+#include "sxk/ops/flip_edge.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "sxk/predicates.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk {
+namespace {
+
+std::string vertex_set(std::array<VertexId, 3> v) {
+    std::sort(v.begin(), v.end());
+    return "{" + std::to_string(v[0]) + "," + std::to_string(v[1]) + "," + std::to_string(v[2]) + "}";
+}
+std::string vertex_set(VertexId u, VertexId v) {
+    if (v < u) std::swap(u, v);
+    return "{" + std::to_string(u) + "," + std::to_string(v) + "}";
+}
+
+const char* positions_name(Positions positions) {
+    return positions == Positions::reference ? "reference" : "deformed";
+}
+
+const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
+    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+}
+
+// The two new triangles' normals point in opposite directions: the surface would fold over
+// the new edge (thesis §5.3: flips on 3D surfaces must be checked for failure cases).
+bool folds(const Point& a, const Point& b, const Point& c, const Point& d) {
+    // normals of <a,d,c> and <d,b,c>
+    return normal_alignment(a, d, c, d, b, c) == Sign::negative;
+}
+
+}  // namespace
+
+Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipOptions& options) {
+    if (mesh.topological_dimension() != 2)
+        return Refusal{"flip_edge: needs a triangle mesh (topological dimension 2), this one has "
+                       "dimension " + std::to_string(mesh.topological_dimension())};
+    if (!mesh.is_face(edge))
+        return Refusal{"flip_edge: " + std::to_string(edge) + " is not a face of the mesh"};
+
+    const Simplex edge_simplex = mesh.face_simplex(edge);
+    // the oriented edge <a,b> as t0 = <a,b,c> sees it (t0 = edge_simplex.sup(c))
+    const VertexId a = edge_simplex.sign() > 0 ? edge_simplex.vertex(0) : edge_simplex.vertex(1);
+    const VertexId b = edge_simplex.sign() > 0 ? edge_simplex.vertex(1) : edge_simplex.vertex(0);
+    const FaceId mate = mesh.mate(edge);
+    if (mate == invalid_id)
+        return Refusal{"flip_edge: edge " + vertex_set(a, b) + " is on the boundary"};
+
+    const ElementId t0 = mesh.face_element(edge);
+    const ElementId t1 = mesh.face_element(mate);
+    const VertexId c = mesh.opposite_vertex(t0, edge);
+    const VertexId d = mesh.opposite_vertex(t1, mate);
+
+    // Thesis Fig. 5.9: when c-d is already an edge the flip would represent it twice (on a
+    // surface: anywhere; in the plane: a vertex of degree 3). replace_elements would refuse too,
+    // with a generic 7.4 reason; walking around c says what is actually wrong.
+    for (ElementId t : star(mesh, c))
+        if (mesh.simplex(t).contains(d))
+            return Refusal{"flip_edge: new edge " + vertex_set(c, d) +
+                           " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
+                           " is topologically impossible"};
+
+    const std::array<std::array<VertexId, 3>, 2> new_triangles{{{a, d, c}, {d, b, c}}};
+    for (Positions positions : {Positions::reference, Positions::deformed}) {
+        auto p = [&](VertexId v) -> const Point& { return position(mesh, v, positions); };
+        if (mesh.ambient_dimension() == 2) {
+            if (options.topology_only) continue;
+            // both new triangles must turn counter-clockwise, strictly: a flat or inverted one
+            // means the quadrilateral a d b c is not strictly convex (§5.2.1)
+            for (const auto& triangle : new_triangles) {
+                const Sign s = orient2d(p(triangle[0]), p(triangle[1]), p(triangle[2]));
+                if (s != Sign::positive)
+                    return Refusal{"flip_edge: new triangle " + vertex_set(triangle) + " would be " +
+                                   (s == Sign::zero ? "flat" : "inverted") + " in the " +
+                                   positions_name(positions) + " positions"};
+            }
+        } else {
+            // a triangle in space has no orientation of its own, but a collinear one has no
+            // normal and is never a valid element, whatever the caller decided
+            for (const auto& triangle : new_triangles)
+                if (collinear(p(triangle[0]), p(triangle[1]), p(triangle[2])))
+                    return Refusal{"flip_edge: new triangle " + vertex_set(triangle) +
+                                   " would be degenerate (collinear vertices) in the " +
+                                   positions_name(positions) + " positions"};
+            if (!options.topology_only && folds(p(a), p(b), p(c), p(d)))
+                return Refusal{"flip_edge: flipping edge " + vertex_set(a, b) + " to " + vertex_set(c, d) +
+                               " would fold the surface (the new triangles' normals are opposite) in the " +
+                               positions_name(positions) + " positions"};
+        }
+    }
+
+    // the sign of <a,d,c> and <d,b,c> follows from the order of a, b taken from the oriented
+    // face, so the new elements have the orientation of the old ones
+    const std::array<ElementId, 2> old_elements{t0, t1};
+    const std::array<Simplex, 2> new_simplexes{Simplex(+1, {a, d, c}), Simplex(+1, {d, b, c})};
+    auto replaced = mesh.replace_elements(old_elements, new_simplexes);
+    if (!replaced) return Refusal{"flip_edge: " + replaced.reason()};
+    return std::array<ElementId, 2>{replaced.value()[0], replaced.value()[1]};
+}
+
+}  // namespace sxk

@@ -1,0 +1,95 @@
+// Private helpers shared by flip_23.cpp, flip_32.cpp and flip_44.cpp: the checks every 3D flip
+// makes before it hands its new simplexes to Mesh::replace_elements.
+#pragma once
+
+#include <algorithm>
+#include <span>
+#include <sstream>
+#include <string>
+
+#include "sxk/mesh.hpp"
+#include "sxk/ops/flip_options.hpp"
+#include "sxk/outcome.hpp"
+#include "sxk/predicates.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::detail {
+
+inline std::string to_text(const Simplex& sigma) {
+    std::ostringstream out;
+    out << sigma;
+    return out.str();
+}
+
+// Exact orientation of an oriented tetrahedron that is not (yet) an element.
+inline Sign tet_orientation(const Mesh& mesh, const Simplex& tau, Positions positions) {
+    auto point = [&](int j) -> const Point& {
+        return positions == Positions::reference ? mesh.reference(tau.vertex(j))
+                                                 : mesh.deformed(tau.vertex(j));
+    };
+    const Sign raw = orient3d(point(0), point(1), point(2), point(3));
+    if (raw == Sign::zero) return raw;
+    return static_cast<int>(raw) * tau.sign() > 0 ? Sign::positive : Sign::negative;
+}
+
+// Empty reason when every new tetrahedron is strictly positive in both positions (or the
+// caller asked for topology only); otherwise names the first offender and the positions.
+inline Refusal refuse_non_positive(const Mesh& mesh, std::span<const Simplex> created,
+                                   const TetFlipOptions& options, const char* operation) {
+    if (options.topology_only) return {};
+    for (const Positions positions : {Positions::reference, Positions::deformed})
+        for (std::size_t i = 0; i < created.size(); ++i) {
+            const Sign s = tet_orientation(mesh, created[i], positions);
+            if (s != Sign::positive)
+                return {std::string(operation) + ": new tetrahedron " + to_text(created[i]) +
+                            (s == Sign::zero ? " would be flat" : " would be inverted") +
+                            " in the " +
+                            (positions == Positions::reference ? "reference" : "deformed") +
+                            " positions",
+                        i};
+        }
+    return {};
+}
+
+// True when the edge v-w is an edge of some element: walks star(v) (thesis §7.2).
+inline bool edge_exists(const Mesh& mesh, VertexId v, VertexId w) {
+    const std::vector<ElementId> around = star(mesh, v);
+    return std::any_of(around.begin(), around.end(),
+                       [&](ElementId t) { return mesh.simplex(t).contains(w); });
+}
+
+// True when some element of `ring` (the tetrahedra around edge a-b) has a boundary face
+// containing a-b: then the edge lies on the boundary and its ring is not closed.
+inline bool ring_touches_boundary(const Mesh& mesh, std::span<const ElementId> ring, VertexId a,
+                                  VertexId b) {
+    for (const ElementId t : ring) {
+        const Simplex& tau = mesh.simplex(t);
+        for (int i = 0; i < 4; ++i) {
+            const VertexId v = tau.vertex(i);
+            if (v != a && v != b && mesh.mate(mesh.face(t, i)) == invalid_id) return true;
+        }
+    }
+    return false;
+}
+
+// The vertex of element t that is none of a, b, c (t must contain them).
+inline VertexId fourth_vertex(const Simplex& tau, VertexId a, VertexId b, VertexId c) {
+    for (const VertexId v : tau.vertices())
+        if (v != a && v != b && v != c) return v;
+    return invalid_id;
+}
+
+// Common argument checks for the edge flips: 3D mesh, entry a face, j in 0..2.
+inline Refusal refuse_bad_edge_arguments(const Mesh& mesh, FaceId entry, int j,
+                                         const char* operation) {
+    if (mesh.topological_dimension() != 3)
+        return {std::string(operation) + ": needs a tetrahedral mesh"};
+    if (!mesh.is_face(entry))
+        return {std::string(operation) + ": " + std::to_string(entry) + " is not a face"};
+    if (j < 0 || j > 2)
+        return {std::string(operation) + ": edge index " + std::to_string(j) +
+                " is not in 0..2"};
+    return {};
+}
+
+}  // namespace sxk::detail
