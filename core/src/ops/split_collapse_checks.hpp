@@ -1,0 +1,110 @@
+// Private helpers shared by split_edge.cpp, split_face.cpp, split_element.cpp and
+// collapse_edge.cpp: exact orientation of a simplex that is not (yet) an element, with some
+// vertices at positions that are not (yet) in the mesh, and the elements around a simplex.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <span>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+#include "sxk/predicates.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::detail {
+
+inline std::string simplex_text(const Simplex& sigma) {
+    std::ostringstream out;
+    out << sigma;
+    return out.str();
+}
+
+inline const char* positions_text(Positions positions) {
+    return positions == Positions::reference ? "reference" : "deformed";
+}
+
+// A vertex whose position is about to change (the new vertex of a split, the surviving vertex
+// of a collapse to a point): its two positions override the mesh's.
+struct MovedVertex {
+    VertexId vertex = invalid_id;
+    Point reference{};
+    Point deformed{};
+};
+
+inline const Point& position_of(const Mesh& mesh, VertexId v, Positions positions,
+                                const MovedVertex& moved) {
+    if (v == moved.vertex)
+        return positions == Positions::reference ? moved.reference : moved.deformed;
+    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+}
+
+// Exact orientation of the oriented simplex tau as an element of `mesh`, with the same meaning
+// as sxk::element_orientation: for planar triangles and tetrahedra the sign of orient2d /
+// orient3d times the simplex sign; for triangles in space positive unless degenerate.
+inline Sign simplex_orientation(const Mesh& mesh, const Simplex& tau, Positions positions,
+                                const MovedVertex& moved = {}) {
+    auto point = [&](int j) -> const Point& {
+        return position_of(mesh, tau.vertex(j), positions, moved);
+    };
+    Sign raw = Sign::positive;
+    if (mesh.topological_dimension() == 3)
+        raw = orient3d(point(0), point(1), point(2), point(3));
+    else if (mesh.ambient_dimension() == 2)
+        raw = orient2d(point(0), point(1), point(2));
+    else
+        return collinear(point(0), point(1), point(2)) ? Sign::zero : Sign::positive;
+    if (raw == Sign::zero) return raw;
+    return static_cast<int>(raw) * tau.sign() > 0 ? Sign::positive : Sign::negative;
+}
+
+// The elements containing both a and b (the star of the edge ab), in star(a) order.
+inline std::vector<ElementId> elements_with_edge(const Mesh& mesh, VertexId a, VertexId b) {
+    std::vector<ElementId> around = star(mesh, a);
+    std::erase_if(around, [&](ElementId t) { return !mesh.simplex(t).contains(b); });
+    return around;
+}
+
+// Affine combination sum weights[i] * p_i of the vertices of sigma, in both positions.
+inline std::pair<Point, Point> interpolate(const Mesh& mesh, std::span<const VertexId> vertices,
+                                           std::span<const double> weights) {
+    Point reference{0, 0, 0}, deformed{0, 0, 0};
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            reference[k] += weights[i] * mesh.reference(vertices[i])[k];
+            deformed[k] += weights[i] * mesh.deformed(vertices[i])[k];
+        }
+    return {reference, deformed};
+}
+
+// Splits share one rule: a child must keep its parent's orientation in both positions. In
+// exact arithmetic a point strictly inside a simplex (or edge, or face) gives children of the
+// parent's sign; the rounded new position can still make a child of a nearly flat parent flat,
+// and that is refused rather than built. Empty reason when all children are fine.
+inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> children,
+                                   std::span<const ElementId> parents_of_children,
+                                   const MovedVertex& moved, const char* operation) {
+    for (const Positions positions : {Positions::reference, Positions::deformed})
+        for (std::size_t i = 0; i < children.size(); ++i) {
+            const Sign parent = simplex_orientation(mesh, mesh.simplex(parents_of_children[i]), positions);
+            const Sign child = simplex_orientation(mesh, children[i], positions, moved);
+            if (child == Sign::zero || child != parent)
+                return {std::string(operation) + ": new element " + simplex_text(children[i]) +
+                            (child == Sign::zero ? " would be flat" : " would be inverted") +
+                            " in the " + positions_text(positions) + " positions",
+                        i};
+        }
+    return {};
+}
+
+// Every weight strictly positive and finite: the new point lies in the open simplex.
+inline bool weights_inside(std::span<const double> weights) {
+    return std::all_of(weights.begin(), weights.end(),
+                       [](double w) { return w > 0 && w < 1e300; });
+}
+
+}  // namespace sxk::detail

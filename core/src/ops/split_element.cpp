@@ -1,0 +1,43 @@
+// split_element (thesis §3.2 subdivision; connectivity edit by §7.3 replace-elements).
+#include "sxk/ops/split_element.hpp"
+
+#include "ops/split_collapse_checks.hpp"
+
+namespace sxk {
+
+Outcome<SplitResult> split_element(Mesh& mesh, ElementId t, std::span<const double> weights) {
+    if (!mesh.is_element(t)) return Refusal{"split_element: " + std::to_string(t) + " is not an element"};
+    const auto count = static_cast<std::size_t>(mesh.element_vertex_count());
+    std::vector<double> normalized(weights.begin(), weights.end());
+    if (normalized.empty()) normalized.assign(count, 1.0);
+    if (normalized.size() != count)
+        return Refusal{"split_element: needs " + std::to_string(count) + " weights, got " +
+                       std::to_string(weights.size())};
+    if (!detail::weights_inside(normalized))
+        return Refusal{"split_element: the weights must all be > 0 (the new vertex inside the element)"};
+    double sum = 0;
+    for (const double w : normalized) sum += w;
+    for (double& w : normalized) w /= sum;
+
+    const Simplex tau = mesh.simplex(t);
+    const auto [reference, deformed] = detail::interpolate(mesh, tau.vertices(), normalized);
+    const auto m = static_cast<VertexId>(mesh.vertex_count());
+    const detail::MovedVertex moved{m, reference, deformed};
+
+    std::vector<Simplex> children;
+    for (const VertexId replaced : tau.vertices()) children.push_back(tau.substituted(replaced, m));
+    const std::vector<ElementId> parent_of_child(children.size(), t);
+    if (Refusal r = detail::refuse_bad_children(mesh, children, parent_of_child, moved, "split_element");
+        !r.reason.empty())
+        return r;
+
+    // Nothing refuses past this point on a valid mesh: every new face contains the fresh m.
+    mesh.add_vertex(reference, deformed);
+    const std::vector<int> labels(children.size(), mesh.label(t));
+    const std::array<ElementId, 1> old{t};
+    auto result = mesh.replace_elements(old, children, labels);
+    if (!result.ok()) return Refusal{"split_element: " + result.reason()};
+    return SplitResult{m, std::move(*result)};
+}
+
+}  // namespace sxk

@@ -1,0 +1,44 @@
+// split_face (thesis §3.2 subdivision; connectivity edit by §7.3 replace-elements).
+#include "sxk/ops/split_face.hpp"
+
+#include "ops/split_collapse_checks.hpp"
+
+namespace sxk {
+
+Outcome<SplitResult> split_face(Mesh& mesh, FaceId f, std::array<double, 3> weights) {
+    if (mesh.topological_dimension() != 3)
+        return Refusal{"split_face: needs a tetrahedral mesh (split a triangle mesh's edges with split_edge)"};
+    if (!mesh.is_face(f)) return Refusal{"split_face: " + std::to_string(f) + " is not a face"};
+    if (!detail::weights_inside(weights))
+        return Refusal{"split_face: the weights must all be > 0 (the new vertex inside the face)"};
+    const double sum = weights[0] + weights[1] + weights[2];
+    for (double& w : weights) w /= sum;
+
+    const Simplex sigma = mesh.face_simplex(f);
+    std::vector<ElementId> parents{mesh.face_element(f)};
+    if (mesh.mate(f) != invalid_id) parents.push_back(mesh.face_element(mesh.mate(f)));
+    const auto [reference, deformed] = detail::interpolate(mesh, sigma.vertices(), weights);
+    const auto m = static_cast<VertexId>(mesh.vertex_count());
+    const detail::MovedVertex moved{m, reference, deformed};
+
+    std::vector<Simplex> children;
+    std::vector<ElementId> parent_of_child;
+    std::vector<int> labels;
+    for (const ElementId parent : parents)
+        for (const VertexId replaced : sigma.vertices()) {
+            children.push_back(mesh.simplex(parent).substituted(replaced, m));
+            parent_of_child.push_back(parent);
+            labels.push_back(mesh.label(parent));
+        }
+    if (Refusal r = detail::refuse_bad_children(mesh, children, parent_of_child, moved, "split_face");
+        !r.reason.empty())
+        return r;
+
+    // Nothing refuses past this point on a valid mesh: every new face contains the fresh m.
+    mesh.add_vertex(reference, deformed);
+    auto result = mesh.replace_elements(parents, children, labels);
+    if (!result.ok()) return Refusal{"split_face: " + result.reason()};
+    return SplitResult{m, std::move(*result)};
+}
+
+}  // namespace sxk
