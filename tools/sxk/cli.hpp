@@ -37,6 +37,8 @@ void add_validate_command(CLI::App& app, Context& context);
 void add_convert_command(CLI::App& app, Context& context);
 void add_quality_command(CLI::App& app, Context& context);
 void add_plugins_command(CLI::App& app, Context& context);
+void add_components_command(CLI::App& app, Context& context);
+void add_dissect_command(CLI::App& app, Context& context);
 
 // Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
 // context.err, sets context.exit_code to 2 and returns nullopt.

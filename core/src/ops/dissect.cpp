@@ -1,0 +1,135 @@
+// dissect (thesis §7.3, dissection by (v,C)-connected components; edit by change-elements).
+#include "sxk/ops/dissect.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "sxk/traversal.hpp"
+
+namespace sxk {
+namespace {
+
+std::string text(const Simplex& sigma) {
+    std::ostringstream out;
+    out << sigma;
+    return out.str();
+}
+
+// C is a set of unoriented faces: a face in C counts with its mate (thesis §7.3).
+Simplex unoriented(const Simplex& sigma) { return Simplex(+1, sigma.vertices()); }
+
+bool is_mesh_face(const Mesh& mesh, const Simplex& sigma) {
+    const VertexId v = sigma.vertex(0);
+    if (mesh.vertex_element(v) == invalid_id) return false;
+    for (ElementId t : star(mesh, v)) {
+        const Simplex& tau = mesh.simplex(t);
+        for (int j = 0; j < tau.count(); ++j)
+            if (tau.subn(j).same_vertices(sigma)) return true;
+    }
+    return false;
+}
+
+// Union-find over the positions of star(v); star sizes are small, so path halving suffices.
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+}  // namespace
+
+Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
+    const int d = mesh.topological_dimension();
+    std::unordered_set<Simplex, SimplexHash> cut;
+    std::vector<VertexId> cut_vertices;
+    for (std::size_t i = 0; i < cut_faces.size(); ++i) {
+        const Simplex& sigma = cut_faces[i];
+        const std::string name = "dissect: cut face " + std::to_string(i);
+        if (sigma.count() != d)
+            return Refusal{name + " has " + std::to_string(sigma.count()) + " vertices, not " +
+                               std::to_string(d),
+                           i};
+        bool known = sigma.has_distinct_vertices();
+        for (VertexId v : sigma.vertices()) known = known && v < mesh.vertex_count();
+        if (!known)
+            return Refusal{name + " " + text(sigma) + " has a repeated or unknown vertex", i};
+        if (!is_mesh_face(mesh, sigma))
+            return Refusal{name + " " + text(sigma) + " is not a face of the mesh", i};
+        cut.insert(unoriented(sigma));
+        cut_vertices.insert(cut_vertices.end(), sigma.vertices().begin(), sigma.vertices().end());
+    }
+    std::sort(cut_vertices.begin(), cut_vertices.end());
+    cut_vertices.erase(std::unique(cut_vertices.begin(), cut_vertices.end()), cut_vertices.end());
+
+    // Per changed element, the substituted canonical vertices (start: unchanged).
+    std::unordered_map<ElementId, ElementSubstitution> substitution;
+    DissectResult result;
+    VertexId next_vertex = static_cast<VertexId>(mesh.vertex_count());
+    std::vector<Point> new_reference, new_deformed;
+
+    for (VertexId v : cut_vertices) {
+        std::vector<ElementId> around = star(mesh, v);
+        std::sort(around.begin(), around.end());
+        std::vector<std::size_t> parent(around.size());
+        std::iota(parent.begin(), parent.end(), std::size_t{0});
+        auto position = [&](ElementId t) {
+            return static_cast<std::size_t>(std::lower_bound(around.begin(), around.end(), t) -
+                                            around.begin());
+        };
+        // (v,C)-connected: joined across a face that contains v (slot j with vertex(j) != v)
+        // and is not in C.
+        for (std::size_t a = 0; a < around.size(); ++a) {
+            const ElementId t = around[a];
+            const Simplex& tau = mesh.simplex(t);
+            for (int j = 0; j < tau.count(); ++j) {
+                if (tau.vertex(j) == v) continue;
+                const ElementId u = mesh.neighbor(t, j);
+                if (u == invalid_id || cut.contains(unoriented(tau.subn(j)))) continue;
+                parent[find_root(parent, a)] = find_root(parent, position(u));
+            }
+        }
+        // around is sorted, so classes are met in order of their smallest element; the first
+        // keeps v.
+        std::unordered_map<std::size_t, VertexId> vertex_of_root;
+        for (std::size_t a = 0; a < around.size(); ++a) {
+            const std::size_t root = find_root(parent, a);
+            auto [it, fresh] = vertex_of_root.try_emplace(root, v);
+            if (fresh && vertex_of_root.size() > 1) {
+                it->second = next_vertex++;
+                result.new_vertices.emplace_back(v, it->second);
+                new_reference.push_back(mesh.reference(v));
+                new_deformed.push_back(mesh.deformed(v));
+            }
+            if (it->second == v) continue;
+            const ElementId t = around[a];
+            auto [entry, first] = substitution.try_emplace(t);
+            if (first) {
+                entry->second.element = t;
+                const Simplex& tau = mesh.simplex(t);
+                for (int j = 0; j < tau.count(); ++j)
+                    entry->second.new_vertices[static_cast<std::size_t>(j)] = tau.vertex(j);
+            }
+            entry->second.new_vertices[static_cast<std::size_t>(mesh.simplex(t).index(v))] =
+                it->second;
+        }
+    }
+    if (result.new_vertices.empty()) return result;  // Fig. 7.7: nothing separates
+
+    std::vector<ElementSubstitution> changes;
+    changes.reserve(substitution.size());
+    for (const auto& [t, s] : substitution) changes.push_back(s);
+    std::sort(changes.begin(), changes.end(),
+              [](const ElementSubstitution& a, const ElementSubstitution& b) {
+                  return a.element < b.element;
+              });
+    for (std::size_t i = 0; i < new_reference.size(); ++i)
+        mesh.add_vertex(new_reference[i], new_deformed[i]);
+    auto changed = mesh.change_elements(changes);
+    if (!changed.ok()) return Refusal{"dissect: " + changed.reason(), changed.refusal().item};
+    return result;
+}
+
+}  // namespace sxk

@@ -1,0 +1,168 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include "core/fixtures.hpp"
+#include "sxk/components.hpp"
+#include "sxk/ops/dissect.hpp"
+
+namespace sxk {
+namespace {
+
+using test::CountingWatcher;
+using test::expect_same_state;
+
+// The faces of each element as a set: a substituted simplex re-sorts its vertices, so a face
+// may move to another slot (invariant 7.1), but it stays in its element with its FaceId.
+std::vector<std::vector<FaceId>> all_faces(const Mesh& mesh) {
+    std::vector<std::vector<FaceId>> faces;
+    for (ElementId t : elements(mesh)) {
+        faces.emplace_back(mesh.faces(t).begin(), mesh.faces(t).end());
+        std::sort(faces.back().begin(), faces.back().end());
+    }
+    return faces;
+}
+
+std::vector<ElementId> all_elements(const Mesh& mesh) {
+    std::vector<ElementId> ids;
+    for (ElementId t : elements(mesh)) ids.push_back(t);
+    return ids;
+}
+
+//   3 ------- 2          3 ------ 2        2'         cut C = {0-2}: both end points have
+//   |       / |          |      /         / |         two (v,C)-classes, so 0 and 2 get a
+//   |  B  /   |   --->   |  B  /         /  A |       copy each (0' = 4, 2' = 5) and the
+//   |   /  A  |          |   /          /     |       square falls into two triangles
+//   | /       |          | /           /      |
+//   0 ------- 1          0           0' ----- 1
+TEST(Dissect, UnitSquareAlongItsDiagonal) {
+    Mesh mesh = test::unit_square();
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const auto element_ids = all_elements(mesh);
+    const auto face_ids = all_faces(mesh);
+    const std::size_t boundary_before = mesh.boundary_face_count();
+
+    const std::vector<Simplex> cut{Simplex(+1, {2, 0})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_EQ(result->new_vertices.size(), 2u);
+    EXPECT_EQ(mesh.vertex_count(), 6u);
+    for (const auto& [original, copy] : result->new_vertices) {
+        EXPECT_EQ(mesh.reference(copy), mesh.reference(original));
+        EXPECT_EQ(mesh.deformed(copy), mesh.deformed(original));
+    }
+    EXPECT_EQ(result->new_vertices[0].first, 0u);
+    EXPECT_EQ(result->new_vertices[1].first, 2u);
+    EXPECT_EQ(mesh.boundary_face_count(), boundary_before + 2);
+    EXPECT_EQ(all_elements(mesh), element_ids);
+    EXPECT_EQ(all_faces(mesh), face_ids);
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    // one element changed (the class with the larger element id), two faces join the boundary
+    EXPECT_EQ(watcher.changed, 1);
+    EXPECT_EQ(watcher.removed + watcher.added, 0);
+    EXPECT_EQ(watcher.boundary_added_count, 2);
+    watcher.expect_in_step_with(mesh);
+}
+
+// Fig. 7.7: the interior edge (1,1)-(2,1) of a 4 x 4 grid cut on its own separates nothing:
+// the rings around both end points stay joined through their other edges.
+TEST(Dissect, NonSeparatingFaceStaysJoined) {
+    Mesh mesh = test::planar_grid(4);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const Mesh before = mesh;
+    const std::vector<Simplex> cut{Simplex(+1, {6, 7})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_TRUE(result->new_vertices.empty());
+    EXPECT_EQ(mesh.boundary_face_count(), before.boundary_face_count());
+    expect_same_state(mesh, before);
+    EXPECT_EQ(watcher.changed, 0);
+    watcher.expect_in_step_with(mesh);
+}
+
+// A 4 x 4 grid cut along the whole line x = 2 (vertices 2, 7, 12, 17, 22): two halves.
+TEST(Dissect, PlanarGridAlongAGridLine) {
+    Mesh mesh = test::planar_grid(4);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const std::size_t boundary_before = mesh.boundary_face_count();
+    std::vector<Simplex> cut;
+    for (VertexId j = 0; j < 4; ++j) cut.push_back(Simplex(+1, {2 + 5 * j, 2 + 5 * (j + 1)}));
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_EQ(result->new_vertices.size(), 5u);
+    EXPECT_EQ(mesh.boundary_face_count(), boundary_before + 8);
+    const Components components = connected_components(mesh);
+    EXPECT_EQ(components.count, 2u);
+    EXPECT_EQ(watcher.boundary_added_count, 8);
+    watcher.expect_in_step_with(mesh);
+}
+
+// kuhn_cube(2) cut along the plane x = 1: the 9 vertices of the plane get one copy each.
+TEST(Dissect, KuhnCubeAlongAPlane) {
+    Mesh mesh = test::kuhn_cube(2);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const auto face_ids = all_faces(mesh);
+    std::vector<Simplex> cut;
+    for (ElementId t : elements(mesh))
+        for (FaceId f : mesh.faces(t)) {
+            if (mesh.mate(f) == invalid_id) continue;
+            const Simplex sigma = mesh.face_simplex(f);
+            bool on_plane = true;
+            for (VertexId v : sigma.vertices()) on_plane = on_plane && mesh.reference(v)[0] == 1.0;
+            if (on_plane) cut.push_back(sigma);  // both orientations: a face counts with its mate
+        }
+    ASSERT_EQ(cut.size(), 16u);  // 4 unit squares of 2 triangles, seen from both sides
+    const std::size_t boundary_before = mesh.boundary_face_count();
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_EQ(result->new_vertices.size(), 9u);
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    EXPECT_EQ(mesh.boundary_face_count(), boundary_before + 16);
+    EXPECT_EQ(all_faces(mesh), face_ids);
+    EXPECT_EQ(watcher.boundary_added_count, 16);
+    watcher.expect_in_step_with(mesh);
+}
+
+TEST(Dissect, RefusesAFaceOfTheWrongSize) {
+    Mesh mesh = test::unit_square();
+    const Mesh before = mesh;
+    const std::vector<Simplex> cut{Simplex(+1, {0, 2}), Simplex(+1, {0, 1, 2})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.reason(), "dissect: cut face 1 has 3 vertices, not 2");
+    EXPECT_EQ(result.refusal().item, 1u);
+    expect_same_state(mesh, before);
+}
+
+TEST(Dissect, RefusesAFaceNotInTheMesh) {
+    Mesh mesh = test::unit_square();
+    const Mesh before = mesh;
+    const std::vector<Simplex> cut{Simplex(+1, {1, 3})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.reason(), "dissect: cut face 0 +<1,3> is not a face of the mesh");
+    expect_same_state(mesh, before);
+}
+
+TEST(Dissect, RefusesAnUnknownVertex) {
+    Mesh mesh = test::unit_square();
+    const Mesh before = mesh;
+    const std::vector<Simplex> cut{Simplex(+1, {0, 9})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.reason(), "dissect: cut face 0 +<0,9> has a repeated or unknown vertex");
+    expect_same_state(mesh, before);
+}
+
+}  // namespace
+}  // namespace sxk

@@ -1,0 +1,122 @@
+// sxk dissect IN OUT --faces FILE: opens the mesh along the listed (d-1)-faces (thesis §7.3,
+// dissection by (v,C)-connected components; see sxk/ops/dissect.hpp).
+//
+// FILE lists one face per line as whitespace-separated vertex ids, 0-based in the mesh's own
+// numbering (a Medit or Gmsh file numbers from 1: file vertex k is id k-1), in either
+// orientation. '#' starts a comment; blank lines are skipped. A bad line gives
+// "sxk: FILE:LINE: reason" and exit code 2, like any other input error.
+#include <charconv>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "cli.hpp"
+#include "progress.hpp"
+#include "sxk/components.hpp"
+#include "sxk/ops/dissect.hpp"
+
+namespace sxk::cli {
+namespace {
+
+struct DissectOptions {
+    std::string input;
+    std::string output;
+    std::string faces;
+};
+
+struct FaceList {
+    std::vector<Simplex> faces;
+    std::vector<std::size_t> lines;  // line number of each face, for messages
+};
+
+// Reads the face list; on a bad line prints the error and returns nullopt.
+std::optional<FaceList> read_faces(Context& context, const std::string& file, const Mesh& mesh) {
+    std::ifstream in(file);
+    if (!in) {
+        context.err << "sxk: " << file << ":0: cannot open\n";
+        return std::nullopt;
+    }
+    const std::size_t wanted = static_cast<std::size_t>(mesh.topological_dimension());
+    FaceList list;
+    std::string line;
+    for (std::size_t number = 1; std::getline(in, line); ++number) {
+        if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+        std::istringstream words(line);
+        std::vector<VertexId> vertices;
+        std::string word;
+        auto fail = [&](const std::string& reason) {
+            context.err << "sxk: " << file << ':' << number << ": " << reason << '\n';
+            return std::nullopt;
+        };
+        while (words >> word) {
+            VertexId v = 0;
+            const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), v);
+            if (error != std::errc() || end != word.data() + word.size())
+                return fail("'" + word + "' is not a vertex id");
+            if (v >= mesh.vertex_count())
+                return fail("vertex " + word + " does not exist (ids are 0-based, the mesh has " +
+                            std::to_string(mesh.vertex_count()) + " vertices)");
+            vertices.push_back(v);
+        }
+        if (vertices.empty()) continue;
+        if (vertices.size() != wanted)
+            return fail("a face of a " + std::string(element_kind(mesh)) + " mesh has " +
+                        std::to_string(wanted) + " vertices, this line has " + std::to_string(vertices.size()));
+        list.faces.emplace_back(+1, vertices);
+        list.lines.push_back(number);
+    }
+    return list;
+}
+
+int run_dissect(Context& context, const DissectOptions& options) {
+    if (!format_from_extension(options.output)) {
+        context.err << "sxk: " << options.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        return exit_usage;
+    }
+    std::optional<Mesh> mesh = load_mesh(context, options.input);
+    if (!mesh) return exit_usage;
+    std::optional<FaceList> list = read_faces(context, options.faces, *mesh);
+    if (!list) return exit_usage;
+
+    Outcome<DissectResult> result = DissectResult{};
+    {
+        Progress progress("dissecting " + options.input);
+        result = dissect(*mesh, list->faces);
+    }
+    if (!result.ok()) {
+        const std::size_t item = result.refusal().item;
+        if (item < list->lines.size()) {  // a face of the file: an input error on its line
+            context.err << "sxk: " << options.faces << ':' << list->lines[item] << ": " << result.reason() << '\n';
+            return exit_usage;
+        }
+        context.err << "sxk: " << result.reason() << '\n';
+        return exit_refused;
+    }
+    try {
+        Progress progress("writing " + options.output);
+        write_mesh(*mesh, options.output);
+    } catch (const std::exception& error) {
+        context.err << "sxk: " << options.output << ":0: " << error.what() << '\n';
+        return exit_refused;
+    }
+    context.out << options.input << " -> " << options.output << ": " << list->faces.size() << " cut faces, "
+                << result->new_vertices.size() << " new vertices, " << connected_components(*mesh).count
+                << " components\n";
+    return exit_success;
+}
+
+}  // namespace
+
+void add_dissect_command(CLI::App& app, Context& context) {
+    auto options = std::make_shared<DissectOptions>();
+    CLI::App* command = app.add_subcommand(
+        "dissect", "Open the mesh along a list of faces, splitting vertices by (v,C)-connected components");
+    command->add_option("IN", options->input, "Input mesh file")->required();
+    command->add_option("OUT", options->output, "Output mesh file")->required();
+    command->add_option("--faces", options->faces,
+                        "Text file: one face per line, 0-based vertex ids of the mesh, '#' comments")
+        ->required();
+    command->callback([&context, options] { context.exit_code = run_dissect(context, *options); });
+}
+
+}  // namespace sxk::cli
