@@ -18,7 +18,6 @@
 namespace sxk {
 
 using detail::check_simplex;
-using detail::describe;
 
 namespace {
 
@@ -117,13 +116,13 @@ Refusal match_faces(std::span<const Simplex> simplexes, std::size_t vertex_count
                     report(std::max(ea, eb),
                            "elements " + std::to_string(std::min(ea, eb)) + " and " +
                                std::to_string(std::max(ea, eb)) + " share face " +
-                               describe(face_simplex_of(a)) +
+                               to_text(face_simplex_of(a)) +
                                " with the same orientation (inconsistently oriented)");
                 }
             } else {
                 std::size_t last = 0;
                 for (FaceEntry* e = run; e < run_end; ++e) last = std::max<std::size_t>(last, e->face / ku);
-                report(last, "face " + describe(Simplex(+1, face_simplex_of(run->face).vertices())) +
+                report(last, "face " + to_text(Simplex(+1, face_simplex_of(run->face).vertices())) +
                                  " is shared by " + std::to_string(size) + " elements (non-manifold)");
             }
             run = run_end;

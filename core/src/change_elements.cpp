@@ -15,7 +15,6 @@
 namespace sxk {
 
 using detail::check_simplex;
-using detail::describe;
 
 Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substitution) {
     const int k = m_dimension + 1;
@@ -57,10 +56,10 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
         for (int j = 0; j < k; ++j) new_faces.push_back(tau.subn(j));
     std::sort(new_faces.begin(), new_faces.end());
     if (auto d = std::adjacent_find(new_faces.begin(), new_faces.end()); d != new_faces.end())
-        return Refusal{"face " + describe(*d) + " would belong to two changed elements (invariant 7.4)"};
+        return Refusal{"face " + to_text(*d) + " would belong to two changed elements (invariant 7.4)"};
     for (std::size_t i = 0; i < m; ++i) {
         if (has_face_outside(substituted[i], changed_sorted))
-            return Refusal{"element " + describe(substituted[i]) +
+            return Refusal{"element " + to_text(substituted[i]) +
                                " already exists as an unchanged element (invariant 7.4)",
                            i};
         for (int j = 0; j < k; ++j) {
@@ -70,7 +69,7 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
                 b != invalid_id && face_simplex(b) == sigma &&
                 !std::binary_search(changed_sorted.begin(), changed_sorted.end(), m_faces[b].element);
             if (on_boundary || has_face_outside(sigma, changed_sorted))
-                return Refusal{"face " + describe(sigma) +
+                return Refusal{"face " + to_text(sigma) +
                                    " already exists in an unchanged element (invariant 7.4)",
                                i};
         }

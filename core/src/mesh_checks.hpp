@@ -1,18 +1,11 @@
 // Argument checks shared by the edit primitives.
 #pragma once
 
-#include <sstream>
 #include <string>
 
 #include "sxk/simplex.hpp"
 
 namespace sxk::detail {
-
-inline std::string describe(const Simplex& s) {
-    std::ostringstream out;
-    out << s;
-    return out.str();
-}
 
 // Why `s` cannot be an element of a mesh with `vertices` vertices and elements of
 // `vertex_count_per_element` vertices; empty when it can.
@@ -25,7 +18,7 @@ inline std::string check_simplex(const Simplex& s, int vertex_count_per_element,
         if (s.vertex(j) >= vertices)
             return "vertex " + std::to_string(s.vertex(j)) + " does not exist (the mesh has " +
                    std::to_string(vertices) + " vertices)";
-    if (!s.has_distinct_vertices()) return "element " + describe(s) + " repeats a vertex";
+    if (!s.has_distinct_vertices()) return "element " + to_text(s) + " repeats a vertex";
     return {};
 }
 

@@ -16,7 +16,6 @@
 namespace sxk {
 
 using detail::check_simplex;
-using detail::describe;
 
 namespace {
 
@@ -112,7 +111,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
               [&](std::size_t a, std::size_t b) { return new_faces[a].sigma < new_faces[b].sigma; });
     for (std::size_t i = 1; i < order.size(); ++i)
         if (new_faces[order[i]].sigma == new_faces[order[i - 1]].sigma)
-            return Refusal{"face " + describe(new_faces[order[i]].sigma) +
+            return Refusal{"face " + to_text(new_faces[order[i]].sigma) +
                                " would belong to two new elements (invariant 7.4)",
                            std::max(order[i], order[i - 1]) / uk};
     auto find_new = [&](const Simplex& s) -> NewFace* {
@@ -132,7 +131,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
     // may a new element have the vertices of one that stays.
     for (std::size_t i = 0; i < m; ++i) {
         if (has_face_outside(new_simplexes[i], old_sorted))
-            return Refusal{"element " + describe(new_simplexes[i]) +
+            return Refusal{"element " + to_text(new_simplexes[i]) +
                                " already exists as an element that stays (invariant 7.4)",
                            i};
         for (int j = 0; j < k; ++j) {
@@ -142,7 +141,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
             const bool on_boundary = b != invalid_id && face_simplex(b) == nf.sigma &&
                                      !sorted_contains(old_sorted, m_faces[b].element);
             if (on_boundary || has_face_outside(nf.sigma, old_sorted))
-                return Refusal{"face " + describe(nf.sigma) +
+                return Refusal{"face " + to_text(nf.sigma) +
                                    " already exists in an element that stays (invariant 7.4)",
                                i};
         }

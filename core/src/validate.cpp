@@ -9,12 +9,11 @@
 
 namespace sxk {
 
-using detail::describe;
 
 namespace {
 
 std::string element_name(ElementId t, const Simplex& s) {
-    return "element " + std::to_string(t) + " " + describe(s);
+    return "element " + std::to_string(t) + " " + to_text(s);
 }
 
 }  // namespace
@@ -69,16 +68,16 @@ Outcome<Done> Mesh::validate() const {
         }
         const Simplex sigma = face_simplex(f);
         if (!is_face(g))
-            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + describe(sigma) +
+            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + to_text(sigma) +
                            " has mate " + std::to_string(g) + ", which does not exist"};
         if (m_faces[g].mate != f)
-            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + describe(sigma) +
+            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + to_text(sigma) +
                            " has mate " + std::to_string(g) + " whose mate is " +
                            (m_faces[g].mate == invalid_id ? std::string("none") : std::to_string(m_faces[g].mate))};
         if (!(face_simplex(g) == sigma.mate()))
-            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + describe(sigma) +
-                           " has mate " + std::to_string(g) + " " + describe(face_simplex(g)) +
-                           ", expected " + describe(sigma.mate())};
+            return Refusal{"invariant 7.3 (mate): face " + std::to_string(f) + " " + to_text(sigma) +
+                           " has mate " + std::to_string(g) + " " + to_text(face_simplex(g)) +
+                           ", expected " + to_text(sigma.mate())};
     }
 
     // uniqueness (7.4): no two elements with the same vertices, no simplex in two faces
@@ -92,7 +91,7 @@ Outcome<Done> Mesh::validate() const {
             if (all[i].first == all[i - 1].first)
                 return Refusal{"invariant 7.4 (uniqueness): elements " + std::to_string(all[i - 1].second) +
                                    " and " + std::to_string(all[i].second) + " have the same vertices " +
-                                   describe(all[i].first),
+                                   to_text(all[i].first),
                                all[i].second};
     }
     {
@@ -103,7 +102,7 @@ Outcome<Done> Mesh::validate() const {
         std::sort(all.begin(), all.end());
         for (std::size_t i = 1; i < all.size(); ++i)
             if (all[i].first == all[i - 1].first)
-                return Refusal{"invariant 7.4 (uniqueness): simplex " + describe(all[i].first) +
+                return Refusal{"invariant 7.4 (uniqueness): simplex " + to_text(all[i].first) +
                                    " is represented by faces " + std::to_string(all[i - 1].second) +
                                    " (element " + std::to_string(m_faces[all[i - 1].second].element) +
                                    ") and " + std::to_string(all[i].second) + " (element " +
@@ -123,17 +122,17 @@ Outcome<Done> Mesh::validate() const {
                                ", which does not exist";
         } else if (m_faces[f].mate != invalid_id) {
             boundary_problem = "invariant 7.5 (boundary map): it holds face " + std::to_string(f) + " " +
-                               describe(face_simplex(f)) + ", which has a mate";
+                               to_text(face_simplex(f)) + ", which has a mate";
         } else if (detail::BoundaryMap::key_of(face_simplex(f)) != key) {
             boundary_problem = "invariant 7.5 (boundary map): face " + std::to_string(f) + " " +
-                               describe(face_simplex(f)) + " is filed under other vertices";
+                               to_text(face_simplex(f)) + " is filed under other vertices";
         }
     });
     if (!boundary_problem.empty()) return Refusal{boundary_problem};
     for (FaceId f = 0; f < m_faces.size(); ++f)
         if (is_face(f) && m_faces[f].mate == invalid_id && m_boundary.find(face_simplex(f)) != f)
             return Refusal{"invariant 7.5 (boundary map): boundary face " + std::to_string(f) + " " +
-                               describe(face_simplex(f)) + " of element " +
+                               to_text(face_simplex(f)) + " of element " +
                                std::to_string(m_faces[f].element) + " is missing from the boundary map",
                            m_faces[f].element};
 

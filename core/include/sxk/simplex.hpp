@@ -25,6 +25,7 @@
 #include <initializer_list>
 #include <iosfwd>
 #include <span>
+#include <string>
 
 #include "sxk/config.hpp"
 #include "sxk/ids.hpp"
@@ -172,6 +173,8 @@ private:
 
 // "+<0,1,2>" / "-<3,4>"
 SXK_API std::ostream& operator<<(std::ostream& out, const Simplex& simplex);
+// The same text as a string, for messages.
+SXK_API std::string to_text(const Simplex& simplex);
 
 struct SimplexHash {
     std::size_t operator()(const Simplex& s) const { return s.hash(); }

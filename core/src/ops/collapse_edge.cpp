@@ -82,12 +82,12 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
     const Simplex edge(+1, {from, to});
     if (std::none_of(star_from.begin(), star_from.end(),
                      [&](ElementId t) { return mesh.simplex(t).contains(to); }))
-        return Refusal{"collapse_edge: " + detail::simplex_text(edge) + " is not an edge"};
+        return Refusal{"collapse_edge: " + to_text(edge) + " is not an edge"};
 
     // The boundary keeps its shape (thesis §3.2.3: collapses must not change the domain): a
     // boundary vertex may only slide along the boundary, i.e. along a boundary edge.
     if (on_boundary(mesh, star_from, from) && !on_boundary(mesh, star_from, from, to))
-        return Refusal{"collapse_edge: " + detail::simplex_text(edge) +
+        return Refusal{"collapse_edge: " + to_text(edge) +
                        " is interior but vertex " + std::to_string(from) +
                        " is on the boundary: the collapse would move the boundary"};
 
@@ -100,7 +100,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
         const std::set<LinkSimplex> link_edge = link_of(mesh, star_from, both);
         for (const LinkSimplex& s : link_from)
             if (link_to.count(s) && !link_edge.count(s))
-                return Refusal{"collapse_edge: " + detail::simplex_text(edge) +
+                return Refusal{"collapse_edge: " + to_text(edge) +
                                " violates the link condition (the result would not be a manifold)"};
     }
 
@@ -121,7 +121,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                     const Simplex face = mesh.face_simplex(f);
                     if (!face.contains(mover) || (face.contains(from) && face.contains(to))) continue;
                     if (!on_hull_of(face, mesh, target, positions))
-                        return Refusal{"collapse_edge: boundary face " + detail::simplex_text(face) +
+                        return Refusal{"collapse_edge: boundary face " + to_text(face) +
                                        " would leave its " + (face.count() == 2 ? "line" : "plane") +
                                        " in the " + detail::positions_text(positions) +
                                        " positions: the collapse would move the boundary"};
@@ -157,7 +157,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
             const Sign s = detail::simplex_orientation(mesh, reshaped[i], positions, moved);
             const std::string where = std::string(" in the ") + detail::positions_text(positions) + " positions";
             if (s != Sign::positive)
-                return Refusal{"collapse_edge: element " + detail::simplex_text(reshaped[i]) +
+                return Refusal{"collapse_edge: element " + to_text(reshaped[i]) +
                                    (s == Sign::zero ? " would be flat" : " would be inverted") + where,
                                i};
             if (surface) {
@@ -175,7 +175,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                 }
                 if (normal_alignment(point_before(0), point_before(1), point_before(2), after[0],
                                      after[1], after[2]) != Sign::positive)
-                    return Refusal{"collapse_edge: triangle " + detail::simplex_text(reshaped[i]) +
+                    return Refusal{"collapse_edge: triangle " + to_text(reshaped[i]) +
                                        " would turn over" + where,
                                    i};
             }

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -12,12 +11,6 @@
 
 namespace sxk {
 namespace {
-
-std::string text(const Simplex& sigma) {
-    std::ostringstream out;
-    out << sigma;
-    return out.str();
-}
 
 // C is a set of unoriented faces: a face in C counts with its mate (thesis §7.3).
 Simplex unoriented(const Simplex& sigma) { return Simplex(+1, sigma.vertices()); }
@@ -55,9 +48,9 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
         bool known = sigma.has_distinct_vertices();
         for (VertexId v : sigma.vertices()) known = known && v < mesh.vertex_count();
         if (!known)
-            return Refusal{name + " " + text(sigma) + " has a repeated or unknown vertex", i};
+            return Refusal{name + " " + to_text(sigma) + " has a repeated or unknown vertex", i};
         if (!is_mesh_face(mesh, sigma))
-            return Refusal{name + " " + text(sigma) + " is not a face of the mesh", i};
+            return Refusal{name + " " + to_text(sigma) + " is not a face of the mesh", i};
         cut.insert(unoriented(sigma));
         cut_vertices.insert(cut_vertices.end(), sigma.vertices().begin(), sigma.vertices().end());
     }

@@ -12,7 +12,7 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
     const FaceId other = mesh.mate(face);
     if (other == invalid_id)
         return Refusal{"flip_23: face " + std::to_string(face) + " " +
-                       detail::to_text(mesh.face_simplex(face)) + " is on the boundary"};
+                       to_text(mesh.face_simplex(face)) + " is on the boundary"};
     const ElementId t0 = mesh.face_element(face);
     const ElementId t1 = mesh.face_element(other);
     const VertexId p = mesh.opposite_vertex(t0, face);
@@ -20,7 +20,7 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
     // Thesis Fig. 5.9: if p and q are already joined elsewhere, the flip would represent the
     // edge pq twice and the result would not be a manifold complex.
     if (detail::edge_exists(mesh, p, q))
-        return Refusal{"flip_23: edge " + detail::to_text(Simplex(+1, {p, q})) +
+        return Refusal{"flip_23: edge " + to_text(Simplex(+1, {p, q})) +
                        " already exists"};
 
     // simplex(t0) = sigma.sup(p) with sigma = face_simplex(face); substituting q for one vertex

@@ -14,10 +14,10 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
     const VertexId b = edge.vertex(1);
     const std::vector<ElementId> ring = cycle_around(mesh, entry, j);
     if (detail::ring_touches_boundary(mesh, ring, a, b))
-        return Refusal{"flip_32: edge " + detail::to_text(Simplex(+1, {a, b})) +
+        return Refusal{"flip_32: edge " + to_text(Simplex(+1, {a, b})) +
                        " is on the boundary"};
     if (ring.size() != 3)
-        return Refusal{"flip_32: edge " + detail::to_text(Simplex(+1, {a, b})) + " has degree " +
+        return Refusal{"flip_32: edge " + to_text(Simplex(+1, {a, b})) + " has degree " +
                        std::to_string(ring.size()) + ", not 3"};
 
     // tau = <ab, c, d> for two ring vertices c, d; e is the ring vertex not in tau.
@@ -35,7 +35,7 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
         for (const ElementId t : around) {
             const Simplex& s = mesh.simplex(t);
             if (s.contains(d) && s.contains(e))
-                return Refusal{"flip_32: triangle " + detail::to_text(Simplex(+1, {c, d, e})) +
+                return Refusal{"flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) +
                                " already exists"};
         }
     }

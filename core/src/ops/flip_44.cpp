@@ -16,10 +16,10 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     const VertexId b = edge.vertex(1);
     const std::vector<ElementId> ring = cycle_around(mesh, entry, j);
     if (detail::ring_touches_boundary(mesh, ring, a, b))
-        return Refusal{"flip_44: edge " + detail::to_text(Simplex(+1, {a, b})) +
+        return Refusal{"flip_44: edge " + to_text(Simplex(+1, {a, b})) +
                        " is on the boundary"};
     if (ring.size() != 4)
-        return Refusal{"flip_44: edge " + detail::to_text(Simplex(+1, {a, b})) + " has degree " +
+        return Refusal{"flip_44: edge " + to_text(Simplex(+1, {a, b})) + " has degree " +
                        std::to_string(ring.size()) + ", not 4"};
 
     // v[k] = the vertex shared by ring[k] and ring[k+1] besides a and b (ring order).
@@ -33,7 +33,7 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     const std::size_t m = static_cast<std::size_t>(diagonal);
     const VertexId u = v[m], w = v[m + 2];
     if (detail::edge_exists(mesh, u, w))
-        return Refusal{"flip_44: edge " + detail::to_text(Simplex(+1, {u, w})) +
+        return Refusal{"flip_44: edge " + to_text(Simplex(+1, {u, w})) +
                        " already exists"};
 
     // As flip_23 on the face <a,b,v[m+1]> (apexes v[m], v[m+2]) then flip_32 on the edge ab

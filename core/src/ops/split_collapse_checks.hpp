@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <span>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,12 +16,6 @@
 #include "sxk/traversal.hpp"
 
 namespace sxk::detail {
-
-inline std::string simplex_text(const Simplex& sigma) {
-    std::ostringstream out;
-    out << sigma;
-    return out.str();
-}
 
 inline const char* positions_text(Positions positions) {
     return positions == Positions::reference ? "reference" : "deformed";
@@ -93,7 +86,7 @@ inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> ch
             const Sign parent = simplex_orientation(mesh, mesh.simplex(parents_of_children[i]), positions);
             const Sign child = simplex_orientation(mesh, children[i], positions, moved);
             if (child == Sign::zero || child != parent)
-                return {std::string(operation) + ": new element " + simplex_text(children[i]) +
+                return {std::string(operation) + ": new element " + to_text(children[i]) +
                             (child == Sign::zero ? " would be flat" : " would be inverted") +
                             " in the " + positions_text(positions) + " positions",
                         i};

@@ -16,7 +16,7 @@ Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t) {
     if (!(t > 0 && t < 1)) return Refusal{"split_edge: t = " + std::to_string(t) + " is not in (0,1)"};
     const std::vector<ElementId> parents = detail::elements_with_edge(mesh, a, b);
     if (parents.empty())
-        return Refusal{"split_edge: " + detail::simplex_text(Simplex(+1, {a, b})) +
+        return Refusal{"split_edge: " + to_text(Simplex(+1, {a, b})) +
                        " is not an edge"};
 
     const std::array<VertexId, 2> ends{a, b};

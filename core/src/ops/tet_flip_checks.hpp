@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <span>
-#include <sstream>
 #include <string>
 
 #include "sxk/mesh.hpp"
@@ -14,12 +13,6 @@
 #include "sxk/traversal.hpp"
 
 namespace sxk::detail {
-
-inline std::string to_text(const Simplex& sigma) {
-    std::ostringstream out;
-    out << sigma;
-    return out.str();
-}
 
 // Exact orientation of an oriented tetrahedron that is not (yet) an element.
 inline Sign tet_orientation(const Mesh& mesh, const Simplex& tau, Positions positions) {
