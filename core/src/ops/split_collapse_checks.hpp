@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sxk/mesh.hpp"
+#include "sxk/ops/split_result.hpp"
 #include "sxk/outcome.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
@@ -92,6 +93,33 @@ inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> ch
                         i};
         }
     return {};
+}
+
+// The common end of every split: each parent is replaced by one child per vertex in `replaced`
+// (the parent with that vertex swapped for the new vertex moved.vertex, so orientation and label
+// follow the parent); the children are checked before the new vertex exists, then the vertex is
+// added and ONE replace_elements call makes the edit.
+inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId> parents,
+                                          std::span<const VertexId> replaced,
+                                          const MovedVertex& moved, const char* operation) {
+    std::vector<Simplex> children;
+    std::vector<ElementId> parent_of_child;
+    std::vector<int> labels;
+    for (const ElementId parent : parents)
+        for (const VertexId v : replaced) {
+            children.push_back(mesh.simplex(parent).substituted(v, moved.vertex));
+            parent_of_child.push_back(parent);
+            labels.push_back(mesh.label(parent));
+        }
+    if (Refusal r = refuse_bad_children(mesh, children, parent_of_child, moved, operation);
+        !r.reason.empty())
+        return r;
+    // Nothing refuses past this point on a valid mesh: every new face either was a face of a
+    // parent or contains the fresh vertex, which no other element has (invariant 7.4 holds).
+    mesh.add_vertex(moved.reference, moved.deformed);
+    auto result = mesh.replace_elements(parents, children, labels);
+    if (!result.ok()) return Refusal{std::string(operation) + ": " + result.reason()};
+    return SplitResult{moved.vertex, std::move(*result)};
 }
 
 // Every weight strictly positive and finite: the new point lies in the open simplex.

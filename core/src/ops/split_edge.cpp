@@ -27,27 +27,7 @@ Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t) {
     const auto m = static_cast<VertexId>(mesh.vertex_count());
     const detail::MovedVertex moved{m, reference, deformed};
 
-    std::vector<Simplex> children;
-    std::vector<ElementId> parent_of_child;
-    std::vector<int> labels;
-    for (const ElementId parent : parents) {
-        const Simplex& tau = mesh.simplex(parent);
-        for (const VertexId replaced : ends) {
-            children.push_back(tau.substituted(replaced, m));
-            parent_of_child.push_back(parent);
-            labels.push_back(mesh.label(parent));
-        }
-    }
-    if (Refusal r = detail::refuse_bad_children(mesh, children, parent_of_child, moved, "split_edge");
-        !r.reason.empty())
-        return r;
-
-    // From here nothing can refuse on a valid mesh: the children only use faces of the parents
-    // and faces through the fresh vertex m, which no other element has (invariant 7.4 holds).
-    mesh.add_vertex(reference, deformed);
-    auto result = mesh.replace_elements(parents, children, labels);
-    if (!result.ok()) return Refusal{"split_edge: " + result.reason()};
-    return SplitResult{m, std::move(*result)};
+    return detail::split_parents(mesh, parents, ends, moved, "split_edge");
 }
 
 }  // namespace sxk

@@ -1,6 +1,8 @@
 // split_element (thesis §3.2 subdivision; connectivity edit by §7.3 replace-elements).
 #include "sxk/ops/split_element.hpp"
 
+#include <array>
+
 #include "ops/split_collapse_checks.hpp"
 
 namespace sxk {
@@ -24,20 +26,8 @@ Outcome<SplitResult> split_element(Mesh& mesh, ElementId t, std::span<const doub
     const auto m = static_cast<VertexId>(mesh.vertex_count());
     const detail::MovedVertex moved{m, reference, deformed};
 
-    std::vector<Simplex> children;
-    for (const VertexId replaced : tau.vertices()) children.push_back(tau.substituted(replaced, m));
-    const std::vector<ElementId> parent_of_child(children.size(), t);
-    if (Refusal r = detail::refuse_bad_children(mesh, children, parent_of_child, moved, "split_element");
-        !r.reason.empty())
-        return r;
-
-    // Nothing refuses past this point on a valid mesh: every new face contains the fresh m.
-    mesh.add_vertex(reference, deformed);
-    const std::vector<int> labels(children.size(), mesh.label(t));
-    const std::array<ElementId, 1> old{t};
-    auto result = mesh.replace_elements(old, children, labels);
-    if (!result.ok()) return Refusal{"split_element: " + result.reason()};
-    return SplitResult{m, std::move(*result)};
+    const std::array<ElementId, 1> parent{t};
+    return detail::split_parents(mesh, parent, tau.vertices(), moved, "split_element");
 }
 
 }  // namespace sxk

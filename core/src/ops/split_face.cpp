@@ -21,24 +21,7 @@ Outcome<SplitResult> split_face(Mesh& mesh, FaceId f, std::array<double, 3> weig
     const auto m = static_cast<VertexId>(mesh.vertex_count());
     const detail::MovedVertex moved{m, reference, deformed};
 
-    std::vector<Simplex> children;
-    std::vector<ElementId> parent_of_child;
-    std::vector<int> labels;
-    for (const ElementId parent : parents)
-        for (const VertexId replaced : sigma.vertices()) {
-            children.push_back(mesh.simplex(parent).substituted(replaced, m));
-            parent_of_child.push_back(parent);
-            labels.push_back(mesh.label(parent));
-        }
-    if (Refusal r = detail::refuse_bad_children(mesh, children, parent_of_child, moved, "split_face");
-        !r.reason.empty())
-        return r;
-
-    // Nothing refuses past this point on a valid mesh: every new face contains the fresh m.
-    mesh.add_vertex(reference, deformed);
-    auto result = mesh.replace_elements(parents, children, labels);
-    if (!result.ok()) return Refusal{"split_face: " + result.reason()};
-    return SplitResult{m, std::move(*result)};
+    return detail::split_parents(mesh, parents, sigma.vertices(), moved, "split_face");
 }
 
 }  // namespace sxk
