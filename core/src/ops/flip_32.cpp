@@ -12,13 +12,9 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
     const Simplex edge = mesh.face_simplex(entry).subn(j);
     const VertexId a = edge.vertex(0);
     const VertexId b = edge.vertex(1);
-    const std::vector<ElementId> ring = cycle_around(mesh, entry, j);
-    if (detail::ring_touches_boundary(mesh, ring, a, b))
-        return Refusal{"flip_32: edge " + to_text(Simplex(+1, {a, b})) +
-                       " is on the boundary"};
-    if (ring.size() != 3)
-        return Refusal{"flip_32: edge " + to_text(Simplex(+1, {a, b})) + " has degree " +
-                       std::to_string(ring.size()) + ", not 3"};
+    auto found = detail::interior_edge_ring(mesh, entry, j, 3, "flip_32");
+    if (!found) return found.refusal();
+    const std::vector<ElementId>& ring = *found;
 
     // tau = <ab, c, d> for two ring vertices c, d; e is the ring vertex not in tau.
     const Simplex tau = mesh.simplex(ring[0]);

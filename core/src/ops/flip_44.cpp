@@ -14,13 +14,9 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     const Simplex edge = mesh.face_simplex(entry).subn(j);
     const VertexId a = edge.vertex(0);
     const VertexId b = edge.vertex(1);
-    const std::vector<ElementId> ring = cycle_around(mesh, entry, j);
-    if (detail::ring_touches_boundary(mesh, ring, a, b))
-        return Refusal{"flip_44: edge " + to_text(Simplex(+1, {a, b})) +
-                       " is on the boundary"};
-    if (ring.size() != 4)
-        return Refusal{"flip_44: edge " + to_text(Simplex(+1, {a, b})) + " has degree " +
-                       std::to_string(ring.size()) + ", not 4"};
+    auto found = detail::interior_edge_ring(mesh, entry, j, 4, "flip_44");
+    if (!found) return found.refusal();
+    const std::vector<ElementId>& ring = *found;
 
     // v[k] = the vertex shared by ring[k] and ring[k+1] besides a and b (ring order).
     std::array<VertexId, 4> v{};

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "sxk/mesh.hpp"
 #include "sxk/ops/flip_options.hpp"
@@ -83,6 +84,24 @@ inline Refusal refuse_bad_edge_arguments(const Mesh& mesh, FaceId entry, int j,
         return {std::string(operation) + ": edge index " + std::to_string(j) +
                 " is not in 0..2"};
     return {};
+}
+
+// The ring of tetrahedra around the interior edge face_simplex(entry).subn(j), which must have
+// exactly `degree` of them (3 for flip_32, 4 for flip_44); a refusal otherwise.
+inline Outcome<std::vector<ElementId>> interior_edge_ring(const Mesh& mesh, FaceId entry, int j,
+                                                         std::size_t degree, const char* operation) {
+    const Simplex edge = mesh.face_simplex(entry).subn(j);
+    const VertexId a = edge.vertex(0);
+    const VertexId b = edge.vertex(1);
+    std::vector<ElementId> ring = cycle_around(mesh, entry, j);
+    if (ring_touches_boundary(mesh, ring, a, b))
+        return Refusal{std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) +
+                       " is on the boundary"};
+    if (ring.size() != degree)
+        return Refusal{std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) +
+                       " has degree " + std::to_string(ring.size()) + ", not " +
+                       std::to_string(degree)};
+    return ring;
 }
 
 }  // namespace sxk::detail
