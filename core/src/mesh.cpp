@@ -31,7 +31,8 @@ Mesh::Mesh(const Mesh& other)
       m_free_face(other.m_free_face),
       m_element_count(other.m_element_count),
       m_boundary(other.m_boundary),
-      m_face_labels(other.m_face_labels) {}
+      m_face_labels(other.m_face_labels),
+      m_attributes(other.m_attributes) {}
 
 Mesh& Mesh::operator=(const Mesh& other) {
     if (this != &other) {
@@ -52,6 +53,8 @@ VertexId Mesh::add_vertex(const Point& reference, const Point& deformed) {
     m_reference.push_back(reference);
     m_deformed.push_back(deformed);
     m_vertex_element.push_back(invalid_id);
+    for (VertexAttribute& a : m_attributes)
+        a.values.insert(a.values.end(), a.default_value.begin(), a.default_value.end());
     return static_cast<VertexId>(m_reference.size() - 1);
 }
 
@@ -59,6 +62,8 @@ void Mesh::reserve(std::size_t vertices, std::size_t elements) {
     m_reference.reserve(vertices);
     m_deformed.reserve(vertices);
     m_vertex_element.reserve(vertices);
+    for (VertexAttribute& a : m_attributes)
+        a.values.reserve(vertices * static_cast<std::size_t>(a.components));
     m_elements.reserve(elements);
     m_faces.reserve(elements * static_cast<std::size_t>(m_dimension + 1));
 }
@@ -153,7 +158,10 @@ void Mesh::remove_watcher(Watcher& watcher) {
 }
 
 std::size_t Mesh::memory_bytes() const {
-    return m_reference.capacity() * sizeof(Point) + m_deformed.capacity() * sizeof(Point) +
+    std::size_t attributes = m_attributes.capacity() * sizeof(VertexAttribute);
+    for (const VertexAttribute& a : m_attributes)
+        attributes += a.name.capacity() + (a.default_value.capacity() + a.values.capacity()) * sizeof(double);
+    return attributes + m_reference.capacity() * sizeof(Point) + m_deformed.capacity() * sizeof(Point) +
            m_vertex_element.capacity() * sizeof(ElementId) +
            m_elements.capacity() * sizeof(ElementRecord) + m_faces.capacity() * sizeof(FaceRecord) +
            m_boundary.memory_bytes();

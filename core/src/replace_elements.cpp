@@ -6,6 +6,8 @@
 // (so they never visit the boundary map), new elements take over reused faces, and the remaining
 // new faces are matched against the boundary map or put on it.
 #include <algorithm>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,9 +28,149 @@ struct NewFace {
     bool paired = false;
 };
 
-template <class T>
-bool sorted_contains(const std::vector<T>& sorted, const T& value) {
+template <class Sorted, class T>
+bool sorted_contains(const Sorted& sorted, const T& value) {
     return std::binary_search(sorted.begin(), sorted.end(), value);
+}
+
+// Scratch sizes: a flip or split touches a handful of elements; a vertex star in a 3D mesh has
+// some 20-30 elements (rarely above 100). Beyond these the lists move to the heap.
+constexpr std::size_t small_edit = 16;
+constexpr std::size_t star_inline = 256;
+
+// The stars of every vertex an edit touches, each walked ONCE (from the anchor, across faces
+// containing the vertex, as has_face_outside and star_pieces_after walk them) and used both for
+// the invariant 7.4 checks and for the star connectivity check. star(vertices[k]) before the
+// edit is elements[offsets[k] .. offsets[k+1]); pieces[k] is the number of face-connected
+// pieces it would have after the edit.
+//
+// Star pieces without sorting the whole star: two elements that stay and are mates across a
+// face containing v are joined as the walk meets them; only faces that lose their mate (to a
+// removed element or the boundary) and the faces of added elements are matched, by the
+// vertices other than v (one or two of them, packed into 64 bits), sign opposite.
+struct TouchedStars {
+    detail::SmallVector<VertexId, 32> vertices;
+    detail::SmallVector<std::uint32_t, 33> offsets;
+    detail::SmallVector<ElementId, star_inline> elements;
+    detail::SmallVector<std::uint32_t, 32> pieces;
+
+    std::span<const ElementId> star(VertexId v) const {
+        const auto k = static_cast<std::size_t>(
+            std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
+        return {elements.data() + offsets[k], offsets[k + 1] - offsets[k]};
+    }
+};
+
+struct OpenFace {
+    std::uint64_t key;  // the face's vertices other than v
+    int sign;
+    std::uint32_t node;
+};
+
+// Packs the vertices of tau other than v and tau.vertex(i) (in canonical order).
+std::uint64_t face_key(const Simplex& tau, int i, VertexId v) {
+    std::uint64_t key = 0;
+    for (int j = 0; j < tau.count(); ++j)
+        if (j != i && tau.vertex(j) != v) key = (key << 32) | tau.vertex(j);
+    return key;
+}
+
+int face_sign(const Simplex& tau, int i) { return (i & 1) ? -tau.sign() : tau.sign(); }
+
+// Walks star(v) of `mesh`, appends its elements to stars.elements and returns the number of
+// pieces it would have after removing `removed` (sorted) and adding `added`.
+std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId> removed,
+                        std::span<const Simplex> added, TouchedStars& stars,
+                        detail::SmallVector<std::uint32_t, star_inline>& parent,
+                        detail::SmallVector<OpenFace, star_inline>& open) {
+    auto& seen = stars.elements;
+    const std::size_t base = seen.size();
+    parent.clear();
+    open.clear();
+    std::uint32_t nodes = 0, unions = 0;
+    auto root = [&](std::uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    auto join = [&](std::uint32_t a, std::uint32_t b) {
+        a = root(a);
+        b = root(b);
+        if (a != b) {
+            parent[a] = b;
+            ++unions;
+        }
+    };
+    const int k = mesh.element_vertex_count();
+    if (mesh.vertex_element(v) != invalid_id) {
+        seen.push_back(mesh.vertex_element(v));
+        parent.push_back(0);
+        for (std::size_t next = base; next < seen.size(); ++next) {
+            const ElementId t = seen[next];
+            const auto local = static_cast<std::uint32_t>(next - base);
+            const bool stays = !sorted_contains(removed, t);
+            nodes += stays;
+            const Simplex& tau = mesh.simplex(t);
+            for (int i = 0; i < k; ++i) {
+                if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
+                const ElementId n = detail::neighbor_of(mesh, t, i);
+                std::uint32_t position = 0;
+                if (n != invalid_id) {
+                    const ElementId* found = std::find(seen.begin() + base, seen.end(), n);
+                    position = static_cast<std::uint32_t>(found - (seen.begin() + base));
+                    if (found == seen.end()) {
+                        seen.push_back(n);
+                        parent.push_back(position);
+                    }
+                }
+                if (!stays) continue;
+                if (n != invalid_id && !sorted_contains(removed, n))
+                    join(local, position);
+                else
+                    open.push_back({face_key(tau, i, v), face_sign(tau, i), local});
+            }
+        }
+    }
+    for (const Simplex& tau : added) {
+        if (!tau.contains(v)) continue;
+        const auto node = static_cast<std::uint32_t>(parent.size());
+        parent.push_back(node);
+        ++nodes;
+        for (int i = 0; i < k; ++i)
+            if (tau.vertex(i) != v) open.push_back({face_key(tau, i, v), face_sign(tau, i), node});
+    }
+    std::sort(open.begin(), open.end(),
+              [](const OpenFace& a, const OpenFace& b) { return a.key < b.key; });
+    for (std::size_t i = 1; i < open.size(); ++i)
+        if (open[i].key == open[i - 1].key && open[i].sign != open[i - 1].sign)
+            join(open[i].node, open[i - 1].node);
+    return nodes - unions;
+}
+
+// True when sigma (a face, or a whole element by its vertices in either orientation) is
+// represented by an element of `star` (the star of sigma.vertex(0)) that is not removed:
+// has_face_outside on a star walked once.
+bool exists_outside(const Mesh& mesh, const Simplex& sigma, std::span<const ElementId> star,
+                    std::span<const ElementId> removed) {
+    const bool whole = sigma.count() == mesh.element_vertex_count();
+    for (const ElementId t : star) {
+        const Simplex& tau = mesh.simplex(t);
+        if (whole) {
+            if (tau.same_vertices(sigma) && !sorted_contains(removed, t)) return true;
+            continue;
+        }
+        // tau has sigma's vertices and one more, `missing`: then sigma can only be tau.subv
+        VertexId missing = invalid_id;
+        int shared = 0;
+        for (const VertexId x : tau.vertices()) {
+            if (sigma.contains(x))
+                ++shared;
+            else
+                missing = x;
+        }
+        if (shared == sigma.count() && tau.subv(missing) == sigma && !sorted_contains(removed, t))
+            return true;
+    }
+    return false;
 }
 
 }  // namespace
@@ -60,6 +202,13 @@ bool Mesh::has_face_outside(const Simplex& sigma, std::span<const ElementId> exc
 Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId> old_elements,
                                                        std::span<const Simplex> new_simplexes,
                                                        std::span<const int> labels) {
+    return replace_elements_impl(old_elements, new_simplexes, labels, false);
+}
+
+Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const ElementId> old_elements,
+                                                            std::span<const Simplex> new_simplexes,
+                                                            std::span<const int> labels,
+                                                            bool proven) {
     const int k = m_dimension + 1;
     const std::size_t uk = static_cast<std::size_t>(k);
     const std::size_t m = new_simplexes.size();
@@ -68,7 +217,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
     for (std::size_t i = 0; i < old_elements.size(); ++i)
         if (!is_element(old_elements[i]))
             return Refusal{"element " + std::to_string(old_elements[i]) + " does not exist", i};
-    std::vector<ElementId> old_sorted(old_elements.begin(), old_elements.end());
+    detail::SmallVector<ElementId, small_edit> old_sorted;
+    for (ElementId t : old_elements) old_sorted.push_back(t);
     std::sort(old_sorted.begin(), old_sorted.end());
     if (auto d = std::adjacent_find(old_sorted.begin(), old_sorted.end()); d != old_sorted.end())
         return Refusal{"element " + std::to_string(*d) + " is listed twice"};
@@ -86,8 +236,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
                                j};
 
     // oldfacemap and newfacemap of the thesis, as sorted vectors (edits are small)
-    std::vector<std::pair<Simplex, FaceId>> old_faces;
-    old_faces.reserve(old_elements.size() * uk);
+    detail::SmallVector<std::pair<Simplex, FaceId>, 4 * small_edit> old_faces;
     for (ElementId t : old_elements)
         for (int j = 0; j < k; ++j)
             old_faces.emplace_back(m_elements[t].simplex.subn(j), m_elements[t].faces[static_cast<std::size_t>(j)]);
@@ -99,8 +248,10 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
         return (it != old_faces.end() && it->first == s) ? it->second : invalid_id;
     };
 
-    std::vector<NewFace> new_faces(m * uk);
-    std::vector<std::size_t> order(m * uk);
+    detail::SmallVector<NewFace, 4 * small_edit> new_faces;
+    detail::SmallVector<std::size_t, 4 * small_edit> order;
+    new_faces.resize(m * uk);
+    order.resize(m * uk);
     for (std::size_t i = 0; i < m; ++i)
         for (int j = 0; j < k; ++j) {
             const std::size_t index = i * uk + static_cast<std::size_t>(j);
@@ -119,7 +270,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
                                    [&](std::size_t a, const Simplex& b) { return new_faces[a].sigma < b; });
         return (it != order.end() && new_faces[*it].sigma == s) ? &new_faces[*it] : nullptr;
     };
-    std::vector<FaceId> reused_faces;
+    detail::SmallVector<FaceId, 4 * small_edit> reused_faces;
     for (NewFace& nf : new_faces) {
         nf.face = find_old(nf.sigma);
         nf.reused = nf.face != invalid_id;
@@ -127,10 +278,32 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
     }
     std::sort(reused_faces.begin(), reused_faces.end());
 
+    // The stars of all touched vertices, walked once each (see TouchedStars): the checks below
+    // are those of has_face_outside and refuse_pinched_stars, in the same order and with the
+    // same reasons, on these walks.
+    TouchedStars stars;
+    if (!proven) {
+        detail::SmallVector<VertexId, 64> touched;
+        for (ElementId t : old_elements)
+            for (VertexId v : m_elements[t].simplex.vertices()) touched.push_back(v);
+        for (const Simplex& tau : new_simplexes)
+            for (VertexId v : tau.vertices()) touched.push_back(v);
+        std::sort(touched.begin(), touched.end());
+        const VertexId* last = std::unique(touched.begin(), touched.end());
+        detail::SmallVector<std::uint32_t, star_inline> parent;
+        detail::SmallVector<OpenFace, star_inline> open;
+        stars.offsets.push_back(0);
+        for (const VertexId* v = touched.begin(); v != last; ++v) {
+            stars.vertices.push_back(*v);
+            stars.pieces.push_back(walk_star(*this, *v, old_sorted, new_simplexes, stars, parent, open));
+            stars.offsets.push_back(static_cast<std::uint32_t>(stars.elements.size()));
+        }
+    }
+
     // A face that is not reused must not exist in an element that stays (invariant 7.4); nor
     // may a new element have the vertices of one that stays.
-    for (std::size_t i = 0; i < m; ++i) {
-        if (has_face_outside(new_simplexes[i], old_sorted))
+    for (std::size_t i = 0; i < m && !proven; ++i) {
+        if (exists_outside(*this, new_simplexes[i], stars.star(new_simplexes[i].vertex(0)), old_sorted))
             return Refusal{"element " + to_text(new_simplexes[i]) +
                                " already exists as an element that stays (invariant 7.4)",
                            i};
@@ -140,7 +313,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
             const FaceId b = m_boundary.find(nf.sigma);
             const bool on_boundary = b != invalid_id && face_simplex(b) == nf.sigma &&
                                      !sorted_contains(old_sorted, m_faces[b].element);
-            if (on_boundary || has_face_outside(nf.sigma, old_sorted))
+            if (on_boundary ||
+                exists_outside(*this, nf.sigma, stars.star(nf.sigma.vertex(0)), old_sorted))
                 return Refusal{"face " + to_text(nf.sigma) +
                                    " already exists in an element that stays (invariant 7.4)",
                                i};
@@ -148,40 +322,54 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
     }
 
     // Every vertex the edit touches must keep a face-connected star.
-    {
-        std::vector<VertexId> touched;
-        for (ElementId t : old_elements)
-            for (VertexId v : m_elements[t].simplex.vertices()) touched.push_back(v);
-        for (const Simplex& tau : new_simplexes)
-            for (VertexId v : tau.vertices()) touched.push_back(v);
-        if (Refusal pinch = refuse_pinched_stars(std::move(touched), old_sorted, new_simplexes);
-            !pinch.reason.empty())
-            return pinch;
-    }
+    for (std::size_t i = 0; i < stars.vertices.size(); ++i)
+        if (stars.pieces[i] > 1)
+            return Refusal{"star connectivity: vertex " + std::to_string(stars.vertices[i]) +
+                           " would be pinched (its star would fall into " +
+                           std::to_string(stars.pieces[i]) + " pieces)"};
 
     // ---- the change -------------------------------------------------------------------------
-    m_elements.reserve(m_elements.size() + m);
-    m_faces.reserve(m_faces.size() + m * uk);
+    // Room for the worst case before anything changes, growing geometrically: reserving
+    // exactly size + m made every edit that adds elements copy the whole pool (a split of a
+    // 180k-triangle surface took milliseconds).
+    auto make_room = [](auto& pool, std::size_t extra) {
+        if (pool.size() + extra > pool.capacity())
+            pool.reserve(std::max(pool.size() + extra, 2 * pool.capacity()));
+    };
+    make_room(m_elements, m);
+    make_room(m_faces, m * uk);
     m_boundary.reserve(m_boundary.size() + m * uk);
     detail::EditLog log(!m_watchers.empty());
     const int default_label = old_elements.empty() ? 0 : m_elements[old_elements[0]].label;
 
-    // vertices whose anchor may die, and surviving elements next to the old ones
-    std::vector<VertexId> old_vertices;
-    std::vector<ElementId> neighbours;
-    for (ElementId t : old_elements) {
+    // vertices whose anchor may die, and surviving elements next to the old ones; the
+    // neighbours are only needed for a vertex that is in no new element (repair_anchors gives
+    // every vertex of a new element an anchor first), so edits that keep all their vertices
+    // (flips, splits) skip those lookups
+    detail::SmallVector<VertexId, 4 * small_edit> old_vertices;
+    detail::SmallVector<ElementId, 4 * small_edit> neighbours;
+    bool every_old_vertex_stays = true;
+    for (ElementId t : old_elements)
         for (int j = 0; j < k; ++j) {
-            old_vertices.push_back(m_elements[t].simplex.vertex(j));
-            const ElementId n = neighbor(t, j);
-            if (n != invalid_id && !sorted_contains(old_sorted, n)) neighbours.push_back(n);
+            const VertexId v = m_elements[t].simplex.vertex(j);
+            old_vertices.push_back(v);
+            if (every_old_vertex_stays &&
+                std::none_of(new_simplexes.begin(), new_simplexes.end(),
+                             [&](const Simplex& tau) { return tau.contains(v); }))
+                every_old_vertex_stays = false;
         }
-    }
+    if (!every_old_vertex_stays)
+        for (ElementId t : old_elements)
+            for (int j = 0; j < k; ++j) {
+                const ElementId n = neighbor(t, j);
+                if (n != invalid_id && !sorted_contains(old_sorted, n)) neighbours.push_back(n);
+            }
 
     for (FaceId f : reused_faces) log.touch(*this, f);
     auto discarded = [&](FaceId f) {
         return sorted_contains(old_sorted, m_faces[f].element) && !sorted_contains(reused_faces, f);
     };
-    std::vector<FaceId> discard;
+    detail::SmallVector<FaceId, 4 * small_edit> discard;
     for (const auto& [sigma, g] : old_faces)
         if (!sorted_contains(reused_faces, g)) discard.push_back(g);
     for (FaceId g : discard) {

@@ -110,6 +110,20 @@ Outcome<Done> Mesh::validate() const {
                                m_faces[all[i].second].element};
     }
 
+    // face labels name faces of the mesh: a label keyed by a vertex set that no face has would
+    // be written into files that readers (ours included) refuse
+    if (!m_face_labels.empty()) {
+        std::vector<Simplex> keys;
+        keys.reserve(m_element_count * uk);
+        for (FaceId f = 0; f < m_faces.size(); ++f)
+            if (is_face(f)) keys.emplace_back(+1, face_simplex(f).vertices());
+        std::sort(keys.begin(), keys.end());
+        for (const auto& [key, label] : m_face_labels)
+            if (!std::binary_search(keys.begin(), keys.end(), Simplex(+1, key.vertices())))
+                return Refusal{"face label: label " + std::to_string(label) + " names " +
+                               to_text(key) + ", which is not a face of the mesh"};
+    }
+
     // boundary map (7.5): exactly the faces without mate, under their own simplex
     if (m_boundary.size() != mateless)
         return Refusal{"invariant 7.5 (boundary map): it holds " + std::to_string(m_boundary.size()) +

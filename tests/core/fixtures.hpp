@@ -104,6 +104,7 @@ inline void expect_same_state(const Mesh& a, const Mesh& b) {
         EXPECT_EQ(a.mate(f), b.mate(f));
     }
     EXPECT_EQ(a.boundary_faces(), b.boundary_faces());
+    EXPECT_EQ(a.face_labels(), b.face_labels());
 }
 
 }  // namespace sxk::test

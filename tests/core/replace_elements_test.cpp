@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <array>
+#include <initializer_list>
+#include <span>
 #include <sstream>
 
 #include "fixtures.hpp"
@@ -194,6 +197,82 @@ TEST(ReplaceElements, RefusesBadArguments) {
     }
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
+}
+
+// The element with exactly these vertices (either orientation), or invalid_id.
+ElementId element_with(const Mesh& mesh, std::initializer_list<VertexId> vertices) {
+    const Simplex wanted(+1, vertices);
+    for (ElementId t : elements(mesh))
+        if (mesh.simplex(t).same_vertices(wanted)) return t;
+    return invalid_id;
+}
+
+// planar_grid(2): the six triangles around the centre 4, in ring order 014 154 458 487 347 043.
+// Removing 014 and 458 leaves 154 on its own: star(4) would fall into two pieces.
+//
+//   6 --- 7 --- 8
+//   |   / |   / |
+//   | /   | /   |
+//   3 --- 4 --- 5
+//   |   / |   / |
+//   | /   | /   |
+//   0 --- 1 --- 2
+TEST(ReplaceElements, RefusesToPinchAVertexStarInTheGrid) {
+    Mesh mesh = test::planar_grid(2);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const Mesh before = mesh;
+    const std::array<ElementId, 2> old{element_with(mesh, {0, 1, 4}), element_with(mesh, {4, 5, 8})};
+    ASSERT_NE(old[0], invalid_id);
+    ASSERT_NE(old[1], invalid_id);
+    const auto refused = mesh.replace_elements(old, std::span<const Simplex>{});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.reason(), "star connectivity: vertex 4 would be pinched (its star would fall into 2 pieces)");
+    expect_same_state(mesh, before);
+    EXPECT_EQ(watcher.removed + watcher.added, 0);
+    EXPECT_TRUE(mesh.validate().ok());
+
+    // Replacing 014 and 154 by 015 and 054 (the other diagonal of 0-1-5-4) keeps every star in
+    // one piece through the new triangles: 4 keeps 054 (mates 4-5 of 458 and 0-4 of 043), 5 gets
+    // 015 (mate 1-5 of 125) and 054.
+    const std::array<ElementId, 2> pair{element_with(mesh, {0, 1, 4}), element_with(mesh, {1, 5, 4})};
+    const std::array<Simplex, 2> flipped{Simplex(+1, {0, 1, 5}), Simplex(+1, {0, 5, 4})};
+    const auto replaced = mesh.replace_elements(pair, flipped);
+    ASSERT_TRUE(replaced.ok()) << replaced.reason();
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_EQ(mesh.element_count(), 8u);
+
+    // without 015 the triangle 125 would hang at 5 by a vertex only: refused
+    const Mesh flipped_state = mesh;
+    const std::array<ElementId, 1> lone{element_with(mesh, {0, 1, 5})};
+    const auto pinched = mesh.replace_elements(lone, std::span<const Simplex>{});
+    ASSERT_FALSE(pinched.ok());
+    EXPECT_EQ(pinched.reason(), "star connectivity: vertex 5 would be pinched (its star would fall into 2 pieces)");
+    expect_same_state(mesh, flipped_state);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
+// kuhn_cube(1): six tetrahedra in a ring around the diagonal 0-7. Taking out two that are not
+// neighbours, {0,1,3,7} and {0,2,6,7}, splits the ring: the stars of 0 (and 7) fall into two
+// pieces (the 3D case: faces keyed by two vertices besides the centre).
+TEST(ReplaceElements, RefusesToPinchAVertexStarInTheKuhnCube) {
+    Mesh mesh = kuhn_cube(1);
+    const Mesh before = mesh;
+    const std::array<ElementId, 2> old{element_with(mesh, {0, 1, 3, 7}), element_with(mesh, {0, 2, 6, 7})};
+    ASSERT_NE(old[0], invalid_id);
+    ASSERT_NE(old[1], invalid_id);
+    const auto refused = mesh.replace_elements(old, std::span<const Simplex>{});
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.reason(), "star connectivity: vertex 0 would be pinched (its star would fall into 2 pieces)");
+    expect_same_state(mesh, before);
+    EXPECT_TRUE(mesh.validate().ok());
+
+    // two neighbours in the ring ({0,1,3,7} and {0,2,3,7} share the face 0-3-7): no pinch
+    const std::array<ElementId, 2> neighbours{element_with(mesh, {0, 1, 3, 7}), element_with(mesh, {0, 2, 3, 7})};
+    const auto removed = mesh.replace_elements(neighbours, std::span<const Simplex>{});
+    ASSERT_TRUE(removed.ok()) << removed.reason();
+    EXPECT_EQ(mesh.element_count(), 4u);
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
 }
 
 }  // namespace

@@ -39,7 +39,9 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "sxk/config.hpp"
@@ -52,6 +54,9 @@
 namespace sxk {
 
 using Point = std::array<double, 3>;
+
+// Identifies a vertex attribute of one mesh (Mesh::add_vertex_attribute).
+using AttributeId = std::uint32_t;
 
 // One element's vertex substitution pi for change_elements: vertex j of the element's current
 // canonical simplex becomes new_vertices[j].
@@ -72,7 +77,7 @@ public:
     // least the topological one. Anything else throws std::invalid_argument.
     Mesh(int topological_dimension, int ambient_dimension);
 
-    // Copies connectivity, geometry and labels; never watchers (a watcher watches one mesh).
+    // Copies connectivity, geometry, labels and vertex attributes; never watchers (a watcher watches one mesh).
     Mesh(const Mesh& other);
     Mesh& operator=(const Mesh& other);
     Mesh(Mesh&& other) noexcept;
@@ -97,6 +102,64 @@ public:
     std::span<const Point> deformed_positions() const { return m_deformed; }
     // Some element containing v, or invalid_id for a vertex in no element.
     ElementId vertex_element(VertexId v) const { return m_vertex_element[v]; }
+    // sum weights[i] * position(vertices[i]) in both position sets, summed in input order (the
+    // first term is weights[0] * p[0], so one vertex with weight 1 is copied bit for bit).
+    // Sizes must match and every vertex exist; the splits use this to place their new vertex.
+    std::pair<Point, Point> interpolated_positions(std::span<const VertexId> vertices,
+                                                   std::span<const double> weights) const;
+    // Adds a vertex at interpolated_positions(parents, weights) whose every vertex attribute is
+    // the same combination of the parents' values (components summed in the same order). The
+    // splits use it, so attributes follow subdivision. Refuses (nothing added) when the spans
+    // are empty or of different sizes or a parent is not a vertex.
+    Outcome<VertexId> add_interpolated_vertex(std::span<const VertexId> parents,
+                                              std::span<const double> weights);
+    // Removes the vertex vertex_count()-1 and its attribute values: the undo of add_vertex for
+    // an edit that was refused after adding its vertex. Refuses (nothing changes) when the mesh
+    // has no vertex or the last vertex is in an element (its anchor is set).
+    Outcome<Done> remove_last_vertex();
+
+    // ---- vertex attributes --------------------------------------------------------------------
+    // Named per-vertex fields of `components` doubles each (temperature: 1, velocity: 3). Every
+    // vertex has a value; add_vertex gives new vertices the attribute's default value,
+    // add_interpolated_vertex (the splits) interpolates, and the operations document what their
+    // new or moved vertices get (docs/kernel.md). Ids stay valid until the attribute is removed
+    // and are not reused; copies of the mesh copy the attributes with their ids.
+    //
+    // Refuses (nothing changes) when the name is empty or already used, components < 1, or
+    // `default_value` is neither empty (all zeros) nor of size `components`.
+    Outcome<AttributeId> add_vertex_attribute(std::string name, int components,
+                                              std::span<const double> default_value = {});
+    // The id of the live attribute called `name`, or invalid_id.
+    AttributeId find_vertex_attribute(std::string_view name) const;
+    // Refuses when `attribute` is not a live attribute.
+    Outcome<Done> remove_vertex_attribute(AttributeId attribute);
+    bool is_vertex_attribute(AttributeId attribute) const {
+        return attribute < m_attributes.size() && m_attributes[attribute].components > 0;
+    }
+    // The live attributes, by increasing id.
+    std::vector<AttributeId> vertex_attributes() const;
+    // For a live attribute:
+    const std::string& vertex_attribute_name(AttributeId attribute) const {
+        return m_attributes[attribute].name;
+    }
+    int vertex_attribute_components(AttributeId attribute) const {
+        return m_attributes[attribute].components;
+    }
+    std::span<const double> vertex_attribute_default(AttributeId attribute) const {
+        return m_attributes[attribute].default_value;
+    }
+    // The value of a live attribute at vertex v (v < vertex_count()): `components` doubles,
+    // writable in place. The span is invalidated by adding or removing vertices.
+    std::span<double> vertex_attribute(AttributeId attribute, VertexId v) {
+        VertexAttribute& a = m_attributes[attribute];
+        const auto n = static_cast<std::size_t>(a.components);
+        return {a.values.data() + v * n, n};
+    }
+    std::span<const double> vertex_attribute(AttributeId attribute, VertexId v) const {
+        const VertexAttribute& a = m_attributes[attribute];
+        const auto n = static_cast<std::size_t>(a.components);
+        return {a.values.data() + v * n, n};
+    }
 
     // ---- elements -----------------------------------------------------------------------------
     std::size_t element_count() const { return m_element_count; }
@@ -198,7 +261,7 @@ public:
     FaceLabels& face_labels() { return m_face_labels; }
     const FaceLabels& face_labels() const { return m_face_labels; }
 
-    // Bytes held by the connectivity and geometry arrays (capacity, not size).
+    // Bytes held by the connectivity, geometry and vertex attribute arrays (capacity, not size).
     std::size_t memory_bytes() const;
 
 private:
@@ -211,8 +274,24 @@ private:
         ElementId element = invalid_id;  // invalid_id: free; then mate is the next free id
         FaceId mate = invalid_id;
     };
+    // One vertex attribute: values of vertex v at [v * components, (v+1) * components).
+    // components == 0 marks a removed attribute (its id is not reused).
+    struct VertexAttribute {
+        std::string name;
+        int components = 0;
+        std::vector<double> default_value;
+        std::vector<double> values;
+    };
 
     friend class EditContext;
+    // core/src/mesh_checks.hpp: the operations' door to replace_elements_impl(..., true).
+    friend class ProvenEdit;
+    // replace_elements' body. proven == true skips the checks that walk vertex stars (a new
+    // face or element already in an element that stays, invariant 7.4; pinched stars): only
+    // for operations that proved them from their own checks (ProvenEdit documents how).
+    Outcome<std::vector<ElementId>> replace_elements_impl(std::span<const ElementId> old_elements,
+                                                          std::span<const Simplex> new_simplexes,
+                                                          std::span<const int> labels, bool proven);
 
     ElementId allocate_element();
     void free_element(ElementId t);
@@ -248,6 +327,7 @@ private:
     std::size_t m_element_count = 0;
     detail::BoundaryMap m_boundary;
     FaceLabels m_face_labels;
+    std::vector<VertexAttribute> m_attributes;
     std::vector<Watcher*> m_watchers;
 };
 

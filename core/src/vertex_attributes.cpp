@@ -1,0 +1,116 @@
+// Vertex attributes (named per-vertex fields that follow the edits) and the vertex primitives
+// the operations build on: interpolated vertices for the splits, removal of the last vertex to
+// roll back an edit refused after adding it.
+#include <algorithm>
+#include <string>
+
+#include "sxk/mesh.hpp"
+
+namespace sxk {
+
+std::pair<Point, Point> Mesh::interpolated_positions(std::span<const VertexId> vertices,
+                                                     std::span<const double> weights) const {
+    Point reference{0, 0, 0}, deformed{0, 0, 0};
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            // the first term is assigned, not added to 0, so that -0.0 survives a copy
+            const double r = weights[i] * m_reference[vertices[i]][k];
+            const double d = weights[i] * m_deformed[vertices[i]][k];
+            reference[k] = i == 0 ? r : reference[k] + r;
+            deformed[k] = i == 0 ? d : deformed[k] + d;
+        }
+    return {reference, deformed};
+}
+
+Outcome<VertexId> Mesh::add_interpolated_vertex(std::span<const VertexId> parents,
+                                                std::span<const double> weights) {
+    if (parents.empty() || parents.size() != weights.size())
+        return Refusal{"add_interpolated_vertex: " + std::to_string(parents.size()) +
+                       " parents but " + std::to_string(weights.size()) + " weights"};
+    for (std::size_t i = 0; i < parents.size(); ++i)
+        if (parents[i] >= vertex_count())
+            return Refusal{"add_interpolated_vertex: parent " + std::to_string(parents[i]) +
+                               " is not a vertex",
+                           i};
+    const auto [reference, deformed] = interpolated_positions(parents, weights);
+    m_reference.push_back(reference);
+    m_deformed.push_back(deformed);
+    m_vertex_element.push_back(invalid_id);
+    for (VertexAttribute& a : m_attributes) {
+        if (a.components == 0) continue;
+        const auto n = static_cast<std::size_t>(a.components);
+        // values of the new vertex are computed before appending (the vector may move)
+        std::vector<double> value(n, 0.0);
+        for (std::size_t i = 0; i < parents.size(); ++i)
+            for (std::size_t c = 0; c < n; ++c) {
+                const double term = weights[i] * a.values[parents[i] * n + c];
+                value[c] = i == 0 ? term : value[c] + term;
+            }
+        a.values.insert(a.values.end(), value.begin(), value.end());
+    }
+    return static_cast<VertexId>(m_reference.size() - 1);
+}
+
+Outcome<Done> Mesh::remove_last_vertex() {
+    if (m_reference.empty()) return Refusal{"remove_last_vertex: the mesh has no vertex"};
+    const auto last = static_cast<VertexId>(m_reference.size() - 1);
+    if (m_vertex_element[last] != invalid_id)
+        return Refusal{"remove_last_vertex: vertex " + std::to_string(last) + " is in element " +
+                       std::to_string(m_vertex_element[last])};
+    m_reference.pop_back();
+    m_deformed.pop_back();
+    m_vertex_element.pop_back();
+    for (VertexAttribute& a : m_attributes)
+        a.values.resize(a.values.size() - static_cast<std::size_t>(a.components));
+    return Done{};
+}
+
+Outcome<AttributeId> Mesh::add_vertex_attribute(std::string name, int components,
+                                                std::span<const double> default_value) {
+    if (name.empty()) return Refusal{"add_vertex_attribute: the name is empty"};
+    if (find_vertex_attribute(name) != invalid_id)
+        return Refusal{"add_vertex_attribute: an attribute called \"" + name + "\" exists"};
+    if (components < 1)
+        return Refusal{"add_vertex_attribute: \"" + name + "\" needs at least one component, not " +
+                       std::to_string(components)};
+    const auto n = static_cast<std::size_t>(components);
+    if (!default_value.empty() && default_value.size() != n)
+        return Refusal{"add_vertex_attribute: \"" + name + "\" has " + std::to_string(n) +
+                       " components but a default value of " + std::to_string(default_value.size())};
+    VertexAttribute attribute;
+    attribute.name = std::move(name);
+    attribute.components = components;
+    attribute.default_value.assign(n, 0.0);
+    std::copy(default_value.begin(), default_value.end(), attribute.default_value.begin());
+    attribute.values.reserve(vertex_count() * n);
+    for (std::size_t v = 0; v < vertex_count(); ++v)
+        attribute.values.insert(attribute.values.end(), attribute.default_value.begin(),
+                                attribute.default_value.end());
+    m_attributes.push_back(std::move(attribute));
+    return static_cast<AttributeId>(m_attributes.size() - 1);
+}
+
+AttributeId Mesh::find_vertex_attribute(std::string_view name) const {
+    for (std::size_t i = 0; i < m_attributes.size(); ++i)
+        if (m_attributes[i].components > 0 && m_attributes[i].name == name)
+            return static_cast<AttributeId>(i);
+    return invalid_id;
+}
+
+Outcome<Done> Mesh::remove_vertex_attribute(AttributeId attribute) {
+    if (!is_vertex_attribute(attribute))
+        return Refusal{"remove_vertex_attribute: " + std::to_string(attribute) +
+                       " is not a vertex attribute"};
+    // the slot stays, empty, so that other ids keep their meaning
+    m_attributes[attribute] = VertexAttribute{};
+    return Done{};
+}
+
+std::vector<AttributeId> Mesh::vertex_attributes() const {
+    std::vector<AttributeId> live;
+    for (std::size_t i = 0; i < m_attributes.size(); ++i)
+        if (m_attributes[i].components > 0) live.push_back(static_cast<AttributeId>(i));
+    return live;
+}
+
+}  // namespace sxk
