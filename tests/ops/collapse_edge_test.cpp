@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <map>
+#include <vector>
 #include <cstdlib>
 #include <iostream>
 #include <random>
@@ -277,5 +280,67 @@ TEST(CollapseEdge, RandomSplitsAndCollapsesOnAKuhnCube) {
     random_splits_and_collapses(test::kuhn_cube(3), 2000);
 }
 
+
+// Attributes under collapse: the plain collapse leaves the survivor's values; the collapse to
+// the midpoint of the edge averages them (s = 1/2 along the edge), and to a point a quarter
+// of the way from `to` takes 3/4 of `to` and 1/4 of `from`. Labels of the re-attached
+// triangles are their own (two materials: left column 1, the rest 2).
+TEST(CollapseEdge, VertexAttributesFollowTheSurvivor) {
+    Mesh mesh = test::planar_grid(3);  // vertex id = 4 j + i
+    for (ElementId t : elements(mesh))
+        mesh.set_label(t, mesh.simplex(t).contains(0) || mesh.simplex(t).contains(4) ? 1 : 2);
+    const AttributeId temperature = *mesh.add_vertex_attribute("temperature", 1);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) mesh.vertex_attribute(temperature, v)[0] = 100.0 + v;
+    std::map<std::vector<VertexId>, int> labels_after;  // star(5) without 6, with 5 -> 6
+    for (ElementId t : elements(mesh))
+        if (mesh.simplex(t).contains(5) && !mesh.simplex(t).contains(6)) {
+            std::vector<VertexId> key;
+            for (VertexId v : mesh.simplex(t).vertices()) key.push_back(v == 5 ? 6 : v);
+            std::sort(key.begin(), key.end());
+            labels_after[key] = mesh.label(t);
+        }
+
+    Mesh plain = mesh;
+    ASSERT_TRUE(collapse_edge(plain, 5, 6).ok());
+    ASSERT_TRUE(plain.validate().ok());
+    EXPECT_EQ(plain.vertex_attribute(temperature, 6)[0], 106.0);
+    EXPECT_EQ(plain.vertex_attribute(temperature, 5)[0], 105.0);
+
+    Mesh midpoint = mesh;
+    ASSERT_TRUE(collapse_edge(midpoint, 5, 6, {1.5, 1, 0}, {1.5, 1, 0}).ok());
+    ASSERT_TRUE(midpoint.validate().ok()) << midpoint.validate().reason();
+    EXPECT_EQ(midpoint.vertex_attribute(temperature, 6)[0], 105.5);
+    for (ElementId t : elements(midpoint)) {
+        std::vector<VertexId> key(midpoint.simplex(t).vertices().begin(), midpoint.simplex(t).vertices().end());
+        std::sort(key.begin(), key.end());
+        if (labels_after.count(key)) {
+            EXPECT_EQ(midpoint.label(t), labels_after[key]);
+        }
+    }
+
+    Mesh quarter = mesh;
+    ASSERT_TRUE(collapse_edge(quarter, 5, 6, {1.75, 1, 0}, {1.75, 1, 0}).ok());
+    EXPECT_EQ(quarter.vertex_attribute(temperature, 6)[0], 0.75 * 106 + 0.25 * 105);
+    ASSERT_TRUE(quarter.validate().ok());
+
+    // a refused collapse to a point changes no attribute either
+    Mesh refused = mesh;
+    ASSERT_FALSE(collapse_edge(refused, 5, 6, {5, 5, 0}, {5, 5, 0}).ok());
+    EXPECT_EQ(refused.vertex_attribute(temperature, 6)[0], 106.0);
+    expect_same_state(refused, mesh);
+}
+
+// Face labels under collapse, planar_grid(2) (vertex id = 3 j + i): 1 slides onto 0 along the
+// bottom side. The labelled edge 0-1 vanishes with its label, the labelled 1-2 becomes 0-2.
+TEST(CollapseEdge, FaceLabelsFollowTheSurvivor) {
+    Mesh mesh = test::planar_grid(2);
+    mesh.face_labels()[Simplex(+1, {0, 1})] = 3;
+    mesh.face_labels()[Simplex(+1, {1, 2})] = 4;
+    mesh.face_labels()[Simplex(+1, {0, 3})] = 5;
+    const auto result = collapse_edge(mesh, 1, 0);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_EQ(mesh.face_labels(), (FaceLabels{{Simplex(+1, {0, 2}), 4}, {Simplex(+1, {0, 3}), 5}}));
+}
 }  // namespace
 }  // namespace sxk

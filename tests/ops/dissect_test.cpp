@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <set>
 #include <vector>
 
@@ -164,5 +166,55 @@ TEST(Dissect, RefusesAnUnknownVertex) {
     expect_same_state(mesh, before);
 }
 
+
+// The copies made by dissect take ALL of their original's data: both positions and every
+// vertex attribute, bit for bit; element labels (two materials) do not change.
+TEST(Dissect, CopiesCarryEveryAttributeAndLabelsStay) {
+    Mesh mesh = test::unit_square();
+    mesh.set_label(0, 7);
+    mesh.set_label(1, 9);
+    const AttributeId velocity = *mesh.add_vertex_attribute("velocity", 3);
+    const AttributeId temperature = *mesh.add_vertex_attribute("temperature", 1);
+    for (VertexId v = 0; v < 4; ++v) {
+        for (std::size_t k = 0; k < 3; ++k) mesh.vertex_attribute(velocity, v)[k] = 0.1 * v + 0.01 * static_cast<double>(k);
+        mesh.vertex_attribute(temperature, v)[0] = -0.0 - 3.0 * v;
+    }
+    mesh.set_deformed(2, {1.5, 1.25, 0});
+    const std::vector<Simplex> cut{Simplex(+1, {2, 0})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    ASSERT_EQ(result->new_vertices.size(), 2u);
+    for (const auto& [original, copy] : result->new_vertices) {
+        EXPECT_EQ(mesh.deformed(copy), mesh.deformed(original));
+        for (const AttributeId a : {velocity, temperature}) {
+            const auto from = mesh.vertex_attribute(a, original);
+            const auto to = mesh.vertex_attribute(a, copy);
+            ASSERT_EQ(from.size(), to.size());
+            for (std::size_t k = 0; k < from.size(); ++k)
+                EXPECT_EQ(std::bit_cast<std::uint64_t>(to[k]), std::bit_cast<std::uint64_t>(from[k]));
+        }
+    }
+    EXPECT_EQ(mesh.label(0), 7);
+    EXPECT_EQ(mesh.label(1), 9);
+}
+
+// Face labels under dissect: cutting the unit square along its labelled diagonal 0-2 labels
+// both boundary edges it becomes (0-2 and its copy 4-5); B = <0,2,3> gets the copies, so the
+// label on its edge 2-3 moves to 5-3, and the label on A's 1-2 stays.
+TEST(Dissect, FaceLabelsFollowTheCopies) {
+    Mesh mesh = test::unit_square();
+    mesh.face_labels()[Simplex(+1, {0, 2})] = 8;
+    mesh.face_labels()[Simplex(+1, {2, 3})] = 9;
+    mesh.face_labels()[Simplex(+1, {1, 2})] = 7;
+    const std::vector<Simplex> cut{Simplex(+1, {0, 2})};
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    // element 0 = A keeps 0 and 2; B gets the copies 4 (of 0) and 5 (of 2)
+    EXPECT_EQ(mesh.simplex(1).vertices()[0], 3u);
+    EXPECT_EQ(mesh.face_labels(), (FaceLabels{{Simplex(+1, {0, 2}), 8}, {Simplex(+1, {4, 5}), 8},
+                                              {Simplex(+1, {3, 5}), 9}, {Simplex(+1, {1, 2}), 7}}));
+}
 }  // namespace
 }  // namespace sxk

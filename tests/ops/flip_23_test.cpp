@@ -139,6 +139,43 @@ TEST(Flip23, RefusesAnExistingEdge) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+// t0 and t1 of different materials: the 2-3 flip would move the interface triangle 1,2,3.
+TEST(Flip23, RefusesAMaterialInterface) {
+    Mesh mesh = test::two_tets();
+    mesh.set_label(1, 5);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const Mesh before = mesh;
+    const auto result = flip_23(mesh, test::shared_face(mesh));
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.reason(), "flip_23: elements have different labels (a material interface)");
+    expect_same_state(mesh, before);
+    EXPECT_EQ(watcher.removed + watcher.added, 0);
+    ASSERT_TRUE(mesh.validate().ok());
+
+    mesh.set_label(0, 5);
+    const auto three = flip_23(mesh, test::shared_face(mesh));
+    ASSERT_TRUE(three.ok()) << three.reason();
+    for (ElementId t : *three) EXPECT_EQ(mesh.label(t), 5);
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
+// The shared triangle carries a face label: the 2-3 flip would remove it, so it is refused.
+TEST(Flip23, RefusesALabelledFace) {
+    Mesh mesh = test::two_tets();
+    const Simplex shared = mesh.face_simplex(test::shared_face(mesh));
+    mesh.face_labels()[Simplex(+1, shared.vertices())] = 4;
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    const Mesh before = mesh;
+    const auto result = flip_23(mesh, test::shared_face(mesh));
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.reason(), "flip_23: face " + to_text(Simplex(+1, shared.vertices())) +
+                                   " carries label 4 (a constraint: an interface or a boundary "
+                                   "patch)");
+    expect_same_state(mesh, before);
+    ASSERT_TRUE(mesh.validate().ok());
+}
+
 TEST(Flip23, RefusesATriangleMesh) {
     Mesh mesh = test::unit_square();
     const Mesh before = mesh;
@@ -158,6 +195,9 @@ TEST(Flip23, RandomTwoThreeAndThreeTwoFlipsOnAJitteredKuhnCube) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937_64 random(seed);
     Mesh mesh = test::kuhn_cube(3);
+    // kuhn_cube labels each tetrahedron by its type; one material here, or every flip would
+    // cross a material interface and be refused
+    for (ElementId t : elements(mesh)) mesh.set_label(t, 0);
     // Both positions jittered independently (the reference one less), so exact grid
     // degeneracies do not refuse every flip and the two position sets disagree on convexity.
     std::uniform_real_distribution<double> small(-0.08, 0.08), large(-0.15, 0.15);

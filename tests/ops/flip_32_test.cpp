@@ -98,6 +98,31 @@ TEST(Flip32, RefusesAnExistingTriangle) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+// One of the three tetrahedra around 0-4 of another material: removing the edge would move
+// the interface.
+TEST(Flip32, RefusesAMaterialInterface) {
+    Mesh mesh = test::two_tets();
+    const auto three = flip_23(mesh, test::shared_face(mesh));
+    ASSERT_TRUE(three.ok()) << three.reason();
+    mesh.set_label((*three)[2], 3);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const Mesh before = mesh;
+    const auto [entry, j] = test::edge_entry(mesh, 0, 4);
+    const auto result = flip_32(mesh, entry, j);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.reason(), "flip_32: elements have different labels (a material interface)");
+    expect_same_state(mesh, before);
+    EXPECT_EQ(watcher.removed + watcher.added, 0);
+    ASSERT_TRUE(mesh.validate().ok());
+
+    for (ElementId t : *three) mesh.set_label(t, 3);
+    const auto two = flip_32(mesh, entry, j);
+    ASSERT_TRUE(two.ok()) << two.reason();
+    for (ElementId t : *two) EXPECT_EQ(mesh.label(t), 3);
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
 // Three tetrahedra around 0-4; in the deformed positions 0 is moved below triangle 1,2,3 (the
 // three are then inverted too, which a flip does not check): the new <1,2,3,0> would be
 // inverted there, so the flip is refused.

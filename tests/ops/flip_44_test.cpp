@@ -111,6 +111,31 @@ TEST(Flip44, RefusesBoundaryEdgesAndOtherDegrees) {
     ASSERT_TRUE(cube.validate().ok());
 }
 
+// One tetrahedron of the octahedron of another material: swapping the axis would move the
+// interface.
+TEST(Flip44, RefusesAMaterialInterface) {
+    Mesh mesh = octahedron();
+    mesh.set_label(2, 9);
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    const Mesh before = mesh;
+    const auto [entry, j] = test::edge_entry(mesh, 0, 5);
+    for (const int diagonal : {0, 1}) {
+        const auto result = flip_44(mesh, entry, j, diagonal);
+        ASSERT_FALSE(result.ok());
+        EXPECT_EQ(result.reason(), "flip_44: elements have different labels (a material interface)");
+    }
+    expect_same_state(mesh, before);
+    EXPECT_EQ(watcher.removed + watcher.added, 0);
+    ASSERT_TRUE(mesh.validate().ok());
+
+    for (ElementId t : elements(mesh)) mesh.set_label(t, 9);
+    const auto four = flip_44(mesh, entry, j, 0);
+    ASSERT_TRUE(four.ok()) << four.reason();
+    for (ElementId t : *four) EXPECT_EQ(mesh.label(t), 9);
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
 // Vertex 1 pulled in to (-0.2,0,0) makes the square reflex at 1: the diagonal 2-4 (x = 0) then
 // leaves the ring polygon and its tetrahedra would be inverted; 1-3 still works.
 TEST(Flip44, RefusesTheDiagonalOutsideANonConvexRing) {

@@ -135,6 +135,51 @@ TEST(FlipEdge, RefusesBoundaryEdge) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+// A and B of different materials: flipping 0-2 would move the interface between them.
+TEST(FlipEdge, RefusesAMaterialInterface) {
+    Mesh mesh = unit_square();
+    mesh.set_label(1, 2);
+    const Mesh copy = mesh;
+    CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+    watcher.reset_counts();
+    auto flipped = flip_edge(mesh, find_edge(mesh, 0, 2));
+    ASSERT_FALSE(flipped.ok());
+    EXPECT_EQ(flipped.reason(), "flip_edge: elements have different labels (a material interface)");
+    EXPECT_EQ(watcher.removed + watcher.added + watcher.changed, 0);
+    mesh.remove_watcher(watcher);
+    expect_same_state(mesh, copy);
+    ASSERT_TRUE(mesh.validate().ok());
+
+    // one material again: the same flip goes through and both triangles keep the label
+    mesh.set_label(0, 2);
+    auto again = flip_edge(mesh, find_edge(mesh, 0, 2));
+    ASSERT_TRUE(again.ok()) << again.reason();
+    EXPECT_EQ(mesh.label((*again)[0]), 2);
+    EXPECT_EQ(mesh.label((*again)[1]), 2);
+    ASSERT_TRUE(mesh.validate().ok());
+}
+
+// The diagonal 0-2 carries a face label (a constraint, e.g. a drawn interface): flipping it
+// would drop the label, so the flip is refused; make_delaunay_by_flips leaves it too.
+TEST(FlipEdge, RefusesALabelledEdge) {
+    Mesh mesh = unit_square();
+    mesh.face_labels()[Simplex(+1, {0, 2})] = 9;
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    const Mesh copy = mesh;
+    auto flipped = flip_edge(mesh, find_edge(mesh, 0, 2));
+    ASSERT_FALSE(flipped.ok());
+    EXPECT_EQ(flipped.reason(),
+              "flip_edge: face +<0,2> carries label 9 (a constraint: an interface or a boundary "
+              "patch)");
+    expect_same_state(mesh, copy);
+    ASSERT_TRUE(mesh.validate().ok());
+
+    mesh.face_labels().clear();
+    ASSERT_TRUE(flip_edge(mesh, find_edge(mesh, 0, 2)).ok());
+    ASSERT_TRUE(mesh.validate().ok());
+}
+
 TEST(FlipEdge, RefusesTopologicallyImpossibleFlipAtDegreeThreeVertex) {
     Mesh mesh = degree_three_vertex();
     const Mesh copy = mesh;

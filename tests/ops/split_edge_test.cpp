@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
 #include "ops/split_collapse_fixtures.hpp"
 #include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -117,5 +122,94 @@ TEST(SplitEdge, RefusesWhatIsNotAnEdgeOrAPointOnIt) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+
+// kuhn_cube(1) as two materials (label 1 for even element ids, 2 for odd) with a temperature
+// that is linear in the position and a 3-component velocity: split the main diagonal 0-7 at
+// t = 1/4. The new vertex gets 3/4 of vertex 0's values plus 1/4 of vertex 7's, with the same
+// weights and summation order as its position; each child keeps the label of its parent.
+TEST(SplitEdge, VertexAttributesAndLabelsFollowTheSplit) {
+    Mesh mesh = test::kuhn_cube(1);
+    for (ElementId t : elements(mesh)) mesh.set_label(t, t % 2 == 0 ? 1 : 2);
+    const AttributeId temperature = *mesh.add_vertex_attribute("temperature", 1);
+    const AttributeId velocity = *mesh.add_vertex_attribute("velocity", 3);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        const Point& p = mesh.reference(v);
+        mesh.vertex_attribute(temperature, v)[0] = 10 + p[0] + 2 * p[1] + 4 * p[2];
+        for (std::size_t k = 0; k < 3; ++k) mesh.vertex_attribute(velocity, v)[k] = -p[k];
+    }
+    // parent label by the two vertices of the parent other than the split edge's
+    std::map<std::pair<VertexId, VertexId>, int> label_of_parent;
+    for (ElementId t : elements(mesh)) {
+        std::vector<VertexId> rest;
+        for (VertexId v : mesh.simplex(t).vertices())
+            if (v != 0 && v != 7) rest.push_back(v);
+        label_of_parent[{rest[0], rest[1]}] = mesh.label(t);
+    }
+    const auto split = split_edge(mesh, 0, 7, 0.25);
+    ASSERT_TRUE(split.ok()) << split.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    const VertexId m = split->vertex;
+    EXPECT_EQ(mesh.vertex_attribute(temperature, m)[0], 0.75 * 10 + 0.25 * 17);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(mesh.vertex_attribute(velocity, m)[k], -0.25);
+        EXPECT_EQ(mesh.reference(m)[k], 0.25);
+    }
+    ASSERT_EQ(split->elements.size(), 12u);
+    for (ElementId t : split->elements) {
+        std::vector<VertexId> rest;
+        for (VertexId v : mesh.simplex(t).vertices())
+            if (v != 0 && v != 7 && v != m) rest.push_back(v);
+        ASSERT_EQ(rest.size(), 2u);
+        EXPECT_EQ(mesh.label(t), (label_of_parent[{rest[0], rest[1]}]));
+    }
+    EXPECT_TRUE(test::all_strictly_positive(mesh));
+}
+
+// A split that replace_elements refuses after the geometric pre-checks passed leaves no vertex
+// behind. That cannot happen on a valid mesh, so the mesh is built unchecked: E = <0,1,3>,
+// Q = <0,2,1> and P = <0,1,2> (in that order, so Q's face <1,0> mates with E's <0,1>, and P,
+// the same triangle as Q turned over, keeps a second +<0,1>: invariant 7.4 is broken).
+// Splitting 1-2 (an edge of P and Q) passes the orientation checks, since each child keeps its
+// parent's sign; but the children of P and Q have the same vertex sets (and P's child <0,1,m>
+// repeats E's face +<0,1>): replace_elements refuses after split_edge added m, and the split
+// must take m away again.
+//
+//   2               P and Q: the same triangle 0-1-2, both orientations
+//   | \             E: 0-1-3 below
+//   0 - 1
+//    \ /
+//     3
+TEST(SplitEdge, RefusalAfterAddingTheVertexRemovesItAgain) {
+    Mesh mesh(2, 2);
+    mesh.add_vertex({0, 0, 0});
+    mesh.add_vertex({1, 0, 0});
+    mesh.add_vertex({0, 1, 0});
+    mesh.add_vertex({0.5, -1, 0});
+    const std::array<Simplex, 3> triangles{Simplex(+1, {0, 1, 3}), Simplex(+1, {0, 2, 1}),
+                                           Simplex(+1, {0, 1, 2})};
+    ASSERT_TRUE(mesh.assign_elements_unchecked(triangles).ok());
+    ASSERT_FALSE(mesh.validate().ok());
+    ASSERT_TRUE(mesh.add_vertex_attribute("temperature", 1).ok());
+    const Mesh before = mesh;
+    const auto split = split_edge(mesh, 1, 2);
+    ASSERT_FALSE(split.ok());
+    EXPECT_EQ(split.reason(), "split_edge: new elements 0 and 2 have the same vertices");
+    EXPECT_EQ(mesh.vertex_count(), 4u);
+    expect_same_state(mesh, before);
+}
+
+
+// Face labels (keyed by vertex set) follow the split: the labelled boundary edge 0-1 of the
+// unit square becomes 0-4 and 4-1 with its label; the other labels stay.
+TEST(SplitEdge, FaceLabelsPassToTheHalves) {
+    Mesh mesh = test::unit_square();
+    mesh.face_labels()[Simplex(+1, {0, 1})] = 5;
+    mesh.face_labels()[Simplex(+1, {1, 2})] = 6;
+    const auto split = split_edge(mesh, 0, 1);
+    ASSERT_TRUE(split.ok()) << split.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_EQ(mesh.face_labels(), (FaceLabels{{Simplex(+1, {0, 4}), 5}, {Simplex(+1, {1, 4}), 5},
+                                              {Simplex(+1, {1, 2}), 6}}));
+}
 }  // namespace
 }  // namespace sxk

@@ -76,5 +76,22 @@ TEST(SplitElement, Refusals) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+
+// A two-material square: the children of the split triangle keep its label, the other
+// triangle keeps its own, and the centroid gets the mean of the three corner temperatures.
+TEST(SplitElement, VertexAttributesAndLabels) {
+    Mesh mesh = test::unit_square();
+    mesh.set_label(0, 4);
+    mesh.set_label(1, 6);
+    const AttributeId temperature = *mesh.add_vertex_attribute("temperature", 1);
+    for (VertexId v = 0; v < 4; ++v) mesh.vertex_attribute(temperature, v)[0] = 3.0 * v;
+    const auto split = split_element(mesh, 0);
+    ASSERT_TRUE(split.ok()) << split.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    EXPECT_DOUBLE_EQ(mesh.vertex_attribute(temperature, split->vertex)[0], (0 + 3 + 6) / 3.0);
+    for (ElementId t : split->elements) EXPECT_EQ(mesh.label(t), 4);
+    EXPECT_EQ(mesh.label(1), 6);
+    EXPECT_TRUE(test::all_strictly_positive(mesh));
+}
 }  // namespace
 }  // namespace sxk

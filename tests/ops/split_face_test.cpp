@@ -81,5 +81,25 @@ TEST(SplitFace, Refusals) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+
+// The new vertex of a face split carries every vertex attribute interpolated with the
+// normalised weights of its position (a, b, c: the canonical vertices of the face).
+TEST(SplitFace, VertexAttributesAreInterpolatedWithTheWeights) {
+    Mesh mesh = test::two_tets();
+    const AttributeId heat = *mesh.add_vertex_attribute("heat", 2);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        mesh.vertex_attribute(heat, v)[0] = 8.0 * v;
+        mesh.vertex_attribute(heat, v)[1] = 1;
+    }
+    const FaceId f = test::shared_face(mesh);
+    const Simplex sigma = mesh.face_simplex(f);
+    const auto split = split_face(mesh, f, {1, 1, 2});
+    ASSERT_TRUE(split.ok()) << split.reason();
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    const double expected = 0.25 * 8 * sigma.vertex(0) + 0.25 * 8 * sigma.vertex(1) + 0.5 * 8 * sigma.vertex(2);
+    EXPECT_DOUBLE_EQ(mesh.vertex_attribute(heat, split->vertex)[0], expected);
+    EXPECT_DOUBLE_EQ(mesh.vertex_attribute(heat, split->vertex)[1], 1.0);
+    EXPECT_TRUE(test::all_strictly_positive(mesh));
+}
 }  // namespace
 }  // namespace sxk

@@ -1,7 +1,9 @@
 // collapse_edge (thesis §3.2.3, Fig. 3.10; connectivity edit by §7.3 replace-elements).
 #include "sxk/ops/collapse_edge.hpp"
 
+#include <algorithm>
 #include <set>
+#include <utility>
 
 #include "ops/split_collapse_checks.hpp"
 
@@ -181,9 +183,46 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
             }
         }
 
+    // Face labels (keyed by vertex set) of the faces around `from`: a face with both ends
+    // vanishes with its label; a face with `from` but not `to` becomes the face with `to` in its
+    // place and takes its label along, unless that face has a label of its own.
+    std::vector<Simplex> gone_labels;
+    std::vector<std::pair<Simplex, int>> moved_labels;
+    if (!mesh.face_labels().empty())
+        for (const ElementId t : star_from)
+            for (int i = 0; i < mesh.simplex(t).count(); ++i) {
+                const Simplex face(+1, mesh.simplex(t).subn(i).vertices());
+                if (!face.contains(from)) continue;
+                const auto label = mesh.face_labels().find(face);
+                if (label == mesh.face_labels().end()) continue;
+                if (std::find(gone_labels.begin(), gone_labels.end(), face) != gone_labels.end()) continue;
+                gone_labels.push_back(face);
+                if (!face.contains(to))
+                    moved_labels.emplace_back(Simplex(+1, face.substituted(from, to).vertices()), label->second);
+            }
+
     auto result = mesh.replace_elements(star_from, survivors, labels);
     if (!result.ok()) return Refusal{"collapse_edge: " + result.reason()};
+    for (const Simplex& face : gone_labels) mesh.face_labels().erase(face);
+    for (const auto& [face, label] : moved_labels) mesh.face_labels().try_emplace(face, label);
     if (moves_to) {
+        // Attributes follow the position: the parameter s of the new reference position
+        // projected onto the edge (to = 0, from = 1, clamped), the same rule as a split at s.
+        const Point& a = mesh.reference(to);
+        const Point& b = mesh.reference(from);
+        double along = 0, length2 = 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            along += (moved.reference[k] - a[k]) * (b[k] - a[k]);
+            length2 += (b[k] - a[k]) * (b[k] - a[k]);
+        }
+        const double s = length2 > 0 ? std::clamp(along / length2, 0.0, 1.0) : 0.0;
+        if (s > 0)
+            for (const AttributeId attribute : mesh.vertex_attributes()) {
+                const std::span<double> survivor = mesh.vertex_attribute(attribute, to);
+                const std::span<const double> merged = std::as_const(mesh).vertex_attribute(attribute, from);
+                for (std::size_t c = 0; c < survivor.size(); ++c)
+                    survivor[c] = (1 - s) * survivor[c] + s * merged[c];
+            }
         mesh.set_reference(to, moved.reference);
         mesh.set_deformed(to, moved.deformed);
     }

@@ -2,6 +2,7 @@
 #include "sxk/ops/dissect.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -61,7 +62,6 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
     std::unordered_map<ElementId, ElementSubstitution> substitution;
     DissectResult result;
     VertexId next_vertex = static_cast<VertexId>(mesh.vertex_count());
-    std::vector<Point> new_reference, new_deformed;
 
     for (VertexId v : cut_vertices) {
         std::vector<ElementId> around = star(mesh, v);
@@ -93,8 +93,6 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
             if (fresh && vertex_of_root.size() > 1) {
                 it->second = next_vertex++;
                 result.new_vertices.emplace_back(v, it->second);
-                new_reference.push_back(mesh.reference(v));
-                new_deformed.push_back(mesh.deformed(v));
             }
             if (it->second == v) continue;
             const ElementId t = around[a];
@@ -118,10 +116,46 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
               [](const ElementSubstitution& a, const ElementSubstitution& b) {
                   return a.element < b.element;
               });
-    for (std::size_t i = 0; i < new_reference.size(); ++i)
-        mesh.add_vertex(new_reference[i], new_deformed[i]);
+    // Face labels (keyed by vertex set) follow the faces whose vertices are replaced: the face
+    // with the copies gets the label; the original key keeps it only while some element still
+    // has that face (a cut face labelled on both sides labels both new boundary faces).
+    struct Relabel {
+        Simplex before, after;
+        int label;
+    };
+    std::vector<Relabel> relabel;
+    if (!mesh.face_labels().empty())
+        for (const ElementSubstitution& change : changes) {
+            const Simplex& tau = mesh.simplex(change.element);
+            for (int j = 0; j < tau.count(); ++j) {
+                const Simplex face = unoriented(tau.subn(j));
+                const auto label = mesh.face_labels().find(face);
+                if (label == mesh.face_labels().end()) continue;
+                std::vector<VertexId> after;
+                for (int k = 0; k < tau.count(); ++k)
+                    if (k != j) after.push_back(change.new_vertices[static_cast<std::size_t>(k)]);
+                std::sort(after.begin(), after.end());
+                const Simplex renamed(+1, after);
+                if (!(renamed == face)) relabel.push_back({face, renamed, label->second});
+            }
+        }
+
+    // Each copy takes all of its original's data: both positions and every vertex attribute
+    // (one parent with weight 1 copies bit for bit).
+    for (const auto& [original, copy] : result.new_vertices) {
+        const std::array<VertexId, 1> parent{original};
+        const std::array<double, 1> whole{1.0};
+        (void)mesh.add_interpolated_vertex(parent, whole);  // original < vertex_count(): cannot refuse
+    }
     auto changed = mesh.change_elements(changes);
-    if (!changed.ok()) return Refusal{"dissect: " + changed.reason(), changed.refusal().item};
+    if (!changed.ok()) {
+        // cannot happen on a valid mesh (see the header); the copies are in no element yet
+        for (std::size_t i = 0; i < result.new_vertices.size(); ++i) (void)mesh.remove_last_vertex();
+        return Refusal{"dissect: " + changed.reason(), changed.refusal().item};
+    }
+    for (const Relabel& r : relabel) mesh.face_labels().try_emplace(r.after, r.label);
+    for (const Relabel& r : relabel)
+        if (!is_mesh_face(mesh, r.before)) mesh.face_labels().erase(r.before);
     return result;
 }
 

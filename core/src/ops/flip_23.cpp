@@ -1,6 +1,7 @@
 // flip_23 (thesis §5.2.2, face flip; connectivity edit by §7.3 replace-elements).
 #include "sxk/ops/flip_23.hpp"
 
+#include "ops/label_constraints.hpp"
 #include "ops/tet_flip_checks.hpp"
 
 namespace sxk {
@@ -15,6 +16,9 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
                        to_text(mesh.face_simplex(face)) + " is on the boundary"};
     const ElementId t0 = mesh.face_element(face);
     const ElementId t1 = mesh.face_element(other);
+    // A flip across an interface between materials would move the interface.
+    if (mesh.label(t0) != mesh.label(t1))
+        return Refusal{"flip_23: elements have different labels (a material interface)"};
     const VertexId p = mesh.opposite_vertex(t0, face);
     const VertexId q = mesh.opposite_vertex(t1, other);
     // Thesis Fig. 5.9: if p and q are already joined elsewhere, the flip would represent the
@@ -38,7 +42,12 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
 
     const std::array<ElementId, 2> old{t0, t1};
     const std::array<int, 3> labels{mesh.label(t0), mesh.label(t0), mesh.label(t0)};
-    auto result = mesh.replace_elements(old, created, labels);
+    if (Refusal r = detail::refuse_vanishing_label(mesh, old, created, "flip_23"); !r.reason.empty())
+        return r;
+    // Every new element and every new face that is not a hull face contains the new edge,
+    // which is not in the mesh (checked above), and the hull faces are reused: the star
+    // checks of replace_elements are proven (mesh_checks.hpp, ProvenEdit).
+    auto result = ProvenEdit::replace(mesh, old, created, labels);
     if (!result.ok()) return Refusal{"flip_23: " + result.reason()};
     const std::vector<ElementId>& ids = *result;
     return std::array<ElementId, 3>{ids[0], ids[1], ids[2]};

@@ -1,6 +1,7 @@
 // flip_32 (thesis §5.2.2, edge removal, the inverse of the face flip; §7.3 replace-elements).
 #include "sxk/ops/flip_32.hpp"
 
+#include "ops/label_constraints.hpp"
 #include "ops/tet_flip_checks.hpp"
 
 namespace sxk {
@@ -14,7 +15,9 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
     const VertexId b = edge.vertex(1);
     auto found = detail::interior_edge_ring(mesh, entry, j, 3, "flip_32");
     if (!found) return found.refusal();
-    const std::vector<ElementId>& ring = *found;
+    const std::span<const ElementId> ring = found->span();
+    if (Refusal r = detail::refuse_material_interface(mesh, ring, "flip_32"); !r.reason.empty())
+        return r;
 
     // tau = <ab, c, d> for two ring vertices c, d; e is the ring vertex not in tau.
     const Simplex tau = mesh.simplex(ring[0]);
@@ -26,15 +29,8 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
                                              a, b, c);
     // Thesis Fig. 5.9: if cde is already a triangle of the mesh (outside the ring, necessarily),
     // the flip would represent it three times.
-    {
-        const std::vector<ElementId> around = star(mesh, c);
-        for (const ElementId t : around) {
-            const Simplex& s = mesh.simplex(t);
-            if (s.contains(d) && s.contains(e))
-                return Refusal{"flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) +
-                               " already exists"};
-        }
-    }
+    if (detail::star_has(mesh, c, [&](const Simplex& s) { return s.contains(d) && s.contains(e); }))
+        return Refusal{"flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) + " already exists"};
     // Replacing b (resp. a) by e in <ab,c,d> gives the tetrahedron <cde,a> (resp. <cde,b>) with
     // the orientation the ring induces: exactly the inverse of flip_23's substitutions.
     const std::array<Simplex, 2> created{tau.substituted(b, e), tau.substituted(a, e)};
@@ -43,7 +39,12 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
 
     const int label = mesh.label(mesh.face_element(entry));
     const std::array<int, 2> labels{label, label};
-    auto result = mesh.replace_elements(ring, created, labels);
+    if (Refusal r = detail::refuse_vanishing_label(mesh, ring, created, "flip_32"); !r.reason.empty())
+        return r;
+    // Both new elements and the one new face pair contain the triangle cde, which is not in the
+    // mesh (checked above), and the hull faces are reused: the star checks of
+    // replace_elements are proven (mesh_checks.hpp, ProvenEdit).
+    auto result = ProvenEdit::replace(mesh, ring, created, labels);
     if (!result.ok()) return Refusal{"flip_32: " + result.reason()};
     const std::vector<ElementId>& ids = *result;
     return std::array<ElementId, 2>{ids[0], ids[1]};

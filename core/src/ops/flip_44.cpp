@@ -1,6 +1,7 @@
 // flip_44 (thesis §5.2.2; a 2-3 and a 3-2 flip fused into one §7.3 replace-elements).
 #include "sxk/ops/flip_44.hpp"
 
+#include "ops/label_constraints.hpp"
 #include "ops/tet_flip_checks.hpp"
 
 namespace sxk {
@@ -16,7 +17,9 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     const VertexId b = edge.vertex(1);
     auto found = detail::interior_edge_ring(mesh, entry, j, 4, "flip_44");
     if (!found) return found.refusal();
-    const std::vector<ElementId>& ring = *found;
+    const std::span<const ElementId> ring = found->span();
+    if (Refusal r = detail::refuse_material_interface(mesh, ring, "flip_44"); !r.reason.empty())
+        return r;
 
     // v[k] = the vertex shared by ring[k] and ring[k+1] besides a and b (ring order).
     std::array<VertexId, 4> v{};
@@ -47,7 +50,12 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
 
     const int label = mesh.label(mesh.face_element(entry));
     const std::array<int, 4> labels{label, label, label, label};
-    auto result = mesh.replace_elements(ring, created, labels);
+    if (Refusal r = detail::refuse_vanishing_label(mesh, ring, created, "flip_44"); !r.reason.empty())
+        return r;
+    // Every new element and every new face that is not a hull face contains the new edge,
+    // which is not in the mesh (checked above), and the hull faces are reused: the star
+    // checks of replace_elements are proven (mesh_checks.hpp, ProvenEdit).
+    auto result = ProvenEdit::replace(mesh, ring, created, labels);
     if (!result.ok()) return Refusal{"flip_44: " + result.reason()};
     const std::vector<ElementId>& ids = *result;
     return std::array<ElementId, 4>{ids[0], ids[1], ids[2], ids[3]};

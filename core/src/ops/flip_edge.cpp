@@ -5,6 +5,8 @@
 #include <array>
 #include <string>
 
+#include "mesh_checks.hpp"
+#include "ops/label_constraints.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
@@ -54,17 +56,19 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
 
     const ElementId t0 = mesh.face_element(edge);
     const ElementId t1 = mesh.face_element(mate);
+    // A flip across an interface between materials would move the interface.
+    if (mesh.label(t0) != mesh.label(t1))
+        return Refusal{"flip_edge: elements have different labels (a material interface)"};
     const VertexId c = mesh.opposite_vertex(t0, edge);
     const VertexId d = mesh.opposite_vertex(t1, mate);
 
     // Thesis Fig. 5.9: when c-d is already an edge the flip would represent it twice (on a
-    // surface: anywhere; in the plane: a vertex of degree 3). replace_elements would refuse too,
-    // with a generic 7.4 reason; walking around c says what is actually wrong.
-    for (ElementId t : star(mesh, c))
-        if (mesh.simplex(t).contains(d))
-            return Refusal{"flip_edge: new edge " + vertex_set(c, d) +
-                           " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
-                           " is topologically impossible"};
+    // surface: anywhere; in the plane: a vertex of degree 3). Walking around c says what is
+    // actually wrong, and proves what replace_elements would otherwise check (see below).
+    if (detail::edge_exists(mesh, c, d))
+        return Refusal{"flip_edge: new edge " + vertex_set(c, d) +
+                       " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
+                       " is topologically impossible"};
 
     const std::array<std::array<VertexId, 3>, 2> new_triangles{{{a, d, c}, {d, b, c}}};
     for (Positions positions : {Positions::reference, Positions::deformed}) {
@@ -99,7 +103,13 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     // face, so the new elements have the orientation of the old ones
     const std::array<ElementId, 2> old_elements{t0, t1};
     const std::array<Simplex, 2> new_simplexes{Simplex(+1, {a, d, c}), Simplex(+1, {d, b, c})};
-    auto replaced = mesh.replace_elements(old_elements, new_simplexes);
+    if (Refusal r = detail::refuse_vanishing_label(mesh, old_elements, new_simplexes, "flip_edge");
+        !r.reason.empty())
+        return r;
+    // Both new triangles and the new edge pair contain the edge c-d, which is not in the mesh
+    // (checked above), and the hull edges are reused: the star checks of replace_elements are
+    // proven (mesh_checks.hpp, ProvenEdit).
+    auto replaced = ProvenEdit::replace(mesh, old_elements, new_simplexes, {});
     if (!replaced) return Refusal{"flip_edge: " + replaced.reason()};
     return std::array<ElementId, 2>{replaced.value()[0], replaced.value()[1]};
 }

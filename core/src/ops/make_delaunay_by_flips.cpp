@@ -69,8 +69,8 @@ Outcome<std::size_t> make_delaunay_by_flips(Mesh& mesh, Positions positions) {
         stack.pop_back();
         if (!mesh.is_face(edge) || is_locally_delaunay(mesh, edge, positions)) continue;
         // In a valid planar triangulation a convex quadrilateral's other diagonal cannot exist
-        // (it would cross a-b), so this flip is not refused; if an invalid mesh makes it fail,
-        // the edge is left as it is rather than aborting half-way.
+        // (it would cross a-b), so the flip is refused only at a constraint: an interface
+        // between labels or a labelled edge stays (the result is then constrained Delaunay).
         auto flipped = flip_edge(mesh, edge, options);
         if (!flipped) continue;
         ++flips;

@@ -1,6 +1,7 @@
 // Private helpers shared by split_edge.cpp, split_face.cpp, split_element.cpp and
 // collapse_edge.cpp: exact orientation of a simplex that is not (yet) an element, with some
-// vertices at positions that are not (yet) in the mesh, and the elements around a simplex.
+// vertices at positions that are not (yet) in the mesh, the elements around a simplex, and the
+// common transaction of the three splits (split_parents).
 #pragma once
 
 #include <algorithm>
@@ -63,16 +64,11 @@ inline std::vector<ElementId> elements_with_edge(const Mesh& mesh, VertexId a, V
     return around;
 }
 
-// Affine combination sum weights[i] * p_i of the vertices of sigma, in both positions.
+// Affine combination sum weights[i] * p_i of `vertices`, in both positions: the kernel's own
+// formula, so that the point checked here is bit for bit the one add_interpolated_vertex adds.
 inline std::pair<Point, Point> interpolate(const Mesh& mesh, std::span<const VertexId> vertices,
                                            std::span<const double> weights) {
-    Point reference{0, 0, 0}, deformed{0, 0, 0};
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-        for (std::size_t k = 0; k < 3; ++k) {
-            reference[k] += weights[i] * mesh.reference(vertices[i])[k];
-            deformed[k] += weights[i] * mesh.deformed(vertices[i])[k];
-        }
-    return {reference, deformed};
+    return mesh.interpolated_positions(vertices, weights);
 }
 
 // Splits share one rule: a child must keep its parent's orientation in both positions. In
@@ -95,31 +91,64 @@ inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> ch
     return {};
 }
 
-// The common end of every split: each parent is replaced by one child per vertex in `replaced`
-// (the parent with that vertex swapped for the new vertex moved.vertex, so orientation and label
-// follow the parent); the children are checked before the new vertex exists, then the vertex is
-// added and ONE replace_elements call makes the edit.
+// The common end of every split: the new vertex m = sum weights[i] * replaced[i] (positions
+// and every vertex attribute, Mesh::add_interpolated_vertex); each parent is replaced by one
+// child per vertex in `replaced` (the parent with that vertex swapped for m, so orientation and
+// label follow the parent). The children are checked with m at its future position before it
+// exists; then m is added and ONE replace_elements call makes the edit. Should that call refuse
+// (it cannot on a valid mesh: every new face either was a face of a parent or contains the
+// fresh vertex, which no other element has), m is removed again (Mesh::remove_last_vertex), so
+// a refused split leaves the mesh exactly as it was in every case.
 inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId> parents,
                                           std::span<const VertexId> replaced,
-                                          const MovedVertex& moved, const char* operation) {
+                                          std::span<const double> weights, const char* operation) {
+    const auto [reference, deformed] = interpolate(mesh, replaced, weights);
+    const auto m = static_cast<VertexId>(mesh.vertex_count());
+    const MovedVertex moved{m, reference, deformed};
     std::vector<Simplex> children;
     std::vector<ElementId> parent_of_child;
     std::vector<int> labels;
     for (const ElementId parent : parents)
         for (const VertexId v : replaced) {
-            children.push_back(mesh.simplex(parent).substituted(v, moved.vertex));
+            children.push_back(mesh.simplex(parent).substituted(v, m));
             parent_of_child.push_back(parent);
             labels.push_back(mesh.label(parent));
         }
     if (Refusal r = refuse_bad_children(mesh, children, parent_of_child, moved, operation);
         !r.reason.empty())
         return r;
-    // Nothing refuses past this point on a valid mesh: every new face either was a face of a
-    // parent or contains the fresh vertex, which no other element has (invariant 7.4 holds).
-    mesh.add_vertex(moved.reference, moved.deformed);
+    // Face labels (keyed by vertex set) on the faces of the parents that are split: a face in no
+    // child (split_edge: those containing a and b; split_face: abc) passes its label to its
+    // pieces, the face with one of its replaced vertices swapped for m.
+    std::vector<std::pair<Simplex, int>> moved_labels;
+    std::vector<Simplex> split_faces;
+    if (!mesh.face_labels().empty())
+        for (const ElementId parent : parents)
+            for (int i = 0; i < mesh.simplex(parent).count(); ++i) {
+                const Simplex face(+1, mesh.simplex(parent).subn(i).vertices());
+                const auto label = mesh.face_labels().find(face);
+                if (label == mesh.face_labels().end()) continue;
+                const bool kept = std::any_of(children.begin(), children.end(), [&](const Simplex& child) {
+                    return std::all_of(face.vertices().begin(), face.vertices().end(),
+                                       [&](VertexId v) { return child.contains(v); });
+                });
+                if (kept || std::find(split_faces.begin(), split_faces.end(), face) != split_faces.end())
+                    continue;
+                split_faces.push_back(face);
+                for (const VertexId v : replaced)
+                    if (face.contains(v))
+                        moved_labels.emplace_back(Simplex(+1, face.substituted(v, m).vertices()), label->second);
+            }
+    auto added = mesh.add_interpolated_vertex(replaced, weights);
+    if (!added.ok()) return Refusal{std::string(operation) + ": " + added.reason()};
     auto result = mesh.replace_elements(parents, children, labels);
-    if (!result.ok()) return Refusal{std::string(operation) + ": " + result.reason()};
-    return SplitResult{moved.vertex, std::move(*result)};
+    if (!result.ok()) {
+        (void)mesh.remove_last_vertex();  // m is in no element: the refused edit added nothing
+        return Refusal{std::string(operation) + ": " + result.reason()};
+    }
+    for (const Simplex& face : split_faces) mesh.face_labels().erase(face);
+    for (const auto& [face, label] : moved_labels) mesh.face_labels()[face] = label;
+    return SplitResult{m, std::move(*result)};
 }
 
 // Every weight strictly positive and finite: the new point lies in the open simplex.

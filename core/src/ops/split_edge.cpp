@@ -21,13 +21,7 @@ Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t) {
 
     const std::array<VertexId, 2> ends{a, b};
     const std::array<double, 2> weights{1 - t, t};
-    const auto [reference, deformed] = detail::interpolate(mesh, ends, weights);
-    // The new vertex will get id vertex_count(); checks run with it at its future position so
-    // that a refusal leaves the mesh without the vertex.
-    const auto m = static_cast<VertexId>(mesh.vertex_count());
-    const detail::MovedVertex moved{m, reference, deformed};
-
-    return detail::split_parents(mesh, parents, ends, moved, "split_edge");
+    return detail::split_parents(mesh, parents, ends, weights, "split_edge");
 }
 
 }  // namespace sxk

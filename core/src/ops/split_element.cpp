@@ -22,12 +22,8 @@ Outcome<SplitResult> split_element(Mesh& mesh, ElementId t, std::span<const doub
     for (double& w : normalized) w /= sum;
 
     const Simplex tau = mesh.simplex(t);
-    const auto [reference, deformed] = detail::interpolate(mesh, tau.vertices(), normalized);
-    const auto m = static_cast<VertexId>(mesh.vertex_count());
-    const detail::MovedVertex moved{m, reference, deformed};
-
     const std::array<ElementId, 1> parent{t};
-    return detail::split_parents(mesh, parent, tau.vertices(), moved, "split_element");
+    return detail::split_parents(mesh, parent, tau.vertices(), normalized, "split_element");
 }
 
 }  // namespace sxk

@@ -17,11 +17,8 @@ Outcome<SplitResult> split_face(Mesh& mesh, FaceId f, std::array<double, 3> weig
     const Simplex sigma = mesh.face_simplex(f);
     std::vector<ElementId> parents{mesh.face_element(f)};
     if (mesh.mate(f) != invalid_id) parents.push_back(mesh.face_element(mesh.mate(f)));
-    const auto [reference, deformed] = detail::interpolate(mesh, sigma.vertices(), weights);
-    const auto m = static_cast<VertexId>(mesh.vertex_count());
-    const detail::MovedVertex moved{m, reference, deformed};
 
-    return detail::split_parents(mesh, parents, sigma.vertices(), moved, "split_face");
+    return detail::split_parents(mesh, parents, sigma.vertices(), weights, "split_face");
 }
 
 }  // namespace sxk

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "mesh_checks.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/flip_options.hpp"
 #include "sxk/outcome.hpp"
@@ -45,12 +47,7 @@ inline Refusal refuse_non_positive(const Mesh& mesh, std::span<const Simplex> cr
     return {};
 }
 
-// True when the edge v-w is an edge of some element: walks star(v) (thesis §7.2).
-inline bool edge_exists(const Mesh& mesh, VertexId v, VertexId w) {
-    const std::vector<ElementId> around = star(mesh, v);
-    return std::any_of(around.begin(), around.end(),
-                       [&](ElementId t) { return mesh.simplex(t).contains(w); });
-}
+// edge_exists(mesh, v, w) (mesh_checks.hpp) walks star(v) (thesis §7.2) without allocating.
 
 // True when some element of `ring` (the tetrahedra around edge a-b) has a boundary face
 // containing a-b: then the edge lies on the boundary and its ring is not closed.
@@ -86,14 +83,62 @@ inline Refusal refuse_bad_edge_arguments(const Mesh& mesh, FaceId entry, int j,
     return {};
 }
 
+// A flip across an interface between materials (elements with different labels) would move
+// the interface: refused, so that flips keep every material region's shape.
+inline Refusal refuse_material_interface(const Mesh& mesh, std::span<const ElementId> elements,
+                                         const char* operation) {
+    for (const ElementId t : elements)
+        if (mesh.label(t) != mesh.label(elements[0]))
+            return {std::string(operation) +
+                    ": elements have different labels (a material interface)"};
+    return {};
+}
+
+// The tetrahedra around an interior edge of degree 3 or 4, in ring order.
+struct EdgeRing {
+    std::array<ElementId, 4> elements{};
+    std::size_t size = 0;
+    std::span<const ElementId> span() const { return {elements.data(), size}; }
+};
+
+// cycle_around(mesh, entry, j) without allocating: the same walk, the same order (thesis
+// cycle-around; at the boundary it walks the other way from entry's mate too).
+inline void cycle_around_into(const Mesh& mesh, FaceId entry, int j, SmallVector<ElementId, 64>& ring) {
+    auto opposite_vertex = [&](ElementId e, FaceId f) {
+        for (int i = 0; i < 4; ++i)
+            if (mesh.face(e, i) == f) return mesh.simplex(e).vertex(i);
+        return invalid_id;
+    };
+    auto walk = [&](FaceId start, VertexId v, FaceId stop, SmallVector<ElementId, 64>& out) {
+        for (FaceId f = start; f != invalid_id;) {
+            const ElementId e = mesh.face_element(f);
+            const FaceId exit = mesh.face(e, mesh.simplex(e).index(v));
+            v = opposite_vertex(e, f);
+            out.push_back(e);
+            f = mesh.mate(exit);
+            if (f == stop) return true;
+        }
+        return false;
+    };
+    const VertexId v0 = mesh.face_simplex(entry).vertex(j);
+    if (walk(entry, v0, entry, ring)) return;
+    SmallVector<ElementId, 64> back;
+    walk(mesh.mate(entry), v0, invalid_id, back);
+    std::reverse(back.begin(), back.end());
+    for (const ElementId t : ring) back.push_back(t);
+    ring.clear();
+    for (const ElementId t : back) ring.push_back(t);
+}
+
 // The ring of tetrahedra around the interior edge face_simplex(entry).subn(j), which must have
 // exactly `degree` of them (3 for flip_32, 4 for flip_44); a refusal otherwise.
-inline Outcome<std::vector<ElementId>> interior_edge_ring(const Mesh& mesh, FaceId entry, int j,
-                                                         std::size_t degree, const char* operation) {
+inline Outcome<EdgeRing> interior_edge_ring(const Mesh& mesh, FaceId entry, int j,
+                                            std::size_t degree, const char* operation) {
     const Simplex edge = mesh.face_simplex(entry).subn(j);
     const VertexId a = edge.vertex(0);
     const VertexId b = edge.vertex(1);
-    std::vector<ElementId> ring = cycle_around(mesh, entry, j);
+    SmallVector<ElementId, 64> ring;
+    cycle_around_into(mesh, entry, j, ring);
     if (ring_touches_boundary(mesh, ring, a, b))
         return Refusal{std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) +
                        " is on the boundary"};
@@ -101,7 +146,10 @@ inline Outcome<std::vector<ElementId>> interior_edge_ring(const Mesh& mesh, Face
         return Refusal{std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) +
                        " has degree " + std::to_string(ring.size()) + ", not " +
                        std::to_string(degree)};
-    return ring;
+    EdgeRing result;
+    for (std::size_t i = 0; i < degree; ++i) result.elements[i] = ring[i];
+    result.size = degree;
+    return result;
 }
 
 }  // namespace sxk::detail

@@ -28,7 +28,16 @@
 //   replaced by its copy with from -> to, with its label (ONE Mesh::replace_elements call, old
 //   = star(from), so the edit is a transaction); `from` remains as a vertex in no element;
 //   returns `to`. The point overload also moves `to` to the given positions (after the edit).
+//   Vertex attributes: the plain overload leaves every attribute of `to` (and of `from`) as it
+//   was. The point overload treats the collapse as a split of the edge at parameter s, the
+//   reference point projected onto the segment to-from (s = 0 at to, 1 at from, clamped to
+//   [0,1]): each attribute of `to` becomes (1-s) value(to) + s value(from), so collapsing to
+//   the midpoint averages them. `from` keeps its values.
+//   Face labels: labels of faces containing from and to vanish with them; a labelled face with
+//   `from` but not `to` passes its label to the face with `to` in its place, unless that face
+//   is labelled already.
 //   Inverse: collapse_edge(split_edge(a, b) = m, a) restores the element vertex sets.
+//   No vertex is added, so a refusal by replace_elements leaves nothing behind.
 // Refusals (mesh untouched), reasons begin with "collapse_edge: ":
 //   from or to not a vertex; from == to; from-to not an edge; link condition violated; `from`
 //   on the boundary and the edge interior ("would move the boundary"); a boundary face around

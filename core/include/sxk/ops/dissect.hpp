@@ -27,17 +27,21 @@
 //   with its mate) a face of the mesh. Repeats are allowed.
 //   After (on success): for each split vertex, the class holding the smallest element id keeps
 //   the original vertex; the other classes, in order of their smallest element id, get new
-//   vertices appended to the mesh (ids vertex_count() before, +1, ...). The result lists
+//   vertices appended to the mesh (ids vertex_count() before, +1, ...), each a copy of its
+//   original's positions and of every vertex attribute, bit for bit. The result lists
 //   (original, new) pairs in order of creation. Only elements of split classes are changed,
 //   with ONE Mesh::change_elements call; every ElementId and FaceId survives (Fig. 7.5), faces of
 //   C that separate become boundary faces (their mates too), others keep their mates. Face
-//   labels (keyed by vertex set) are not carried to faces whose vertices were replaced.
+//   labels (keyed by vertex set) follow faces whose vertices were replaced by copies; the
+//   original key keeps its label while some element still has that face (a labelled cut face
+//   labels both of the boundary faces it becomes).
 //   Inverse: none in the kernel (stitching is the merge of the copies back into v).
 // Refusals (mesh untouched), reasons begin with "dissect: ":
 //   "cut face I has K vertices, not D" (I: index in cut_faces, D = topological dimension);
 //   "cut face I <...> has a repeated or unknown vertex"; "cut face I <...> is not a face of the
 //   mesh". Refusal::item is I. The argument above (faces not in C keep all their vertices'
-//   classes together) shows change_elements cannot refuse on a valid mesh.
+//   classes together) shows change_elements cannot refuse on a valid mesh; should it refuse
+//   anyway, the copies (in no element yet) are removed again, so no refusal adds a vertex.
 #pragma once
 
 #include <span>

@@ -25,7 +25,8 @@
 //   Inverse: flip_32 on the new edge pq restores the vertex sets (and orientations) of t0 and
 //   t1 and, again, the hull FaceIds: flip_32(flip_23(f)) == identity up to element ids.
 // Refusals (mesh, ids and watchers untouched), reasons begin with "flip_23: ":
-//   not a tetrahedral mesh; `face` not a face; face on the boundary; edge pq already exists
+//   not a tetrahedral mesh; `face` not a face; face on the boundary; t0 and t1 have different
+//   labels ("elements have different labels (a material interface)"); edge pq already exists
 //   (topologically impossible, thesis Fig. 5.9: the new edge would be represented twice);
 //   unless options.topology_only, a new tetrahedron that is not strictly positive by exact
 //   orient3d in the reference or the deformed positions (equivalently: segment pq does not

@@ -24,7 +24,9 @@
 //   Inverse: flip_23 on the new triangle cde restores the three vertex sets around ab and the
 //   hull FaceIds: flip_23(flip_32(e)) == identity up to element ids, and conversely.
 // Refusals (mesh, ids and watchers untouched), reasons begin with "flip_32: ":
-//   not tetrahedral; bad entry or j; edge on the boundary; degree != 3; the triangle cde
+//   not tetrahedral; bad entry or j; edge on the boundary; degree != 3; the ring's elements
+//   have different labels ("elements have different labels (a material interface)"); the
+//   triangle cde
 //   already exists as a face (topologically impossible, thesis Fig. 5.9); unless
 //   options.topology_only, a new tetrahedron not strictly positive (exact orient3d) in the
 //   reference or the deformed positions (equivalently: ab does not cross triangle cde).

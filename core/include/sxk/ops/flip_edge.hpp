@@ -28,6 +28,8 @@
 // Refusals (mesh, ids and watchers untouched); every reason begins with "flip_edge: ":
 //   - not a triangle mesh, or `edge` is not a face;
 //   - "edge {a,b} is on the boundary" (a < b);
+//   - "elements have different labels (a material interface)": the flip would move the
+//     interface between two materials;
 //   - the new edge c-d already exists: "new edge {c,d} already exists (thesis Fig. 5.9)" —
 //     a vertex of degree 3 in the plane, or e.g. any edge of a tetrahedron's surface;
 //   - planar meshes, unless options.topology_only: a new triangle that would be flat or inverted

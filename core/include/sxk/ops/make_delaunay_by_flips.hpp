@@ -35,7 +35,10 @@ SXK_API bool is_locally_delaunay(const Mesh& mesh, FaceId edge,
 // pushed again. Returns the number of flips.
 //   Before: planar triangle mesh, every triangle strictly counter-clockwise in `positions`.
 //   After: every interior edge is locally Delaunay in `positions`, hence (Delaunay's lemma) the
-//   triangulation is Delaunay on its vertices when its domain is convex; vertex positions,
+//   triangulation is Delaunay on its vertices when its domain is convex — except at
+//   constraints flip_edge refuses to flip: edges between triangles of different labels
+//   (material interfaces) and edges carrying a face label stay, and the result is constrained
+//   Delaunay with respect to them; vertex positions,
 //   labels of untouched elements and all hull FaceIds of each flip are kept. Flips happen only
 //   when incircle is strictly positive, so cocircular input terminates (each flip strictly
 //   lowers the lifted surface) and is left as it is.

@@ -23,6 +23,11 @@
 //   Inverse: collapse_edge(mesh, m, a) (or onto b) restores the element vertex sets and
 //   orientations: collapse_edge(split_edge(e)) == e up to element and face ids; m stays as a
 //   vertex in no element.
+//   Vertex attributes: m gets every attribute interpolated with the weights 1-t, t of a, b,
+//   like its position (Mesh::add_interpolated_vertex).
+//   Face labels: a labelled face containing ab passes its label to its two halves.
+//   Transaction: a refusal by replace_elements after m was added (impossible on a valid mesh)
+//   removes m again (Mesh::remove_last_vertex), so no refusal leaves a vertex behind.
 // Refusals (mesh untouched, no vertex added), reasons begin with "split_edge: ":
 //   a or b is not a vertex; a == b; ab is not an edge; t not in the open interval (0,1); a child
 //   that would be flat or of the other orientation than its parent in either position set

@@ -18,6 +18,10 @@
 //   the outer faces of the children) and so their mates and boundary status.
 //   Inverse: collapse_edge(mesh, m, v) for any vertex v of t restores the element (m stays, in
 //   no element).
+//   Vertex attributes: m gets every attribute interpolated with the same weights as its
+//   position (Mesh::add_interpolated_vertex).
+//   Transaction: a refusal by replace_elements after m was added (impossible on a valid mesh)
+//   removes m again (Mesh::remove_last_vertex), so no refusal leaves a vertex behind.
 // Refusals (mesh untouched, no vertex added), reasons begin with "split_element: ":
 //   t not an element; wrong number of weights; a weight not > 0; a child flat or of the other
 //   orientation than t in either position set (rounding of m only).

@@ -22,6 +22,11 @@
 //   element), each with its parent's label. ONE replace_elements call; the hull faces of the
 //   parents (those other than abc) keep their FaceIds.
 //   Inverse: collapse_edge(mesh, m, a) restores the element vertex sets (m stays, in no element).
+//   Vertex attributes: m gets every attribute interpolated with the same weights as its
+//   position (Mesh::add_interpolated_vertex).
+//   Face labels: a label on abc passes to its three pieces.
+//   Transaction: a refusal by replace_elements after m was added (impossible on a valid mesh)
+//   removes m again (Mesh::remove_last_vertex), so no refusal leaves a vertex behind.
 // Refusals (mesh untouched, no vertex added), reasons begin with "split_face: ":
 //   not a tetrahedral mesh; f not a face; a weight not > 0; a child flat or of the other
 //   orientation than its parent in either position set (rounding of m only).
