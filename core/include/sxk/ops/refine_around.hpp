@@ -1,0 +1,64 @@
+// Thesis §6.5 refine-around(x, h): bisect until the triangle containing x has a hypotenuse no
+// longer than h (Fig. 6.8).
+//
+//     procedure refine-around(x, h)            +-----------+        +-----+-----+
+//       t <- triangle containing x             |         / |        |\    |   / |
+//       if |hypotenuse(t)| > h:                |       /   |  --->  |  \  | /   |
+//         bisect(hypotenuse(t))                |     /     |        +----+*+----+
+//         refine-around(x, h)                  |   /    *  |        |   / |\    |
+//                                              | /         |        | /   |  \  |
+//                                              +-----------+        +-----+-----+
+//                                            (* = x; bisections propagate to keep conformity)
+//
+// Triangle meshes in the plane only (topological and ambient dimension 2); tetrahedral meshes
+// have their own newest-vertex bisection, refine_around_tetrahedra. Lengths, the hypotenuse
+// rule (see simple_bisect.hpp) and x are in the REFERENCE positions; x's z is ignored.
+//
+// Point location: a stochastic visibility walk (exact orient2d) from `hint` when it is an
+// element, else from the first element; the walk is O(distance) and local when the hint is
+// near x (pass the previous result's `element` when refining along a path). When the walk
+// meets the boundary (x outside, or a non-convex domain in between) or does not finish within
+// element_count() steps, a linear scan over all elements decides: O(n) only in those cases.
+// After the first location, x is followed down the planned bisections without searching.
+//
+// Transaction: every bisection of the whole refinement is planned on a scratch overlay first
+// (as bisect_edge does) and replayed only when the plan stands, so a refusal leaves the mesh
+// untouched, even after many planned bisections.
+//
+// Contract.
+//   Before: planar triangle mesh, counter-clockwise triangles in the reference positions;
+//   h > 0.
+//   After (on success): the triangle containing x (the `element` returned; for x on an edge,
+//   one of the triangles containing it) has a hypotenuse of reference length <= h; the mesh is
+//   conforming; on a mesh of right-angled isosceles triangles every triangle is congruent (up
+//   to scale: same angles) to a starting one. Returns the number of bisections (= new
+//   vertices, ids vertex_count() before the call onwards).
+// Refusals (mesh untouched), reasons begin with "refine_around: ":
+//   "tetrahedral meshes use refine_around_tetrahedra";
+//   "needs a planar triangle mesh (ambient dimension 2)";
+//   "size h = -1 is not a positive number" (also 0 and nan);
+//   "point (2, 3) is not in the mesh";
+//   "new element +<a,b,c> would be flat in the deformed positions" (as bisect_edge).
+#pragma once
+
+#include <cstddef>
+
+#include "sxk/config.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk {
+
+struct RefineAroundResult {
+    std::size_t bisections = 0;
+    ElementId element = invalid_id;  // the triangle containing x afterwards (a good next hint)
+};
+
+SXK_API Outcome<RefineAroundResult> refine_around(Mesh& mesh, const Point& x, double h,
+                                                  ElementId hint = invalid_id);
+
+// The element containing x (closed, reference positions) by the walk-then-scan described
+// above, or invalid_id. Planar triangle meshes only (invalid_id otherwise).
+SXK_API ElementId locate_triangle(const Mesh& mesh, const Point& x, ElementId hint = invalid_id);
+
+}  // namespace sxk

@@ -1,0 +1,272 @@
+// Node removal by ear flips (thesis §5.3.1, Fig. 5.10), made on a scratch copy of the link and
+// written by one replace-elements call (§7.3).
+#include "sxk/ops/remove_node.hpp"
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "sxk/traversal.hpp"
+
+namespace sxk {
+namespace {
+
+using Triangle = std::array<VertexId, 3>;  // counter-clockwise
+
+constexpr std::array<Positions, 2> both_positions{Positions::reference, Positions::deformed};
+
+const char* positions_name(Positions positions) {
+    return positions == Positions::reference ? "reference" : "deformed";
+}
+
+const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
+    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+}
+
+// orient2d(a, b, c) is strictly positive in both position sets.
+bool turns_left_in_both(const Mesh& mesh, VertexId a, VertexId b, VertexId c) {
+    return std::all_of(both_positions.begin(), both_positions.end(), [&](Positions s) {
+        return orient2d(position(mesh, a, s), position(mesh, b, s), position(mesh, c, s)) ==
+               Sign::positive;
+    });
+}
+
+// u lies in the closed counter-clockwise triangle (a, b, c) in the given positions.
+bool in_closed_triangle(const Mesh& mesh, VertexId u, const Triangle& t, Positions s) {
+    const Point& p = position(mesh, u, s);
+    for (int i = 0; i < 3; ++i)
+        if (orient2d(position(mesh, t[static_cast<std::size_t>(i)], s),
+                     position(mesh, t[static_cast<std::size_t>((i + 1) % 3)], s),
+                     p) == Sign::negative)
+            return false;
+    return true;
+}
+
+// The link of v in counter-clockwise order: a cycle w_0, ..., w_{n-1} (triangle i of the star
+// is <v, w_i, w_{i+1 mod n}>) for an interior vertex, or a path w_0, ..., w_n (triangle i is
+// <v, w_i, w_{i+1}>) for a boundary vertex, whose boundary edges are w_n-v and v-w_0.
+struct Link {
+    std::vector<VertexId> vertices;
+    bool closed = false;
+};
+
+Link link_of(const Mesh& mesh, VertexId v, const std::vector<ElementId>& around) {
+    // each star triangle, in its positive vertex order rotated to start at v, is <v, x, y>
+    std::vector<std::pair<VertexId, VertexId>> link_edges;
+    for (ElementId t : around) {
+        const Simplex& s = mesh.simplex(t);
+        Triangle order = s.sign() > 0 ? Triangle{s.vertex(0), s.vertex(1), s.vertex(2)}
+                                      : Triangle{s.vertex(1), s.vertex(0), s.vertex(2)};
+        while (order[0] != v)
+            std::rotate(order.begin(), order.begin() + 1, order.end());
+        link_edges.emplace_back(order[1], order[2]);
+    }
+    // a path starts at the one source that is no edge's target; a cycle anywhere
+    VertexId first = link_edges.front().first;
+    for (const auto& edge : link_edges)
+        if (std::none_of(link_edges.begin(), link_edges.end(),
+                         [&](const auto& e) { return e.second == edge.first; }))
+            first = edge.first;
+    Link link{{first}, false};
+    while (link.vertices.size() <= link_edges.size()) {
+        const auto next = std::find_if(link_edges.begin(), link_edges.end(), [&](const auto& e) {
+            return e.first == link.vertices.back();
+        });
+        if (next == link_edges.end())
+            break;
+        if (next->second == link.vertices.front()) {
+            link.closed = true;
+            break;
+        }
+        link.vertices.push_back(next->second);
+    }
+    return link;
+}
+
+// v lies on the open segment w-u, exactly (in both position sets): the boundary is straight
+// at v, and removing v keeps the domain.
+bool strictly_between(const Mesh& mesh, VertexId w, VertexId v, VertexId u) {
+    return std::all_of(both_positions.begin(), both_positions.end(), [&](Positions s) {
+        const Point &a = position(mesh, w, s), &p = position(mesh, v, s), &b = position(mesh, u, s);
+        if (orient2d(a, p, b) != Sign::zero)
+            return false;
+        // collinear: compare along an axis on which the segment is not degenerate
+        const std::size_t k = a[0] != b[0] ? 0 : 1;
+        return std::min(a[k], b[k]) < p[k] && p[k] < std::max(a[k], b[k]);
+    });
+}
+
+// Lawson flips restricted to the diagonals of the hole (edges shared by two scratch triangles):
+// the polygon's own edges belong to the rest of the mesh and stay. A flip is made when the
+// opposite vertex is strictly inside the circumcircle in `positions` AND both new triangles are
+// strictly counter-clockwise in both position sets, so every step keeps a valid triangulation
+// and each flip lowers the lifted surface in `positions` (termination).
+void make_hole_delaunay(const Mesh& mesh, std::vector<Triangle>& triangles, Positions positions) {
+    // the triangle holding the directed edge a -> b, and its third vertex
+    auto find = [&](VertexId a, VertexId b, std::size_t& index, VertexId& third) {
+        for (std::size_t i = 0; i < triangles.size(); ++i)
+            for (std::size_t k = 0; k < 3; ++k)
+                if (triangles[i][k] == a && triangles[i][(k + 1) % 3] == b) {
+                    index = i;
+                    third = triangles[i][(k + 2) % 3];
+                    return true;
+                }
+        return false;
+    };
+    std::vector<std::pair<VertexId, VertexId>> stack;
+    for (const Triangle& t : triangles)
+        for (std::size_t k = 0; k < 3; ++k)
+            stack.emplace_back(t[k], t[(k + 1) % 3]);
+    while (!stack.empty()) {
+        const auto [a, b] = stack.back();
+        stack.pop_back();
+        std::size_t i0 = 0, i1 = 0;
+        VertexId c = invalid_id, d = invalid_id;
+        if (!find(a, b, i0, c) || !find(b, a, i1, d))
+            continue;  // a polygon edge, or gone
+        if (incircle(position(mesh, a, positions), position(mesh, b, positions),
+                     position(mesh, c, positions), position(mesh, d, positions)) != Sign::positive)
+            continue;
+        if (!turns_left_in_both(mesh, a, d, c) || !turns_left_in_both(mesh, d, b, c))
+            continue;
+        triangles[i0] = {a, d, c};
+        triangles[i1] = {d, b, c};
+        for (auto edge : {std::pair{a, d}, std::pair{d, b}, std::pair{b, c}, std::pair{c, a}})
+            stack.push_back(edge);
+    }
+}
+
+}  // namespace
+
+Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions positions) {
+    if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
+        return Refusal{
+            "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)"};
+    if (v >= mesh.vertex_count())
+        return Refusal{"remove_node: " + std::to_string(v) + " is not a vertex"};
+    const std::vector<ElementId> around = star(mesh, v);
+    const std::string vertex_text = "vertex " + std::to_string(v);
+    if (around.empty())
+        return Refusal{"remove_node: " + vertex_text + " is in no element"};
+
+    const Link link = link_of(mesh, v, around);
+    const bool interior = link.closed && link.vertices.size() == around.size();
+    const bool straight_boundary =
+        !link.closed && link.vertices.size() == around.size() + 1 &&
+        strictly_between(mesh, link.vertices.back(), v, link.vertices.front());
+    if (!interior && !straight_boundary)
+        return Refusal{"remove_node: " + vertex_text +
+                       " is on the boundary and the boundary is not straight there (its removal "
+                       "would change the domain)"};
+    // On a straight boundary the two boundary edges w_n-v and v-w_0 become one, w_n-w_0: a face
+    // label (Medit/Gmsh boundary reference) they carry moves to it, if they agree.
+    const auto edge_key = [](VertexId a, VertexId b) {
+        return Simplex(+1, {std::min(a, b), std::max(a, b)});
+    };
+    std::optional<int> boundary_label;
+    if (straight_boundary) {
+        auto label_of = [&](VertexId a, VertexId b) -> std::optional<int> {
+            const auto it = mesh.face_labels().find(edge_key(a, b));
+            return it == mesh.face_labels().end() ? std::nullopt : std::optional<int>(it->second);
+        };
+        const std::optional<int> before = label_of(link.vertices.back(), v),
+                                 after = label_of(v, link.vertices.front());
+        auto text = [](const std::optional<int>& label) {
+            return label ? std::to_string(*label) : std::string("none");
+        };
+        if (before != after)
+            return Refusal{"remove_node: the boundary edges at " + vertex_text +
+                           " carry different face labels (" + text(before) + " and " + text(after) +
+                           ")"};
+        boundary_label = before;
+    }
+    // An interior edge v-w carrying a face label (a constraint: an interface drawn as edges)
+    // would vanish with v; on an open link the first and last edges are the boundary ones above.
+    for (std::size_t i = 0; i < link.vertices.size(); ++i) {
+        if (!link.closed && (i == 0 || i + 1 == link.vertices.size())) continue;
+        const auto it = mesh.face_labels().find(edge_key(v, link.vertices[i]));
+        if (it != mesh.face_labels().end())
+            return Refusal{"remove_node: the edge " + to_text(it->first) + " at " + vertex_text +
+                           " carries face label " + std::to_string(it->second) +
+                           " (a constraint)"};
+    }
+    for (ElementId t : around)
+        for (Positions s : both_positions)
+            if (element_orientation(mesh, t, s) != Sign::positive)
+                return Refusal{"remove_node: element " + std::to_string(t) + " of the star of " +
+                               vertex_text + " is not counter-clockwise in the " +
+                               positions_name(s) + " positions"};
+    const auto [lowest, highest] = std::minmax_element(
+        around.begin(), around.end(),
+        [&](ElementId s, ElementId t) { return mesh.label(s) < mesh.label(t); });
+    if (mesh.label(*lowest) != mesh.label(*highest))
+        return Refusal{"remove_node: the star of " + vertex_text + " mixes element labels " +
+                       std::to_string(mesh.label(*lowest)) + " and " +
+                       std::to_string(mesh.label(*highest))};
+
+    // Ear clipping on the scratch polygon (thesis: flip ears until v has degree 3).
+    std::vector<VertexId> polygon = link.vertices;
+    std::vector<Triangle> triangles;
+    auto ear_at = [&](std::size_t i) {
+        const std::size_t n = polygon.size();
+        return Triangle{polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]};
+    };
+    auto is_ear = [&](std::size_t i) {
+        const Triangle ear = ear_at(i);
+        if (!turns_left_in_both(mesh, ear[0], ear[1], ear[2]))
+            return false;
+        for (VertexId u : polygon) {
+            if (u == ear[0] || u == ear[1] || u == ear[2])
+                continue;
+            for (Positions s : both_positions)
+                if (in_closed_triangle(mesh, u, ear, s))
+                    return false;
+        }
+        return true;
+    };
+    // thesis ear: flipping v-w_i is valid, i.e. v sees the chord w_{i-1}-w_{i+1} strictly
+    auto is_thesis_ear = [&](std::size_t i) {
+        const Triangle ear = ear_at(i);
+        return turns_left_in_both(mesh, v, ear[0], ear[2]) && is_ear(i);
+    };
+    while (polygon.size() > 3) {
+        std::size_t chosen = polygon.size();
+        for (std::size_t i = 0; i < polygon.size() && chosen == polygon.size(); ++i)
+            if (is_thesis_ear(i))
+                chosen = i;
+        for (std::size_t i = 0; i < polygon.size() && chosen == polygon.size(); ++i)
+            if (is_ear(i))
+                chosen = i;
+        if (chosen == polygon.size())
+            return Refusal{"remove_node: no ear of the link of " + vertex_text +
+                           " is valid in both the reference and the deformed positions"};
+        triangles.push_back(ear_at(chosen));
+        polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(chosen));
+    }
+    // the last three: v's degree-3 star becomes one triangle (positive: the polygon is simple)
+    if (!turns_left_in_both(mesh, polygon[0], polygon[1], polygon[2]))
+        return Refusal{"remove_node: no ear of the link of " + vertex_text +
+                       " is valid in both the reference and the deformed positions"};
+    triangles.push_back({polygon[0], polygon[1], polygon[2]});
+
+    // thesis: "the involved edges are flipped back if they violate the empty-circle criterion"
+    make_hole_delaunay(mesh, triangles, positions);
+
+    std::vector<Simplex> simplexes;
+    for (const Triangle& t : triangles)
+        simplexes.emplace_back(+1, std::initializer_list<VertexId>{t[0], t[1], t[2]});
+    const std::vector<int> labels(simplexes.size(), mesh.label(around.front()));
+    auto replaced = mesh.replace_elements(around, simplexes, labels);
+    if (!replaced)
+        return Refusal{"remove_node: " + replaced.reason()};
+    if (boundary_label) {
+        mesh.face_labels().erase(edge_key(link.vertices.back(), v));
+        mesh.face_labels().erase(edge_key(v, link.vertices.front()));
+        mesh.face_labels()[edge_key(link.vertices.back(), link.vertices.front())] = *boundary_label;
+    }
+    return std::move(*replaced);
+}
+
+}  // namespace sxk
