@@ -1,0 +1,56 @@
+// Local refinement of a tetrahedral mesh around a point by conforming bisection (thesis §6.5
+// refine-around(x, h), in 3D as in the thesis' Figure 6.13):
+//
+//     t <- tetrahedron containing x
+//     while |refinement edge of t| > h:  bisect_tetrahedron(t);  t <- tetrahedron containing x
+//
+//          +-----------+            +-----------+          the tetrahedra around x are bisected
+//          |\         /|            |\    |    /|          until their refinement edges are at
+//          |  \     /  |   refine   |  \--+--/  |          most h long; neighbours are bisected
+//          |    \ /  x |  ------->  |--+-\|/-x+-|          as far as conformity needs (no
+//          |    / \    |   around   |  /--+--\  |          hanging nodes ever: every split
+//          |  /     \  |            |/    |    \|          halves all tetrahedra around its edge)
+//          +-----------+            +-----------+
+//
+// Lengths and point location use the reference positions. Point location is a visibility walk
+// through face neighbours with exact orient3d (started from the last bisection's children, so a
+// call costs what it refines, not the mesh size); a walk that reaches the boundary (x outside,
+// or a non-convex domain in the way) or takes too many steps falls back to testing every element.
+//
+// Contract (refine_around_tetrahedra):
+//   Before: a valid tetrahedral mesh; x in the mesh (on its boundary counts); h > 0.
+//   After: the tetrahedron containing x has a refinement edge of length <= h; the mesh is valid,
+//   conforming, and covers the same domain (same volume, same boundary surface); every new
+//   element is a bisection child (positive when its parent was). Returns the number of edges
+//   bisected (0 when nothing needed refining).
+// Refusals (mesh and state untouched), reasons begin with "refine_around_tetrahedra: ":
+//   "the mesh has triangles, not tetrahedra"; "h = <h> is not positive" (also NaN);
+//   "point (x, y, z) is not in the mesh"; "the bisection state is stale: <why>". A refusal of a
+//   split in the middle (rounding, for absurdly small h) is passed on; bisections before it stay.
+#pragma once
+
+#include <cstddef>
+
+#include "sxk/config.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/ops/tet_bisection.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk {
+
+// The element of a tetrahedral mesh containing x (reference positions; closed elements, so a
+// point on a shared face may get either), walking from `start` (any element id; a dead or
+// invalid one starts at the first live element). invalid_id when x is in no element.
+SXK_API ElementId locate_tetrahedron(const Mesh& mesh, const Point& x, ElementId start);
+
+// Refines with an existing bisection state (its marking carries over between calls).
+SXK_API Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x,
+                                                      double h);
+
+// For `sxk refine` and any mesh: longest-edge bisection, the rule of
+// TetBisection::with_initial_marking, without a state: that rule's marks are a function of the
+// reference positions, computed when needed, so a call costs what it refines (no pass over the
+// mesh) and calls in a row give the same mesh as one TetBisection session would.
+SXK_API Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h);
+
+}  // namespace sxk

@@ -1,0 +1,152 @@
+// refine_around_tetrahedra: thesis §6.5 refine-around(x, h) in 3D, on bisect_tetrahedron.
+#include "sxk/ops/refine_around_tetrahedra.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "ops/tet_bisection_recursion.hpp"
+#include "sxk/ops/split_edge.hpp"
+#include "sxk/predicates.hpp"
+
+namespace sxk {
+
+namespace {
+
+// True when x lies strictly beyond face i of element simplex s (the face opposite vertex i):
+// replacing vertex i by x turns the positive element negative.
+bool beyond_face(const Mesh& mesh, const Simplex& s, int i, const Point& x) {
+    std::array<const Point*, 4> p{};
+    for (int j = 0; j < 4; ++j)
+        p[static_cast<std::size_t>(j)] = j == i ? &x : &mesh.reference(s.vertex(j));
+    const Sign raw = orient3d(*p[0], *p[1], *p[2], *p[3]);
+    return static_cast<int>(raw) * s.sign() < 0;
+}
+
+bool contains_point(const Mesh& mesh, ElementId t, const Point& x) {
+    const Simplex& s = mesh.simplex(t);
+    for (int i = 0; i < 4; ++i)
+        if (beyond_face(mesh, s, i, x)) return false;
+    return true;
+}
+
+std::string point_text(const Point& x) {
+    std::ostringstream out;
+    out << '(' << x[0] << ", " << x[1] << ", " << x[2] << ')';
+    return out.str();
+}
+
+double edge_length(const Mesh& mesh, const std::array<VertexId, 2>& e) {
+    const Point& p = mesh.reference(e[0]);
+    const Point& q = mesh.reference(e[1]);
+    return std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
+                     (q[2] - p[2]) * (q[2] - p[2]));
+}
+
+}  // namespace
+
+ElementId locate_tetrahedron(const Mesh& mesh, const Point& x, ElementId start) {
+    if (mesh.topological_dimension() != 3) return invalid_id;
+    for (double c : x)
+        if (!std::isfinite(c)) return invalid_id;
+    ElementId t = start;
+    if (!mesh.is_element(t)) {
+        const auto first = elements(mesh).begin();
+        if (first == elements(mesh).end()) return invalid_id;
+        t = *first;
+    }
+    // Visibility walk: step through a face that has x strictly beyond it. The face tried first
+    // rotates from step to step, which keeps the walk from circling in non-Delaunay meshes; the
+    // step bound is a guard only (walks in a mesh of n elements take about n^(1/3) steps).
+    constexpr std::size_t max_steps = std::size_t{1} << 16;
+    for (std::size_t step = 0; step < max_steps; ++step) {
+        const Simplex& s = mesh.simplex(t);
+        ElementId next = t;
+        for (int k = 0; k < 4; ++k) {
+            const int i = static_cast<int>((static_cast<std::size_t>(k) + step) % 4);
+            if (beyond_face(mesh, s, i, x)) {
+                next = mesh.neighbor(t, i);
+                break;
+            }
+        }
+        if (next == t) return t;
+        if (next == invalid_id) break;  // the walk left the mesh: x is outside, or behind a bay
+        t = next;
+    }
+    // x outside, or a non-convex domain blocked the walk: test every element (linear, but only
+    // reached for points that are not where the walk can see them).
+    for (ElementId u : elements(mesh))
+        if (contains_point(mesh, u, x)) return u;
+    return invalid_id;
+}
+
+Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h) {
+    Mesh& mesh = state.mesh();
+    if (mesh.topological_dimension() != 3)
+        return Refusal{"refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
+    if (!(h > 0)) {  // negated so that NaN is refused too
+        std::ostringstream out;
+        out << "refine_around_tetrahedra: h = " << h << " is not positive";
+        return Refusal{out.str()};
+    }
+    if (state.is_stale())
+        return Refusal{"refine_around_tetrahedra: the bisection state is stale: " +
+                       state.stale_reason()};
+    ElementId t = locate_tetrahedron(mesh, x, state.last_child());
+    if (t == invalid_id)
+        return Refusal{"refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+
+    std::size_t bisections = 0;
+    while (edge_length(mesh, state.refinement_edge(t)) > h) {
+        auto bisected = bisect_tetrahedron(state, t);
+        if (!bisected.ok()) return Refusal{"refine_around_tetrahedra: " + bisected.reason()};
+        bisections += *bisected;
+        // bisection keeps the domain, so x stays inside; the last children are next to it
+        t = locate_tetrahedron(mesh, x, state.last_child());
+        if (t == invalid_id)
+            return Refusal{"refine_around_tetrahedra: point " + point_text(x) +
+                           " was lost after a bisection"};
+    }
+    return bisections;
+}
+
+Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h) {
+    if (mesh.topological_dimension() != 3)
+        return Refusal{"refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
+    if (!(h > 0)) {
+        std::ostringstream out;
+        out << "refine_around_tetrahedra: h = " << h << " is not positive";
+        return Refusal{out.str()};
+    }
+    // The longest-edge rule needs no stored marks: the refinement edge of an element is a
+    // function of its vertices' reference positions, computed when asked. So this costs what it
+    // refines (no pass over the mesh), and calls in a row are one longest-edge session.
+    auto longest_edge = [&](ElementId u) {
+        const TetMarking marking = longest_edge_marking(mesh, u);
+        return std::array<VertexId, 2>{marking.vertices[0], marking.vertices[1]};
+    };
+    ElementId hint = invalid_id;
+    auto split = [&](VertexId a, VertexId b, std::span<const ElementId>) {
+        auto result = split_edge(mesh, a, b, 0.5);
+        if (result.ok() && !result->elements.empty()) hint = result->elements.back();
+        return result;
+    };
+    ElementId t = locate_tetrahedron(mesh, x, hint);
+    if (t == invalid_id)
+        return Refusal{"refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+    std::size_t bisections = 0;
+    while (edge_length(mesh, longest_edge(t)) > h) {
+        bool did_not_end = false;
+        auto bisected = detail::bisect_recursively(mesh, longest_edge(t), longest_edge, split,
+                                                   did_not_end);
+        if (!bisected.ok()) return Refusal{"refine_around_tetrahedra: " + bisected.reason()};
+        bisections += *bisected;
+        t = locate_tetrahedron(mesh, x, hint);
+        if (t == invalid_id)
+            return Refusal{"refine_around_tetrahedra: point " + point_text(x) +
+                           " was lost after a bisection"};
+    }
+    return bisections;
+}
+
+}  // namespace sxk

@@ -1,0 +1,311 @@
+// TetBisection: Maubach's (1995) newest-vertex bisection in the marked-tetrahedron form of
+// Arnold, Mukherjee & Pouly (2000) for Kuhn meshes, and longest-edge bisection (Rivara) for any
+// tetrahedral mesh, kept beside the mesh (see the header).
+#include "sxk/ops/tet_bisection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+namespace sxk {
+
+namespace {
+
+using Edge = std::array<VertexId, 2>;
+
+Edge sorted_edge(VertexId u, VertexId v) { return u < v ? Edge{u, v} : Edge{v, u}; }
+
+// The strict total order on edges of the initial marking: squared length in the reference
+// positions, then the vertex ids. Computed from the sorted pair, so every element sees the same
+// value for a shared edge.
+struct EdgeKey {
+    double length_squared;
+    VertexId low, high;
+    friend bool operator<(const EdgeKey& p, const EdgeKey& q) {
+        return std::tie(p.length_squared, p.low, p.high) <
+               std::tie(q.length_squared, q.low, q.high);
+    }
+};
+
+EdgeKey edge_key(const Mesh& mesh, VertexId u, VertexId v) {
+    const Edge e = sorted_edge(u, v);
+    const Point& p = mesh.reference(e[0]);
+    const Point& q = mesh.reference(e[1]);
+    double sum = 0;
+    for (std::size_t k = 0; k < 3; ++k) sum += (q[k] - p[k]) * (q[k] - p[k]);
+    return {sum, e[0], e[1]};
+}
+
+// The vertex of face {x,y,z} that is not on the face's longest edge.
+VertexId unmarked_of_longest(const Mesh& mesh, VertexId x, VertexId y, VertexId z) {
+    const EdgeKey xy = edge_key(mesh, x, y), yz = edge_key(mesh, y, z), xz = edge_key(mesh, x, z);
+    if (yz < xy && xz < xy) return z;
+    if (xy < yz && xz < yz) return x;
+    return y;
+}
+
+// A marking from the four vertices, the refinement edge and the mark of every face (face i is
+// the face opposite faces_opposite[i], marked marks[i]).
+TetMarking marking_from_faces(const std::array<VertexId, 4>& vertices, const Edge& refinement,
+                              const std::array<VertexId, 4>& faces_opposite,
+                              const std::array<Edge, 4>& marks, bool flagged,
+                              std::uint32_t generation) {
+    TetMarking result;
+    result.vertices[0] = refinement[0];
+    result.vertices[1] = refinement[1];
+    std::size_t next = 2;
+    for (VertexId v : vertices)
+        if (v != refinement[0] && v != refinement[1]) result.vertices[next++] = v;
+    auto unmarked_of = [&](VertexId opposite) {
+        for (std::size_t i = 0; i < 4; ++i)
+            if (faces_opposite[i] == opposite)
+                for (VertexId v : vertices)
+                    if (v != opposite && v != marks[i][0] && v != marks[i][1]) return v;
+        return invalid_id;
+    };
+    result.acd_unmarked = unmarked_of(result.vertices[1]);  // face acd is opposite b
+    result.bcd_unmarked = unmarked_of(result.vertices[0]);  // face bcd is opposite a
+    result.flagged = flagged;
+    result.generation = generation;
+    return result;
+}
+
+}  // namespace
+
+TetType tet_type(const TetMarking& marking) {
+    const VertexId a = marking.vertices[0], b = marking.vertices[1];
+    const bool acd_opposite = marking.acd_unmarked == a;  // cd marked
+    const bool bcd_opposite = marking.bcd_unmarked == b;
+    if (acd_opposite && bcd_opposite) return TetType::opposite;
+    if (acd_opposite || bcd_opposite) return TetType::mixed;
+    // both marks touch ab: (ac, bc) or (ad, bd) lie in one plane with ab
+    if (marking.acd_unmarked == marking.bcd_unmarked)
+        return marking.flagged ? TetType::planar_flagged : TetType::planar_unflagged;
+    return TetType::adjacent;
+}
+
+std::array<VertexId, 2> face_mark(const TetMarking& marking, VertexId opposite) {
+    const auto& v = marking.vertices;
+    if (opposite == v[2] || opposite == v[3]) return sorted_edge(v[0], v[1]);
+    // face acd (opposite b) or bcd (opposite a)
+    const VertexId unmarked = opposite == v[1] ? marking.acd_unmarked : marking.bcd_unmarked;
+    Edge mark{invalid_id, invalid_id};
+    std::size_t next = 0;
+    for (VertexId w : v)
+        if (w != opposite && w != unmarked && next < 2) mark[next++] = w;
+    return sorted_edge(mark[0], mark[1]);
+}
+
+std::array<TetMarking, 2> bisected_markings(const TetMarking& parent, VertexId m) {
+    const VertexId a = parent.vertices[0], b = parent.vertices[1];
+    const VertexId c = parent.vertices[2], d = parent.vertices[3];
+    const TetType type = tet_type(parent);
+    const Edge acd_mark = face_mark(parent, b);
+    const Edge bcd_mark = face_mark(parent, a);
+    // AMP: the new face cdm is marked cd, except below a Pf parent, where it is marked m-s with
+    // s the vertex both marks of acd and bcd share (this turns the children into type A; on
+    // Kuhn meshes it is Maubach's tag 1 -> tag 3 step).
+    Edge new_mark = sorted_edge(c, d);
+    if (type == TetType::planar_flagged) {
+        const VertexId shared = parent.acd_unmarked == c ? d : c;
+        new_mark = sorted_edge(m, shared);
+    }
+    const bool flagged = type == TetType::planar_unflagged;
+    const std::uint32_t generation = parent.generation + 1;
+    // T1 = {a,c,d,m}: faces opposite m (acd), d (acm), c (adm), a (cdm)
+    const TetMarking first = marking_from_faces(
+        {a, c, d, m}, acd_mark, {m, d, c, a},
+        {acd_mark, sorted_edge(a, c), sorted_edge(a, d), new_mark}, flagged, generation);
+    const TetMarking second = marking_from_faces(
+        {b, c, d, m}, bcd_mark, {m, d, c, b},
+        {bcd_mark, sorted_edge(b, c), sorted_edge(b, d), new_mark}, flagged, generation);
+    return {first, second};
+}
+
+// ---- construction -------------------------------------------------------------------------------
+
+TetBisection::TetBisection(Mesh& mesh, std::vector<TetMarking> markings, BisectionRule rule)
+    : m_mesh(&mesh), m_markings(std::move(markings)), m_rule(rule) {
+    attach();
+}
+
+void TetBisection::attach() {
+    // add_watcher calls init at once; that first init is ours, not a foreign edit
+    m_own_edit = true;
+    m_mesh->add_watcher(*this);
+    m_own_edit = false;
+}
+
+TetBisection::TetBisection(TetBisection&& other) noexcept
+    : Watcher(),
+      m_mesh(other.m_mesh),
+      m_markings(std::move(other.m_markings)),
+      m_rule(other.m_rule),
+      m_stale_reason(std::move(other.m_stale_reason)),
+      m_last_child(other.m_last_child) {
+    if (m_mesh) {
+        m_mesh->remove_watcher(other);
+        other.m_mesh = nullptr;
+        attach();
+    }
+}
+
+TetBisection& TetBisection::operator=(TetBisection&& other) noexcept {
+    if (this == &other) return *this;
+    if (m_mesh) m_mesh->remove_watcher(*this);
+    m_mesh = other.m_mesh;
+    m_markings = std::move(other.m_markings);
+    m_rule = other.m_rule;
+    m_stale_reason = std::move(other.m_stale_reason);
+    m_last_child = other.m_last_child;
+    if (m_mesh) {
+        m_mesh->remove_watcher(other);
+        other.m_mesh = nullptr;
+        attach();
+    }
+    return *this;
+}
+
+TetBisection::~TetBisection() {
+    if (m_mesh) m_mesh->remove_watcher(*this);
+}
+
+TetMarking longest_edge_marking(const Mesh& mesh, ElementId t) {
+    const auto v = mesh.simplex(t).vertices();
+    // refinement edge = the longest edge of the tetrahedron, face marks = the longest edge of
+    // each face, under one strict order (so neighbours agree on every face)
+    std::size_t best_i = 0, best_j = 1;
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j)
+            if (edge_key(mesh, v[best_i], v[best_j]) < edge_key(mesh, v[i], v[j])) {
+                best_i = i;
+                best_j = j;
+            }
+    TetMarking marking;
+    marking.vertices[0] = v[best_i];
+    marking.vertices[1] = v[best_j];
+    std::size_t next = 2;
+    for (std::size_t i = 0; i < 4; ++i)
+        if (i != best_i && i != best_j) marking.vertices[next++] = v[i];
+    const auto& [a, b, c, d] = marking.vertices;
+    marking.acd_unmarked = unmarked_of_longest(mesh, a, c, d);
+    marking.bcd_unmarked = unmarked_of_longest(mesh, b, c, d);
+    return marking;
+}
+
+Outcome<TetBisection> TetBisection::with_initial_marking(Mesh& mesh) {
+    if (mesh.topological_dimension() != 3)
+        return Refusal{"tet_bisection: the mesh has triangles, not tetrahedra"};
+    std::vector<TetMarking> markings(mesh.element_capacity());
+    for (ElementId t : elements(mesh)) markings[t] = longest_edge_marking(mesh, t);
+    return TetBisection(mesh, std::move(markings), BisectionRule::longest_edge);
+}
+
+Outcome<TetBisection> TetBisection::for_kuhn_mesh(Mesh& mesh) {
+    if (mesh.topological_dimension() != 3)
+        return Refusal{"tet_bisection: the mesh has triangles, not tetrahedra"};
+    std::vector<TetMarking> markings(mesh.element_capacity());
+    for (ElementId t : elements(mesh)) {
+        // Maubach's tuple: the vertices by increasing coordinate sum; consecutive ones must
+        // differ by one positive step along a different axis each, all of the same length
+        std::array<VertexId, 4> x{};
+        const auto v = mesh.simplex(t).vertices();
+        std::copy(v.begin(), v.end(), x.begin());
+        auto coordinate_sum = [&](VertexId u) {
+            const Point& p = mesh.reference(u);
+            return p[0] + p[1] + p[2];
+        };
+        std::sort(x.begin(), x.end(),
+                  [&](VertexId p, VertexId q) { return coordinate_sum(p) < coordinate_sum(q); });
+        bool kuhn = true;
+        std::array<bool, 3> axis_used{false, false, false};
+        double step_length = 0;
+        for (std::size_t s = 0; s < 3 && kuhn; ++s) {
+            const Point& p = mesh.reference(x[s]);
+            const Point& q = mesh.reference(x[s + 1]);
+            // the step's main axis, then: positive, unused, the others ~0, same length as step 0
+            std::size_t axis = 0;
+            for (std::size_t k = 1; k < 3; ++k)
+                if (std::abs(q[k] - p[k]) > std::abs(q[axis] - p[axis])) axis = k;
+            const double delta = q[axis] - p[axis];
+            if (s == 0) step_length = delta;
+            const double tolerance = 1e-9 * std::abs(step_length);
+            if (!(delta > 0) || axis_used[axis] || std::abs(delta - step_length) > tolerance)
+                kuhn = false;
+            for (std::size_t k = 0; k < 3; ++k)
+                if (k != axis && std::abs(q[k] - p[k]) > tolerance) kuhn = false;
+            axis_used[axis] = true;
+        }
+        if (!kuhn)
+            return Refusal{"tet_bisection: element " + std::to_string(t) +
+                               " is not a Kuhn tetrahedron",
+                           t};
+        // tag 3: refinement edge x0-x3; face x0x1x2 marked x0x2 (unmarked x1), face x1x2x3
+        // marked x1x3 (unmarked x2): type A
+        TetMarking& marking = markings[t];
+        marking.vertices = {x[0], x[3], x[1], x[2]};
+        marking.acd_unmarked = x[1];
+        marking.bcd_unmarked = x[2];
+    }
+    TetBisection state(mesh, std::move(markings), BisectionRule::newest_vertex);
+    if (auto check = state.check_marking(); !check.ok()) return check.refusal();
+    return state;
+}
+
+Outcome<Done> TetBisection::check_marking() const {
+    const Mesh& mesh = *m_mesh;
+    for (ElementId t : elements(mesh)) {
+        const TetMarking& marking = m_markings[t];
+        auto sorted = marking.vertices;
+        std::sort(sorted.begin(), sorted.end());
+        const auto v = mesh.simplex(t).vertices();
+        if (!std::equal(sorted.begin(), sorted.end(), v.begin()))
+            return Refusal{"tet_bisection: the marking of element " + std::to_string(t) +
+                               " names other vertices than the element",
+                           t};
+        for (int i = 0; i < 4; ++i) {
+            const FaceId f = mesh.face(t, i);
+            const FaceId other = mesh.mate(f);
+            if (other == invalid_id) continue;
+            const ElementId u = mesh.face_element(other);
+            const Edge mine = face_mark(marking, mesh.simplex(t).vertex(i));
+            const Edge theirs = face_mark(m_markings[u], mesh.opposite_vertex(u, other));
+            if (mine != theirs)
+                return Refusal{"tet_bisection: elements " + std::to_string(t) + " and " +
+                                   std::to_string(u) + " disagree on the marked edge of face " +
+                                   to_text(mesh.face_simplex(f)),
+                               t};
+        }
+    }
+    return Done{};
+}
+
+// ---- watching the mesh ----------------------------------------------------------------------
+
+void TetBisection::foreign_edit(const std::string& what) {
+    if (m_own_edit || !m_stale_reason.empty()) return;
+    m_stale_reason = "the mesh was edited outside the bisection (" + what + ")";
+}
+
+void TetBisection::init(const Mesh&) { foreign_edit("its elements were assigned anew"); }
+void TetBisection::element_removed(const Mesh&, ElementId element, const Simplex&) {
+    foreign_edit("element " + std::to_string(element) + " removed");
+}
+void TetBisection::element_changed(const Mesh&, ElementId element, const Simplex&) {
+    foreign_edit("element " + std::to_string(element) + " changed");
+}
+void TetBisection::element_added(const Mesh&, ElementId element) {
+    foreign_edit("element " + std::to_string(element) + " added");
+}
+void TetBisection::boundary_removed(const Mesh&, FaceId face, const Simplex&) {
+    foreign_edit("boundary face " + std::to_string(face) + " removed");
+}
+void TetBisection::boundary_changed(const Mesh&, FaceId face, const Simplex&) {
+    foreign_edit("boundary face " + std::to_string(face) + " changed");
+}
+void TetBisection::boundary_added(const Mesh&, FaceId face) {
+    foreign_edit("boundary face " + std::to_string(face) + " added");
+}
+
+}  // namespace sxk
