@@ -109,7 +109,8 @@ TEST(SxkConvert, UnwritableOutputIsRefused) {
     write_file(mesh, two_tetrahedra_mesh);
     const ProcessResult run = sxk({"convert", mesh.string(), out.string()});
     EXPECT_EQ(run.exit_code, 1);
-    EXPECT_EQ(run.err.rfind("sxk: " + out.string() + ":0: ", 0), 0u) << run.err;
+    // the file is named once, in front
+    EXPECT_EQ(run.err, "sxk: " + out.string() + ":0: cannot write: No such file or directory\n");
 }
 
 }  // namespace

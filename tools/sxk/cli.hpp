@@ -39,11 +39,18 @@ void add_quality_command(CLI::App& app, Context& context);
 void add_plugins_command(CLI::App& app, Context& context);
 void add_components_command(CLI::App& app, Context& context);
 void add_dissect_command(CLI::App& app, Context& context);
+void add_delaunay_flip_command(CLI::App& app, Context& context);
+void add_refine_command(CLI::App& app, Context& context);
 
 // Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
 // context.err, sets context.exit_code to 2 and returns nullopt.
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options = {},
                               ReadReport* report = nullptr);
+
+// Writes a mesh under a progress indicator. On failure prints "sxk: FILE:0: reason" to
+// context.err and returns false (the caller exits with exit_refused: the mesh was read, the
+// writer refused it).
+bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options = {});
 
 // "tetrahedron" / "triangle"; element_count_text: "1 tetrahedron", "2 tetrahedra".
 const char* element_kind(const Mesh& mesh);

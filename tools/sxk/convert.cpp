@@ -38,14 +38,7 @@ int run_convert(Context& context, const ConvertOptions& options) {
 
     WriteOptions write_options;
     write_options.gmsh_version = options.gmsh_version;
-    try {
-        Progress progress("writing " + options.output);
-        write_mesh(*mesh, options.output, write_options);
-    } catch (const std::exception& error) {
-        // the mesh was read; the writer refused it (cannot open, format cannot hold it)
-        context.err << "sxk: " << options.output << ":0: " << error.what() << '\n';
-        return exit_refused;
-    }
+    if (!save_mesh(context, *mesh, options.output, write_options)) return exit_refused;
     context.out << options.input << " -> " << options.output << ": " << mesh->vertex_count() << " vertices, "
                 << element_count_text(*mesh);
     if (options.reorient) context.out << ", " << report.reoriented << " reoriented";

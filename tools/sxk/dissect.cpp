@@ -92,13 +92,7 @@ int run_dissect(Context& context, const DissectOptions& options) {
         context.err << "sxk: " << result.reason() << '\n';
         return exit_refused;
     }
-    try {
-        Progress progress("writing " + options.output);
-        write_mesh(*mesh, options.output);
-    } catch (const std::exception& error) {
-        context.err << "sxk: " << options.output << ":0: " << error.what() << '\n';
-        return exit_refused;
-    }
+    if (!save_mesh(context, *mesh, options.output)) return exit_refused;
     context.out << options.input << " -> " << options.output << ": " << list->faces.size() << " cut faces, "
                 << result->new_vertices.size() << " new vertices, " << connected_components(*mesh).count
                 << " components\n";

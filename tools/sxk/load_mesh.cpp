@@ -22,6 +22,21 @@ std::optional<Mesh> load_mesh(Context& context, const std::string& file, const R
     return std::nullopt;
 }
 
+bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options) {
+    try {
+        Progress progress("writing " + file);
+        write_mesh(mesh, file, options);
+        return true;
+    } catch (const std::exception& error) {
+        // the writers' messages read "cannot write FILE: why"; FILE is already in front
+        std::string why = error.what();
+        const std::string named = "cannot write " + file + ": ";
+        if (why.rfind(named, 0) == 0) why = "cannot write: " + why.substr(named.size());
+        context.err << "sxk: " << file << ":0: " << why << '\n';
+        return false;
+    }
+}
+
 std::string element_count_text(const Mesh& mesh, std::size_t count) {
     const bool tetrahedra = mesh.topological_dimension() == 3;
     const char* noun = count == 1 ? (tetrahedra ? "tetrahedron" : "triangle") : (tetrahedra ? "tetrahedra" : "triangles");

@@ -1,6 +1,6 @@
 // sxk: the simplexkit command-line tool (DESIGN.md "The CLI surface").
 //
-// Built-in commands (info, validate, convert, quality, components, dissect) never load plug-ins, so a broken plug-in
+// Built-in commands (info, validate, convert, quality, components, dissect, delaunay-flip, refine) never load plug-ins, so a broken plug-in
 // can neither slow them down nor crash them. Everything else loads the plug-ins first, prints
 // what was refused as "sxk: warning: PATH: reason", and dispatches plug-in commands by their
 // name words before CLI11 sees the arguments: a plug-in parses its own options and prints its
@@ -18,8 +18,9 @@
 namespace sxk::cli {
 namespace {
 
-constexpr std::array<std::string_view, 7> builtin_commands = {"info",    "validate", "convert", "quality",
-                                                                 "plugins", "components", "dissect"};
+constexpr std::array<std::string_view, 9> builtin_commands = {"info",    "validate",   "convert", "quality",
+                                                                 "plugins", "components", "dissect", "delaunay-flip",
+                                                                 "refine"};
 
 bool is_builtin(std::string_view word) {
     return std::find(builtin_commands.begin(), builtin_commands.end(), word) != builtin_commands.end();
@@ -90,6 +91,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     add_plugins_command(app, context);
     add_components_command(app, context);
     add_dissect_command(app, context);
+    add_delaunay_flip_command(app, context);
+    add_refine_command(app, context);
 
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {
         err << "sxk: unknown command '" << args[0] << "' (see sxk --help and sxk plugins)\n";

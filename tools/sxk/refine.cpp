@@ -1,0 +1,144 @@
+// sxk refine IN OUT --around X,Y[,Z] --size H [--json]: refines by edge bisection until the
+// element containing the point has edges no longer than H (thesis §6.5 refine-around;
+// sxk/ops/refine_around.hpp for triangle meshes, sxk/ops/refine_around_tetrahedra.hpp for
+// tetrahedra).
+#include <charconv>
+#include <cmath>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "progress.hpp"
+#include "sxk/ops/refine_around.hpp"
+#include "sxk/ops/refine_around_tetrahedra.hpp"
+
+namespace sxk::cli {
+namespace {
+
+struct RefineOptions {
+    std::string input;
+    std::string output;
+    std::string around;
+    double size = 0;
+    bool json = false;
+};
+
+// "X,Y" or "X,Y,Z" (Z defaults to 0); an error message for anything else.
+std::string parse_point(const std::string& text, Point& point) {
+    point = {0, 0, 0};
+    std::size_t count = 0, begin = 0;
+    for (;;) {
+        const std::size_t comma = text.find(',', begin);
+        const std::string word =
+            text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+        if (count == 3)
+            return "'" + text + "' has more than three coordinates (expected X,Y or X,Y,Z)";
+        double value = 0;
+        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+        if (word.empty() || error != std::errc() || end != word.data() + word.size() ||
+            !std::isfinite(value))
+            return "'" + word + "' in '" + text + "' is not a number (expected X,Y or X,Y,Z)";
+        point[count++] = value;
+        if (comma == std::string::npos)
+            break;
+        begin = comma + 1;
+    }
+    if (count < 2)
+        return "'" + text + "' has one coordinate (expected X,Y or X,Y,Z)";
+    return {};
+}
+
+int run_refine(Context& context, const RefineOptions& options) {
+    if (!format_from_extension(options.output)) {
+        context.err << "sxk: " << options.output
+                    << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        return exit_usage;
+    }
+    Point x{};
+    (void)parse_point(options.around, x);  // validated by the option's check
+    std::optional<Mesh> mesh = load_mesh(context, options.input);
+    if (!mesh)
+        return exit_usage;
+
+    std::size_t bisections = 0;
+    if (mesh->topological_dimension() == 3) {
+        // longest-edge bisection (the general rule of TetBisection; Maubach's on Kuhn meshes
+        // bisects the same edges), state-less: its marks are computed from the positions
+        Outcome<std::size_t> refined = std::size_t{0};
+        {
+            Progress progress("refining " + options.input);
+            refined = refine_around_tetrahedra(*mesh, x, options.size);
+        }
+        if (!refined) {
+            context.err << "sxk: " << refined.reason() << '\n';
+            return exit_refused;
+        }
+        bisections = *refined;
+    } else {
+        Outcome<RefineAroundResult> refined = RefineAroundResult{};
+        {
+            Progress progress("refining " + options.input);
+            refined = refine_around(*mesh, x, options.size);
+        }
+        if (!refined) {
+            context.err << "sxk: " << refined.reason() << '\n';
+            return exit_refused;
+        }
+        bisections = refined->bisections;
+    }
+    if (!save_mesh(context, *mesh, options.output)) return exit_refused;
+    if (options.json) {
+        nlohmann::ordered_json json;
+        json["input"] = options.input;
+        json["output"] = options.output;
+        json["bisections"] = bisections;
+        json["vertices"] = mesh->vertex_count();
+        json["elements"] = mesh->element_count();
+        context.out << json.dump(2) << '\n';
+        return exit_success;
+    }
+    context.out << options.input << " -> " << options.output << ": " << bisections
+                << (bisections == 1 ? " bisection, " : " bisections, ") << mesh->vertex_count()
+                << " vertices, " << element_count_text(*mesh) << '\n';
+    return exit_success;
+}
+
+}  // namespace
+
+void add_refine_command(CLI::App& app, Context& context) {
+    auto options = std::make_shared<RefineOptions>();
+    CLI::App* command = app.add_subcommand("refine",
+                                           "Bisect edges until the element containing a point has "
+                                           "edges no longer than a size (thesis §6.5)");
+    command->add_option("IN", options->input, "Input mesh file")->required();
+    command->add_option("OUT", options->output, "Output mesh file")->required();
+    command
+        ->add_option("--around", options->around,
+                     "The point X,Y (planar meshes) or X,Y,Z, reference positions")
+        ->required()
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                Point ignored{};
+                return parse_point(text, ignored);
+            },
+            "X,Y[,Z]"));
+    command->add_option("--size", options->size, "Largest edge length H > 0 around the point")
+        ->required()
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                double value = 0;
+                const auto [end, error] =
+                    std::from_chars(text.data(), text.data() + text.size(), value);
+                if (error != std::errc() || end != text.data() + text.size())
+                    return "'" + text + "' is not a number";
+                if (!(value > 0) || !std::isfinite(value))
+                    return "'" + text + "' is not a positive number";
+                return std::string();
+            },
+            "H > 0"));
+    command->add_flag("--json", options->json, "Print one JSON object instead of text");
+    command->callback([&context, options] { context.exit_code = run_refine(context, *options); });
+}
+
+}  // namespace sxk::cli
