@@ -1,0 +1,186 @@
+// Latency of one refine_around call on a small and a large mesh: whether the cost is local.
+//
+//   refine_latency [google-benchmark flags] [--calls=N] [--seed=S]
+//
+// Meshes (untimed): 3D Kuhn cubes of n^3 unit cubes (6 tetrahedra each): n = 12 (10,368 tets)
+// and n = 55 (998,250 tets); 2D grids of n^2 unit squares (2 triangles each): n = 71 (10,082
+// triangles) and n = 708 (1,002,528 triangles). Unit cells on both sizes, so a call with the same
+// h does the same local work; only the mesh around it is larger.
+//
+// Timed, per iteration: ONE call, refine_around_tetrahedra(mesh, x, h) in 3D (the stateless
+// longest-edge entry point) or refine_around(mesh, x, h) in 2D (no hint), at the next of N random
+// points x (std::mt19937_64 with seed S, the same points in cell units on both sizes; kept
+// 0.05 cells away from cell walls), h = 0.3 (3D) / 0.2 (2D). After every 50 calls the mesh is
+// restored from a pristine copy (untimed), so refinements do not pile up in the small mesh, and
+// room is reserved for the elements to come (untimed: growing a 1M-element pool copies it, a
+// one-off cost that would otherwise be charged to the next call).
+// Both entry points locate x themselves, by a walk from a start element (see their headers):
+// that walk is part of the call and is the part that is not local.
+//
+// Counters: calls_per_s, elements (before refining), bisections per call.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "sxk/mesh.hpp"
+#include "sxk/ops/refine_around.hpp"
+#include "sxk/ops/refine_around_tetrahedra.hpp"
+#include "sxk/predicates.hpp"
+
+namespace {
+
+constexpr int restore_every = 50;
+
+sxk::Mesh kuhn_cube(int n) {
+    sxk::Mesh mesh(3, 3);
+    mesh.reserve(static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1)),
+                 static_cast<std::size_t>(6 * n * n * n));
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), double(k)});
+    auto id = [n](int i, int j, int k) { return sxk::VertexId((k * (n + 1) + j) * (n + 1) + i); };
+    // the six monotone paths from a cube's corner (0,0,0) to (1,1,1), one tetrahedron each
+    static constexpr std::array<std::array<int, 3>, 6> orders{
+        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+    std::vector<sxk::Simplex> tets;
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                for (const auto& order : orders) {
+                    std::array<int, 3> c{i, j, k};
+                    std::array<sxk::VertexId, 4> v{};
+                    v[0] = id(c[0], c[1], c[2]);
+                    for (std::size_t step = 0; step < 3; ++step) {
+                        ++c[static_cast<std::size_t>(order[step])];
+                        v[step + 1] = id(c[0], c[1], c[2]);
+                    }
+                    const sxk::Sign s = sxk::orient3d(mesh.reference(v[0]), mesh.reference(v[1]),
+                                                      mesh.reference(v[2]), mesh.reference(v[3]));
+                    tets.emplace_back(s == sxk::Sign::negative ? -1 : +1, v);
+                }
+    if (const auto built = mesh.assign_elements(tets); !built) {
+        std::fprintf(stderr, "refine_latency: %s\n", built.reason().c_str());
+        std::exit(1);
+    }
+    return mesh;
+}
+
+sxk::Mesh grid(int n) {
+    sxk::Mesh mesh(2, 2);
+    mesh.reserve(static_cast<std::size_t>((n + 1) * (n + 1)), static_cast<std::size_t>(2 * n * n));
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), 0});
+    auto id = [n](int i, int j) { return sxk::VertexId(j * (n + 1) + i); };
+    std::vector<sxk::Simplex> triangles;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            triangles.emplace_back(+1, std::initializer_list<sxk::VertexId>{id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            triangles.emplace_back(+1, std::initializer_list<sxk::VertexId>{id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    if (const auto built = mesh.assign_elements(triangles); !built) {
+        std::fprintf(stderr, "refine_latency: %s\n", built.reason().c_str());
+        std::exit(1);
+    }
+    return mesh;
+}
+
+struct Case {
+    std::string name;
+    int dimension;
+    int n;
+    sxk::Mesh pristine;
+    std::vector<sxk::Point> points;
+};
+
+// A fresh copy with room for the refinements to come: a copy's pools are exactly full, and
+// the first edit after it would otherwise reallocate (copy) the whole pool inside the timing.
+void restore(sxk::Mesh& mesh, const sxk::Mesh& pristine) {
+    mesh = pristine;
+    mesh.reserve(pristine.vertex_count() + 100000, pristine.element_count() + 400000);
+}
+
+void run(benchmark::State& state, Case* c) {
+    sxk::Mesh mesh(c->dimension, c->dimension);
+    restore(mesh, c->pristine);
+    std::size_t next = 0, bisections = 0, calls = 0;
+    const double h = c->dimension == 3 ? 0.3 : 0.2;
+    for (auto _ : state) {
+        if (calls % restore_every == 0 && calls > 0) {
+            state.PauseTiming();
+            restore(mesh, c->pristine);
+            state.ResumeTiming();
+        }
+        const sxk::Point& x = c->points[next];
+        next = (next + 1) % c->points.size();
+        ++calls;
+        if (c->dimension == 3) {
+            const auto refined = sxk::refine_around_tetrahedra(mesh, x, h);
+            if (!refined) {
+                state.SkipWithError(("refine_around_tetrahedra refused: " + refined.reason()).c_str());
+                return;
+            }
+            bisections += *refined;
+        } else {
+            const auto refined = sxk::refine_around(mesh, x, h);
+            if (!refined) {
+                state.SkipWithError(("refine_around refused: " + refined.reason()).c_str());
+                return;
+            }
+            bisections += refined->bisections;
+        }
+    }
+    state.counters["calls_per_s"] = benchmark::Counter(1, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["elements"] = static_cast<double>(c->pristine.element_count());
+    state.counters["bisections_per_call"] =
+        calls ? static_cast<double>(bisections) / static_cast<double>(calls) : 0.0;
+}
+
+bool parse(const char* argument, const char* name, std::uint64_t& value) {
+    const std::string prefix = std::string("--") + name + "=";
+    if (std::string(argument).rfind(prefix, 0) != 0) return false;
+    value = std::strtoull(argument + prefix.size(), nullptr, 10);
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    std::uint64_t calls = 500, seed = 1;
+    for (int i = 1; i < argc; ++i)
+        if (!parse(argv[i], "calls", calls) && !parse(argv[i], "seed", seed)) {
+            std::fprintf(stderr, "usage: refine_latency [--benchmark_...] [--calls=N] [--seed=S]\n");
+            return 2;
+        }
+    std::deque<Case> cases;
+    cases.push_back({"3d/small", 3, 12, kuhn_cube(12), {}});
+    cases.push_back({"3d/large", 3, 55, kuhn_cube(55), {}});
+    cases.push_back({"2d/small", 2, 71, grid(71), {}});
+    cases.push_back({"2d/large", 2, 708, grid(708), {}});
+    for (Case& c : cases) {
+        // the same points in cell units on both sizes: a random cell, a random point inside it
+        std::mt19937_64 random(seed);
+        std::uniform_int_distribution<int> cell(0, 11);  // cells of the small cube/grid region
+        std::uniform_real_distribution<double> inside(0.05, 0.95);
+        for (std::uint64_t k = 0; k < calls; ++k) {
+            sxk::Point x{0, 0, 0};
+            for (int axis = 0; axis < c.dimension; ++axis)
+                x[static_cast<std::size_t>(axis)] = std::floor(cell(random) * c.n / 12.0) + inside(random);
+            c.points.push_back(x);
+        }
+        benchmark::RegisterBenchmark(("refine/" + c.name).c_str(), run, &c)
+            ->Unit(benchmark::kMicrosecond)
+            ->Iterations(static_cast<benchmark::IterationCount>(calls));
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
