@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "mesh_checks.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/split_result.hpp"
 #include "sxk/outcome.hpp"
@@ -95,9 +96,10 @@ inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> ch
 // and every vertex attribute, Mesh::add_interpolated_vertex); each parent is replaced by one
 // child per vertex in `replaced` (the parent with that vertex swapped for m, so orientation and
 // label follow the parent). The children are checked with m at its future position before it
-// exists; then m is added and ONE replace_elements call makes the edit. Should that call refuse
-// (it cannot on a valid mesh: every new face either was a face of a parent or contains the
-// fresh vertex, which no other element has), m is removed again (Mesh::remove_last_vertex), so
+// exists; then m is added and ONE replace_elements call (without its star walks, which the
+// split has proven) makes the edit. Should that call refuse (it cannot on a valid mesh: every
+// new face either was a face of a parent or contains the fresh vertex, which no other element
+// has), m is removed again (Mesh::remove_last_vertex), so
 // a refused split leaves the mesh exactly as it was in every case.
 inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId> parents,
                                           std::span<const VertexId> replaced,
@@ -141,7 +143,12 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
             }
     auto added = mesh.add_interpolated_vertex(replaced, weights);
     if (!added.ok()) return Refusal{std::string(operation) + ": " + added.reason()};
-    auto result = mesh.replace_elements(parents, children, labels);
+    // The star checks of replace_elements are proven (mesh_checks.hpp, ProvenEdit): (a) every
+    // child and every new face that is not a face of a parent contains m, which no element has;
+    // (b) around each vertex the children of a parent are face-connected among themselves
+    // (through the faces containing m) and keep the parent's faces that do not contain the
+    // split simplex, so every path through a star across the parents can be rerouted.
+    auto result = ProvenEdit::replace(mesh, parents, children, labels);
     if (!result.ok()) {
         (void)mesh.remove_last_vertex();  // m is in no element: the refused edit added nothing
         return Refusal{std::string(operation) + ": " + result.reason()};
