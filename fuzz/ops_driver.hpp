@@ -8,8 +8,7 @@
 //   2. a refused operation left the mesh bit for bit as it was: a full snapshot (positions as
 //      bit patterns, vertex anchors, every element slot with simplex, label and faces, every
 //      face slot with element and mate, the boundary, face labels, vertex attribute values)
-//      compares equal to the one taken before (the one documented exception:
-//      refine_around_tetrahedra keeps the bisections made before a split refused by rounding);
+//      compares equal to the one taken before;
 //   3. after a successful operation every element is strictly positive by exact orientation in
 //      both the reference and the deformed positions (triangles in space: not degenerate);
 //   4. the vertex attribute "where", registered at the start as each vertex's reference
@@ -515,12 +514,7 @@ inline Step run_step(Mesh& mesh, Choices& choices, std::size_t max_elements) {
                        " left an invalid mesh: " + valid.reason();
         return step;
     }
-    // refine_around_tetrahedra is documented not to be a transaction: a split refused in the
-    // middle (a child flat by rounding) is passed on and the bisections before it stay. The
-    // mesh must still be valid and positive, only not unchanged.
-    const bool partial = kind == 13 && d == 3 && !step.done &&
-                         reason.find("split_edge:") != std::string::npos;
-    if (!step.done && !partial) {
+    if (!step.done) {
         if (reason.empty()) step.finding = step.operation + " refused without a reason";
         else if (!(snapshot(mesh) == before))
             step.finding = step.operation + " refused (" + reason + ") but changed the mesh";

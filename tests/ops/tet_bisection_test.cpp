@@ -622,6 +622,129 @@ TEST(RefineAroundTetrahedra, LocatesAcrossANotch) {
 
 // ---- refusals ---------------------------------------------------------------------------------------
 
+// ---- a refused split in the middle of a recursion --------------------------------------------------
+
+// kuhn_cube(2) with tetrahedron 0 bisected, and a child whose bisection recurses into the next
+// cube first (as in RecursesIntoNeighboursFirst).
+ElementId recursing_child(Mesh& mesh, TetBisection& state) {
+    if (!bisect_tetrahedron(state, 0).ok()) return invalid_id;
+    ElementId child = invalid_id;
+    for (ElementId t : elements(mesh)) {
+        if (state.marking(t).generation != 1) continue;
+        const auto e = state.refinement_edge(t);
+        bool inside = true;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double middle = (mesh.reference(e[0])[k] + mesh.reference(e[1])[k]) / 2;
+            if (middle == 0 || middle == 2) inside = false;
+        }
+        if (inside) child = t;
+    }
+    return child;
+}
+
+bool same_marking(const TetMarking& p, const TetMarking& q) {
+    return p.vertices == q.vertices && p.acd_unmarked == q.acd_unmarked &&
+           p.bcd_unmarked == q.bcd_unmarked && p.flagged == q.flagged &&
+           p.generation == q.generation;
+}
+
+// Moves the deformed position of the vertex a of `t`'s marking onto the plane of b, c, d (the
+// reference positions stay): t is flat in the deformed positions, so splitting its refinement
+// edge ab, which the recursion does LAST, is refused; the split of the neighbouring cube's
+// diagonal before it is fine. Returns a.
+VertexId flatten_deformed(Mesh& mesh, const TetMarking& marking) {
+    const VertexId a = marking.vertices[0], b = marking.vertices[1];
+    const VertexId c = marking.vertices[2], d = marking.vertices[3];
+    // a' = b + (c - b) / 4 + (d - b) / 4: exactly on the plane (dyadic coordinates)
+    Point moved{};
+    for (std::size_t k = 0; k < 3; ++k)
+        moved[k] = mesh.reference(b)[k] + (mesh.reference(c)[k] - mesh.reference(b)[k]) / 4 +
+                   (mesh.reference(d)[k] - mesh.reference(b)[k]) / 4;
+    mesh.set_deformed(a, moved);
+    return a;
+}
+
+TEST(BisectTetrahedron, RefusalInTheMiddleOfTheRecursionChangesNothing) {
+    // the same refinement without the flat element: how many splits, which vertex ids
+    Mesh twin = test::kuhn_cube(2);
+    auto twin_state = TetBisection::for_kuhn_mesh(twin);
+    ASSERT_TRUE(twin_state.ok()) << twin_state.reason();
+    const ElementId twin_child = recursing_child(twin, *twin_state);
+    ASSERT_NE(twin_child, invalid_id);
+    const std::size_t base = twin.vertex_count();
+    const auto twin_bisected = bisect_tetrahedron(*twin_state, twin_child);
+    ASSERT_TRUE(twin_bisected.ok()) << twin_bisected.reason();
+    ASSERT_GE(*twin_bisected, 2u);  // the refused split below is not the first one
+
+    Mesh mesh = test::kuhn_cube(2);
+    auto state = TetBisection::for_kuhn_mesh(mesh);
+    ASSERT_TRUE(state.ok()) << state.reason();
+    const ElementId child = recursing_child(mesh, *state);
+    ASSERT_EQ(child, twin_child);
+    const TetMarking marking = state->marking(child);
+    const VertexId moved = flatten_deformed(mesh, marking);
+    const Point original = mesh.reference(moved);
+
+    const Mesh before = mesh;
+    std::vector<TetMarking> markings_before;
+    for (ElementId t : elements(mesh)) markings_before.push_back(state->marking(t));
+    test::CountingWatcher watcher;
+    mesh.add_watcher(watcher);
+
+    const auto refused = bisect_tetrahedron(*state, child);
+    ASSERT_FALSE(refused.ok());
+    // refused at the last split, of the child's own refinement edge 12-13 (after the
+    // neighbouring cube's diagonal): its midpoint would be the last new vertex, 29
+    EXPECT_EQ(base + *twin_bisected - 1, 29u);
+    EXPECT_EQ(refused.reason(), "bisect_tetrahedron: split_edge: new element -<12,13,27,29> "
+                                "would be flat in the deformed positions");
+    const auto a = marking.vertices[0], b = marking.vertices[1];
+    const auto c = marking.vertices[2], d = marking.vertices[3];
+    expect_same_state(mesh, before);
+    EXPECT_FALSE(state->is_stale()) << state->stale_reason();
+    std::size_t i = 0;
+    for (ElementId t : elements(mesh)) EXPECT_TRUE(same_marking(state->marking(t), markings_before[i++]));
+    EXPECT_EQ(watcher.inits, 1);
+    EXPECT_EQ(watcher.removed + watcher.changed + watcher.added, 0);
+    EXPECT_EQ(watcher.boundary_removed_count + watcher.boundary_changed_count +
+                  watcher.boundary_added_count,
+              0);
+
+    // refine_around, with its many bisections, is one transaction too
+    Point x{};
+    for (VertexId v : {a, b, c, d})
+        for (std::size_t k = 0; k < 3; ++k) x[k] += mesh.reference(v)[k] / 4;
+    const auto refused_around = refine_around_tetrahedra(*state, x, 0.01);
+    ASSERT_FALSE(refused_around.ok());
+    EXPECT_EQ(refused_around.reason(), "refine_around_tetrahedra: " + refused.reason());
+    expect_same_state(mesh, before);
+    EXPECT_FALSE(state->is_stale()) << state->stale_reason();
+    i = 0;
+    for (ElementId t : elements(mesh)) EXPECT_TRUE(same_marking(state->marking(t), markings_before[i++]));
+    EXPECT_EQ(watcher.removed + watcher.changed + watcher.added, 0);
+
+    // the state-less form (longest-edge marks, its own recursion) refuses untouched as well
+    const auto refused_stateless = refine_around_tetrahedra(mesh, x, 0.01);
+    ASSERT_FALSE(refused_stateless.ok());
+    EXPECT_EQ(refused_stateless.reason().rfind("refine_around_tetrahedra: split_edge: new element ", 0), 0u)
+        << refused_stateless.reason();
+    EXPECT_NE(refused_stateless.reason().find(" would be flat in the deformed positions"),
+              std::string::npos)
+        << refused_stateless.reason();
+    expect_same_state(mesh, before);
+    EXPECT_EQ(watcher.removed + watcher.changed + watcher.added, 0);
+
+    // with the vertex back in place the bisection goes through and gives the twin's mesh
+    mesh.set_deformed(moved, original);
+    mesh.remove_watcher(watcher);
+    const auto bisected = bisect_tetrahedron(*state, child);
+    ASSERT_TRUE(bisected.ok()) << bisected.reason();
+    EXPECT_EQ(*bisected, *twin_bisected);
+    expect_same_state(mesh, twin);
+    expect_conforming(*state, 8.0, 24.0);
+}
+
+
 TEST(RefineAroundTetrahedra, RefusesWithReasonAndUntouchedMesh) {
     Mesh mesh = test::kuhn_cube(1);
     auto state = TetBisection::for_kuhn_mesh(mesh);

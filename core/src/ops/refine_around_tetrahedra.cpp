@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "ops/tet_bisection_recursion.hpp"
+#include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/split_edge.hpp"
 #include "sxk/predicates.hpp"
 
@@ -34,13 +34,6 @@ std::string point_text(const Point& x) {
     std::ostringstream out;
     out << '(' << x[0] << ", " << x[1] << ", " << x[2] << ')';
     return out.str();
-}
-
-double edge_length(const Mesh& mesh, const std::array<VertexId, 2>& e) {
-    const Point& p = mesh.reference(e[0]);
-    const Point& q = mesh.reference(e[1]);
-    return std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
-                     (q[2] - p[2]) * (q[2] - p[2]));
 }
 
 }  // namespace
@@ -92,22 +85,24 @@ Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& 
     if (state.is_stale())
         return Refusal{"refine_around_tetrahedra: the bisection state is stale: " +
                        state.stale_reason()};
-    ElementId t = locate_tetrahedron(mesh, x, state.last_child());
+    const ElementId t = locate_tetrahedron(mesh, x, state.last_child());
     if (t == invalid_id)
         return Refusal{"refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
 
-    std::size_t bisections = 0;
-    while (edge_length(mesh, state.refinement_edge(t)) > h) {
-        auto bisected = bisect_tetrahedron(state, t);
-        if (!bisected.ok()) return Refusal{"refine_around_tetrahedra: " + bisected.reason()};
-        bisections += *bisected;
-        // bisection keeps the domain, so x stays inside; the last children are next to it
-        t = locate_tetrahedron(mesh, x, state.last_child());
-        if (t == invalid_id)
-            return Refusal{"refine_around_tetrahedra: point " + point_text(x) +
-                           " was lost after a bisection"};
-    }
-    return bisections;
+    // One transaction: every bisection of the call is planned on the overlay, then replayed.
+    detail::TetBisectionPlan plan(mesh, state.rule(),
+                                  [&state](ElementId u) { return state.marking(u); });
+    bool did_not_end = false;
+    auto planned = detail::plan_refine_around(plan, t, x, h, did_not_end);
+    // a marking whose chains cycle will cycle again: the state says so from now on
+    if (did_not_end) detail::TetBisectionAccess::make_stale(state, planned.reason());
+    if (!planned.ok())
+        return Refusal{"refine_around_tetrahedra: bisect_tetrahedron: " + planned.reason()};
+    if (auto replayed =
+            detail::TetBisectionAccess::replay(state, plan.splits(), "refine_around_tetrahedra");
+        !replayed.ok())
+        return replayed.refusal();
+    return planned;
 }
 
 Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h) {
@@ -118,35 +113,25 @@ Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double
         out << "refine_around_tetrahedra: h = " << h << " is not positive";
         return Refusal{out.str()};
     }
-    // The longest-edge rule needs no stored marks: the refinement edge of an element is a
-    // function of its vertices' reference positions, computed when asked. So this costs what it
-    // refines (no pass over the mesh), and calls in a row are one longest-edge session.
-    auto longest_edge = [&](ElementId u) {
-        const TetMarking marking = longest_edge_marking(mesh, u);
-        return std::array<VertexId, 2>{marking.vertices[0], marking.vertices[1]};
-    };
-    ElementId hint = invalid_id;
-    auto split = [&](VertexId a, VertexId b, std::span<const ElementId>) {
-        auto result = split_edge(mesh, a, b, 0.5);
-        if (result.ok() && !result->elements.empty()) hint = result->elements.back();
-        return result;
-    };
-    ElementId t = locate_tetrahedron(mesh, x, hint);
+    const ElementId t = locate_tetrahedron(mesh, x, invalid_id);
     if (t == invalid_id)
         return Refusal{"refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
-    std::size_t bisections = 0;
-    while (edge_length(mesh, longest_edge(t)) > h) {
-        bool did_not_end = false;
-        auto bisected = detail::bisect_recursively(mesh, longest_edge(t), longest_edge, split,
-                                                   did_not_end);
-        if (!bisected.ok()) return Refusal{"refine_around_tetrahedra: " + bisected.reason()};
-        bisections += *bisected;
-        t = locate_tetrahedron(mesh, x, hint);
-        if (t == invalid_id)
-            return Refusal{"refine_around_tetrahedra: point " + point_text(x) +
-                           " was lost after a bisection"};
-    }
-    return bisections;
+    // The longest-edge rule needs no stored marks: the refinement edge of an element is a
+    // function of its vertices' reference positions, computed when asked (the plan computes the
+    // original elements' on first use and its children's from their planned positions). So
+    // this costs what it refines (no pass over the mesh), and calls in a row are one
+    // longest-edge session.
+    detail::TetBisectionPlan plan(mesh, BisectionRule::longest_edge,
+                                  [&mesh](ElementId u) { return longest_edge_marking(mesh, u); });
+    bool did_not_end = false;
+    auto planned = detail::plan_refine_around(plan, t, x, h, did_not_end);
+    if (!planned.ok()) return Refusal{"refine_around_tetrahedra: " + planned.reason()};
+    for (const auto& e : plan.splits())
+        if (auto split = split_edge(mesh, e[0], e[1], 0.5); !split.ok())
+            return Refusal{"refine_around_tetrahedra: internal error, a planned bisection was "
+                           "refused: " +
+                           split.reason()};
+    return planned;
 }
 
 }  // namespace sxk

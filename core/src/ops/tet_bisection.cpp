@@ -3,6 +3,8 @@
 // tetrahedral mesh, kept beside the mesh (see the header).
 #include "sxk/ops/tet_bisection.hpp"
 
+#include "ops/tet_bisection_plan.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -15,35 +17,6 @@ namespace {
 using Edge = std::array<VertexId, 2>;
 
 Edge sorted_edge(VertexId u, VertexId v) { return u < v ? Edge{u, v} : Edge{v, u}; }
-
-// The strict total order on edges of the initial marking: squared length in the reference
-// positions, then the vertex ids. Computed from the sorted pair, so every element sees the same
-// value for a shared edge.
-struct EdgeKey {
-    double length_squared;
-    VertexId low, high;
-    friend bool operator<(const EdgeKey& p, const EdgeKey& q) {
-        return std::tie(p.length_squared, p.low, p.high) <
-               std::tie(q.length_squared, q.low, q.high);
-    }
-};
-
-EdgeKey edge_key(const Mesh& mesh, VertexId u, VertexId v) {
-    const Edge e = sorted_edge(u, v);
-    const Point& p = mesh.reference(e[0]);
-    const Point& q = mesh.reference(e[1]);
-    double sum = 0;
-    for (std::size_t k = 0; k < 3; ++k) sum += (q[k] - p[k]) * (q[k] - p[k]);
-    return {sum, e[0], e[1]};
-}
-
-// The vertex of face {x,y,z} that is not on the face's longest edge.
-VertexId unmarked_of_longest(const Mesh& mesh, VertexId x, VertexId y, VertexId z) {
-    const EdgeKey xy = edge_key(mesh, x, y), yz = edge_key(mesh, y, z), xz = edge_key(mesh, x, z);
-    if (yz < xy && xz < xy) return z;
-    if (xy < yz && xz < yz) return x;
-    return y;
-}
 
 // A marking from the four vertices, the refinement edge and the mark of every face (face i is
 // the face opposite faces_opposite[i], marked marks[i]).
@@ -172,26 +145,11 @@ TetBisection::~TetBisection() {
 }
 
 TetMarking longest_edge_marking(const Mesh& mesh, ElementId t) {
-    const auto v = mesh.simplex(t).vertices();
     // refinement edge = the longest edge of the tetrahedron, face marks = the longest edge of
-    // each face, under one strict order (so neighbours agree on every face)
-    std::size_t best_i = 0, best_j = 1;
-    for (std::size_t i = 0; i < 4; ++i)
-        for (std::size_t j = i + 1; j < 4; ++j)
-            if (edge_key(mesh, v[best_i], v[best_j]) < edge_key(mesh, v[i], v[j])) {
-                best_i = i;
-                best_j = j;
-            }
-    TetMarking marking;
-    marking.vertices[0] = v[best_i];
-    marking.vertices[1] = v[best_j];
-    std::size_t next = 2;
-    for (std::size_t i = 0; i < 4; ++i)
-        if (i != best_i && i != best_j) marking.vertices[next++] = v[i];
-    const auto& [a, b, c, d] = marking.vertices;
-    marking.acd_unmarked = unmarked_of_longest(mesh, a, c, d);
-    marking.bcd_unmarked = unmarked_of_longest(mesh, b, c, d);
-    return marking;
+    // each face, under one strict order (so neighbours agree on every face); shared with the
+    // bisection plan, which marks tetrahedra before they exist (tet_bisection_plan.hpp)
+    return detail::longest_edge_marking_of(
+        mesh.simplex(t).vertices(), [&](VertexId v) -> const Point& { return mesh.reference(v); });
 }
 
 Outcome<TetBisection> TetBisection::with_initial_marking(Mesh& mesh) {

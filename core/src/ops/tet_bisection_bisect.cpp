@@ -1,10 +1,8 @@
 // bisect_tetrahedron: thesis §6.5 bisect(e) in 3D, with Maubach / longest-edge marks
-// (tet_bisection.hpp).
+// (tet_bisection.hpp). Planned on an overlay first, then replayed (tet_bisection_plan.hpp).
 #include <string>
-#include <vector>
 
-#include "ops/tet_bisection_recursion.hpp"
-#include "sxk/ops/split_edge.hpp"
+#include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/tet_bisection.hpp"
 
 namespace sxk {
@@ -16,43 +14,17 @@ Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t) {
     if (state.is_stale())
         return Refusal{"bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
 
-    std::vector<TetMarking> parents;
-    auto split = [&](VertexId a, VertexId b, std::span<const ElementId> ring) -> Outcome<SplitResult> {
-        parents.clear();
-        for (ElementId u : ring) parents.push_back(state.marking(u));
-        state.m_own_edit = true;
-        auto result = split_edge(mesh, a, b, 0.5);
-        state.m_own_edit = false;
-        if (!result.ok()) return result;
-        if (state.m_markings.size() < mesh.element_capacity())
-            state.m_markings.resize(mesh.element_capacity());
-        for (const ElementId child : result->elements) {
-            // the parent is the one whose c and d the child has; the child keeps a or b
-            const Simplex& simplex = mesh.simplex(child);
-            for (const TetMarking& parent : parents) {
-                if (!simplex.contains(parent.vertices[2]) || !simplex.contains(parent.vertices[3]))
-                    continue;
-                if (state.m_rule == BisectionRule::longest_edge) {
-                    state.m_markings[child] = longest_edge_marking(mesh, child);
-                    state.m_markings[child].generation = parent.generation + 1;
-                } else {
-                    const auto halves = bisected_markings(parent, result->vertex);
-                    state.m_markings[child] =
-                        simplex.contains(parent.vertices[0]) ? halves[0] : halves[1];
-                }
-                break;
-            }
-        }
-        if (!result->elements.empty()) state.m_last_child = result->elements.back();
-        return result;
-    };
+    detail::TetBisectionPlan plan(mesh, state.rule(),
+                                  [&state](ElementId u) { return state.marking(u); });
     bool did_not_end = false;
-    auto bisected = detail::bisect_recursively(
-        mesh, state.refinement_edge(t),
-        [&](ElementId u) { return state.refinement_edge(u); }, split, did_not_end);
-    if (did_not_end) state.m_stale_reason = bisected.reason();
-    if (!bisected.ok()) return Refusal{"bisect_tetrahedron: " + bisected.reason()};
-    return bisected;
+    auto planned = plan.bisect(plan.node_of(t), did_not_end);
+    // a marking whose chains cycle will cycle again: the state says so from now on
+    if (did_not_end) state.m_stale_reason = planned.reason();
+    if (!planned.ok()) return Refusal{"bisect_tetrahedron: " + planned.reason()};
+    if (auto replayed = detail::TetBisectionAccess::replay(state, plan.splits(), "bisect_tetrahedron");
+        !replayed.ok())
+        return replayed.refusal();
+    return planned;
 }
 
 }  // namespace sxk

@@ -16,6 +16,7 @@
 // through face neighbours with exact orient3d (started from the last bisection's children, so a
 // call costs what it refines, not the mesh size); a walk that reaches the boundary (x outside,
 // or a non-convex domain in the way) or takes too many steps falls back to testing every element.
+// The walk runs once per call; after that x is followed into the children of the planned splits.
 //
 // Contract (refine_around_tetrahedra):
 //   Before: a valid tetrahedral mesh; x in the mesh (on its boundary counts); h > 0.
@@ -25,8 +26,13 @@
 //   bisected (0 when nothing needed refining).
 // Refusals (mesh and state untouched), reasons begin with "refine_around_tetrahedra: ":
 //   "the mesh has triangles, not tetrahedra"; "h = <h> is not positive" (also NaN);
-//   "point (x, y, z) is not in the mesh"; "the bisection state is stale: <why>". A refusal of a
-//   split in the middle (rounding, for absurdly small h) is passed on; bisections before it stay.
+//   "point (x, y, z) is not in the mesh"; "the bisection state is stale: <why>"; a split refused
+//   anywhere in the call (rounding, for absurdly small h or flat deformed elements: "...
+//   bisect_tetrahedron: split_edge: new element ... would be flat in the deformed positions",
+//   the state-less form without "bisect_tetrahedron: ").
+// One transaction: every bisection of the call is first planned on a scratch overlay (point
+// location follows x into the children of the planned splits), then the whole plan is replayed
+// through split_edge, so a refusal leaves mesh, state and watchers as they were.
 #pragma once
 
 #include <cstddef>

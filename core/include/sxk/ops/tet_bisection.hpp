@@ -117,6 +117,9 @@ SXK_API std::array<TetMarking, 2> bisected_markings(const TetMarking& parent, Ve
 SXK_API TetMarking longest_edge_marking(const Mesh& mesh, ElementId t);
 
 class TetBisection;
+namespace detail {
+struct TetBisectionAccess;  // the plan's replay (private header ops/tet_bisection_plan.hpp)
+}
 SXK_API Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t);
 
 class SXK_API TetBisection : private Watcher {
@@ -168,6 +171,7 @@ private:
     void foreign_edit(const std::string& what);
 
     friend Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t);
+    friend struct detail::TetBisectionAccess;
 
     Mesh* m_mesh = nullptr;
     std::vector<TetMarking> m_markings;  // indexed by ElementId; dead ids hold stale entries
@@ -185,11 +189,18 @@ private:
 // the edge, so the mesh never has a hanging node; the recursion keeps the marks consistent.
 // Returns the number of edges bisected (split_edge calls), >= 1.
 //
+// A transaction: the whole recursion is planned first on a scratch overlay of the mesh (every
+// child checked as split_edge checks it, midpoints bit-identical to split_edge's), and only a
+// plan that passes is replayed through split_edge; so the call completes, or the mesh, the
+// state and what watchers saw are exactly as before.
+//
 // Refusals (mesh and state untouched), reasons begin with "bisect_tetrahedron: ": t is not an
-// element; the state is stale ("... the bisection state is stale: <why>"). A split_edge refusal
-// in the middle (a child flat by rounding, only for extremely small or nearly flat elements)
-// stops the recursion and is returned: the splits done before it stay (each is a transaction
-// and the mesh is valid and conforming, the state in step with it).
+// element; the state is stale ("... the bisection state is stale: <why>"); a split the plan
+// finds refused anywhere in the recursion (a child flat or inverted by rounding in the reference
+// or deformed positions, only for extremely small or nearly flat elements: "bisect_tetrahedron:
+// split_edge: new element -<12,13,27,29> would be flat in the deformed positions"). A
+// recursion that does not end (a non-conforming marking) is refused too and also makes the
+// state stale (the mesh is untouched).
 SXK_API Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t);
 
 }  // namespace sxk
