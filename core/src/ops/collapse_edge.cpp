@@ -2,8 +2,10 @@
 #include "sxk/ops/collapse_edge.hpp"
 
 #include <algorithm>
-#include <set>
+#include <array>
+#include <cstddef>
 #include <utility>
+#include <vector>
 
 #include "ops/split_collapse_checks.hpp"
 
@@ -14,43 +16,51 @@ namespace {
 // with boundary into a closed complex for the link condition (Dey et al., edge contraction).
 constexpr VertexId outside = invalid_id;
 
-using LinkSimplex = std::vector<VertexId>;  // sorted
+// A simplex of a link: {size, its vertices sorted, 0 padding}. The links of one edge collapse
+// have a few dozen simplexes of at most 3 vertices: flat sorted arrays searched by bisection,
+// with no allocation per simplex.
+using LinkSimplex = std::array<VertexId, 4>;
 
-// Adds every non-empty subset of `vertices` (which excludes the apex) to `link`.
-void add_faces_of(std::vector<VertexId> vertices, std::set<LinkSimplex>& link) {
-    std::sort(vertices.begin(), vertices.end());
-    const std::size_t n = vertices.size();
+// Adds every non-empty subset of the first n of `vertices` (which exclude the apex) to `link`.
+void add_faces_of(std::array<VertexId, 3> vertices, std::size_t n, std::vector<LinkSimplex>& link) {
+    for (std::size_t i = 1; i < n; ++i)  // at most three: insertion sort
+        for (std::size_t j = i; j > 0 && vertices[j] < vertices[j - 1]; --j)
+            std::swap(vertices[j], vertices[j - 1]);
     for (unsigned mask = 1; mask < (1u << n); ++mask) {
-        LinkSimplex s;
+        LinkSimplex s{};
         for (std::size_t i = 0; i < n; ++i)
-            if (mask & (1u << i)) s.push_back(vertices[i]);
-        link.insert(std::move(s));
+            if (mask & (1u << i)) s[++s[0]] = vertices[i];
+        link.push_back(s);
     }
 }
 
 // link(sigma) for sigma = {v} or {v, w}: the simplexes tau disjoint from sigma with tau * sigma
-// in the closed star, the boundary joined to `outside`.
-std::set<LinkSimplex> link_of(const Mesh& mesh, std::span<const ElementId> around,
-                              std::span<const VertexId> sigma) {
-    std::set<LinkSimplex> link;
+// in the closed star, the boundary joined to `outside`. Sorted, without repeats.
+std::vector<LinkSimplex> link_of(const Mesh& mesh, std::span<const ElementId> around,
+                                 std::span<const VertexId> sigma) {
+    std::vector<LinkSimplex> link;
     auto in_sigma = [&](VertexId v) { return std::find(sigma.begin(), sigma.end(), v) != sigma.end(); };
     for (const ElementId t : around) {
         const Simplex& tau = mesh.simplex(t);
         if (!std::all_of(sigma.begin(), sigma.end(), [&](VertexId v) { return tau.contains(v); }))
             continue;
-        std::vector<VertexId> rest;
+        std::array<VertexId, 3> rest{};
+        std::size_t rest_count = 0;
         for (const VertexId v : tau.vertices())
-            if (!in_sigma(v)) rest.push_back(v);
-        add_faces_of(rest, link);
+            if (!in_sigma(v)) rest[rest_count++] = v;
+        add_faces_of(rest, rest_count, link);
         // boundary faces of t containing sigma, joined to the outside vertex
         for (int i = 0; i < tau.count(); ++i) {
             if (in_sigma(tau.vertex(i)) || mesh.mate(mesh.face(t, i)) != invalid_id) continue;
-            std::vector<VertexId> face_rest{outside};
-            for (const VertexId v : rest)
-                if (v != tau.vertex(i)) face_rest.push_back(v);
-            add_faces_of(face_rest, link);
+            std::array<VertexId, 3> face_rest{outside};
+            std::size_t face_count = 1;
+            for (std::size_t j = 0; j < rest_count; ++j)
+                if (rest[j] != tau.vertex(i)) face_rest[face_count++] = rest[j];
+            add_faces_of(face_rest, face_count, link);
         }
     }
+    std::sort(link.begin(), link.end());
+    link.erase(std::unique(link.begin(), link.end()), link.end());
     return link;
 }
 
@@ -97,11 +107,12 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
     {
         const std::array<VertexId, 1> just_from{from}, just_to{to};
         const std::array<VertexId, 2> both{from, to};
-        const std::set<LinkSimplex> link_from = link_of(mesh, star_from, just_from);
-        const std::set<LinkSimplex> link_to = link_of(mesh, star_to, just_to);
-        const std::set<LinkSimplex> link_edge = link_of(mesh, star_from, both);
+        const std::vector<LinkSimplex> link_from = link_of(mesh, star_from, just_from);
+        const std::vector<LinkSimplex> link_to = link_of(mesh, star_to, just_to);
+        const std::vector<LinkSimplex> link_edge = link_of(mesh, star_from, both);
         for (const LinkSimplex& s : link_from)
-            if (link_to.count(s) && !link_edge.count(s))
+            if (std::binary_search(link_to.begin(), link_to.end(), s) &&
+                !std::binary_search(link_edge.begin(), link_edge.end(), s))
                 return Refusal{"collapse_edge: " + to_text(edge) +
                                " violates the link condition (the result would not be a manifold)"};
     }
