@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "parse_option.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/refine_around.hpp"
 #include "sxk/ops/refine_around_tetrahedra.hpp"
@@ -143,20 +144,13 @@ void run(benchmark::State& state, Case* c) {
         calls ? static_cast<double>(bisections) / static_cast<double>(calls) : 0.0;
 }
 
-bool parse(const char* argument, const char* name, std::uint64_t& value) {
-    const std::string prefix = std::string("--") + name + "=";
-    if (std::string(argument).rfind(prefix, 0) != 0) return false;
-    value = std::strtoull(argument + prefix.size(), nullptr, 10);
-    return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     std::uint64_t calls = 500, seed = 1;
     for (int i = 1; i < argc; ++i)
-        if (!parse(argv[i], "calls", calls) && !parse(argv[i], "seed", seed)) {
+        if (!sxk_bench::parse_option(argv[i], "calls", calls) && !sxk_bench::parse_option(argv[i], "seed", seed)) {
             std::fprintf(stderr, "usage: refine_latency [--benchmark_...] [--calls=N] [--seed=S]\n");
             return 2;
         }

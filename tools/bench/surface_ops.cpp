@@ -62,6 +62,7 @@
 #include <utility>
 #include <vector>
 
+#include "parse_option.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/flip_edge.hpp"
@@ -483,13 +484,6 @@ void collapse_openmesh(benchmark::State& state, Setup* setup) {
     set_counters(state, *setup, setup->collapses.size());
 }
 
-bool parse(const char* argument, const char* name, std::uint64_t& value) {
-    const std::string prefix = std::string("--") + name + "=";
-    if (std::string(argument).rfind(prefix, 0) != 0) return false;
-    value = std::strtoull(argument + prefix.size(), nullptr, 10);
-    return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -499,9 +493,9 @@ int main(int argc, char** argv) {
     Options options;
     for (int i = 1; i < argc; ++i) {
         std::uint64_t value = 0;
-        if (parse(argv[i], "edges", value)) {
+        if (sxk_bench::parse_option(argv[i], "edges", value)) {
             options.edges = value;
-        } else if (parse(argv[i], "seed", value)) {
+        } else if (sxk_bench::parse_option(argv[i], "seed", value)) {
             options.seed = value;
         } else if (argv[i][0] != '-' && options.ele.empty()) {
             options.ele = argv[i];

@@ -53,6 +53,7 @@
 #include <utility>
 #include <vector>
 
+#include "parse_option.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/flip_23.hpp"
 #include "sxk/ops/flip_32.hpp"
@@ -279,13 +280,6 @@ void run_cgal(benchmark::State& state, Setup* setup) {
     set_counters(state, *setup);
 }
 
-bool parse(const char* argument, const char* name, std::uint64_t& value) {
-    const std::string prefix = std::string("--") + name + "=";
-    if (std::string(argument).rfind(prefix, 0) != 0) return false;
-    value = std::strtoull(argument + prefix.size(), nullptr, 10);
-    return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -294,11 +288,11 @@ int main(int argc, char** argv) {
     Options options;
     for (int i = 1; i < argc; ++i) {
         std::uint64_t value = 0;
-        if (parse(argv[i], "points", value)) {
+        if (sxk_bench::parse_option(argv[i], "points", value)) {
             options.points = value;
-        } else if (parse(argv[i], "faces", value)) {
+        } else if (sxk_bench::parse_option(argv[i], "faces", value)) {
             options.faces = value;
-        } else if (parse(argv[i], "seed", value)) {
+        } else if (sxk_bench::parse_option(argv[i], "seed", value)) {
             options.seed = value;
         } else {
             std::fprintf(stderr, "usage: tet_flips [--benchmark_...] [--points=N] [--faces=K] "
