@@ -15,8 +15,9 @@
 // rule (see simple_bisect.hpp) and x are in the REFERENCE positions; x's z is ignored.
 //
 // Point location: a stochastic visibility walk (exact orient2d) from `hint` when it is an
-// element, else from the first element; the walk is O(distance) and local when the hint is
-// near x (pass the previous result's `element` when refining along a path). When the walk
+// element, else from the nearest (by first vertex) of about cbrt(n) elements spread over the
+// id range (jump-and-walk); the walk is O(distance) and local when the hint is near x (pass the
+// previous result's `element` when refining along a path). When the walk
 // meets the boundary (x outside, or a non-convex domain in between) or does not finish within
 // element_count() steps, a linear scan over all elements decides: O(n) only in those cases.
 // After the first location, x is followed down the planned bisections without searching.
