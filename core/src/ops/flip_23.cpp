@@ -16,9 +16,9 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
                        to_text(mesh.face_simplex(face)) + " is on the boundary"};
     const ElementId t0 = mesh.face_element(face);
     const ElementId t1 = mesh.face_element(other);
-    // A flip across an interface between materials would move the interface.
-    if (mesh.label(t0) != mesh.label(t1))
-        return Refusal{"flip_23: elements have different labels (a material interface)"};
+    const std::array<ElementId, 2> pair{t0, t1};
+    if (Refusal r = detail::refuse_material_interface(mesh, pair, "flip_23"); !r.reason.empty())
+        return r;
     const VertexId p = mesh.opposite_vertex(t0, face);
     const VertexId q = mesh.opposite_vertex(t1, other);
     // Thesis Fig. 5.9: if p and q are already joined elsewhere, the flip would represent the

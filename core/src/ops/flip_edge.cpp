@@ -56,9 +56,9 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
 
     const ElementId t0 = mesh.face_element(edge);
     const ElementId t1 = mesh.face_element(mate);
-    // A flip across an interface between materials would move the interface.
-    if (mesh.label(t0) != mesh.label(t1))
-        return Refusal{"flip_edge: elements have different labels (a material interface)"};
+    const std::array<ElementId, 2> pair{t0, t1};
+    if (Refusal r = detail::refuse_material_interface(mesh, pair, "flip_edge"); !r.reason.empty())
+        return r;
     const VertexId c = mesh.opposite_vertex(t0, edge);
     const VertexId d = mesh.opposite_vertex(t1, mate);
 

@@ -1,4 +1,6 @@
-// Private: operations that would drop a face label refuse instead.
+// Private: labels are constraints the flips keep. A flip across an interface between materials
+// (elements with different labels) would move the interface, and one that removes a labelled
+// face would drop the label; both refuse.
 //
 // Mesh::face_labels() keys a label by the sorted vertex set of a (d-1)-face; validate() checks
 // that every key is a face of the mesh. A label marks a constraint (a material interface drawn
@@ -19,6 +21,17 @@
 #include "sxk/simplex.hpp"
 
 namespace sxk::detail {
+
+// A flip across an interface between materials (elements with different labels) would move
+// the interface: refused, so that flips keep every material region's shape.
+inline Refusal refuse_material_interface(const Mesh& mesh, std::span<const ElementId> elements,
+                                         const char* operation) {
+    for (const ElementId t : elements)
+        if (mesh.label(t) != mesh.label(elements[0]))
+            return {std::string(operation) +
+                    ": elements have different labels (a material interface)"};
+    return {};
+}
 
 inline Simplex label_key(const Simplex& face) { return Simplex(+1, face.vertices()); }
 

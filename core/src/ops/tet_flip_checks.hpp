@@ -83,17 +83,6 @@ inline Refusal refuse_bad_edge_arguments(const Mesh& mesh, FaceId entry, int j,
     return {};
 }
 
-// A flip across an interface between materials (elements with different labels) would move
-// the interface: refused, so that flips keep every material region's shape.
-inline Refusal refuse_material_interface(const Mesh& mesh, std::span<const ElementId> elements,
-                                         const char* operation) {
-    for (const ElementId t : elements)
-        if (mesh.label(t) != mesh.label(elements[0]))
-            return {std::string(operation) +
-                    ": elements have different labels (a material interface)"};
-    return {};
-}
-
 // The tetrahedra around an interior edge of degree 3 or 4, in ring order.
 struct EdgeRing {
     std::array<ElementId, 4> elements{};
