@@ -227,6 +227,9 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
                 const std::size_t f = i * static_cast<std::size_t>(k) + static_cast<std::size_t>(j);
                 e.faces[static_cast<std::size_t>(j)] = static_cast<FaceId>(f);
                 m_faces[f] = FaceRecord{static_cast<ElementId>(i), mates[f]};
+                // face ids are i * k + j here, so the mate's element is its id / k
+                e.neighbors[static_cast<std::size_t>(j)] =
+                    mates[f] == invalid_id ? invalid_id : static_cast<ElementId>(mates[f] / static_cast<std::size_t>(k));
                 if (mates[f] == invalid_id) m_boundary.insert(e.simplex.subn(j), static_cast<FaceId>(f));
                 ElementId& anchor = m_vertex_element[e.simplex.vertex(j)];
                 if (anchor == invalid_id) anchor = static_cast<ElementId>(i);
@@ -289,6 +292,7 @@ Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes
             if (m_vertex_element[simplexes[i].vertex(j)] == invalid_id)
                 m_vertex_element[simplexes[i].vertex(j)] = t;
         }
+        link_neighbors(t);
     }
     for (Watcher* w : m_watchers) w->init(*this);
     return Done{};

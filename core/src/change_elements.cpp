@@ -118,6 +118,7 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
             if (!is_changed(m_faces[mate_face].element)) {
                 log.touch(*this, mate_face);
                 m_boundary.insert(face_simplex(mate_face), mate_face);
+                unlink_neighbor(mate_face);
             }
             m_faces[mate_face].mate = invalid_id;
             m_faces[f].mate = invalid_id;
@@ -154,7 +155,8 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
         }
     }
 
-    repair_anchors(substituted, changed_in_order, old_vertices, neighbours);
+    for (const ElementSubstitution& s : substitution) link_neighbors(s.element);
+    repair_anchors(substituted, changed_in_order, old_vertices, neighbours, changed_sorted);
 
     log.publish(*this, m_watchers);
     return Done{};

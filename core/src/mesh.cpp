@@ -81,11 +81,6 @@ FaceId Mesh::opposite_face(ElementId t, VertexId v) const {
     return i < 0 ? invalid_id : m_elements[t].faces[static_cast<std::size_t>(i)];
 }
 
-ElementId Mesh::neighbor(ElementId t, int i) const {
-    const FaceId m = m_faces[m_elements[t].faces[static_cast<std::size_t>(i)]].mate;
-    return m == invalid_id ? invalid_id : m_faces[m].element;
-}
-
 int Mesh::face_slot(FaceId f) const {
     const ElementRecord& e = m_elements[m_faces[f].element];
     for (int i = 0; i <= m_dimension; ++i)
@@ -167,18 +162,48 @@ std::size_t Mesh::memory_bytes() const {
            m_boundary.memory_bytes();
 }
 
+void Mesh::link_neighbor(ElementId t, int i) {
+    ElementRecord& e = m_elements[t];
+    const FaceId g = m_faces[e.faces[static_cast<std::size_t>(i)]].mate;
+    if (g == invalid_id) {
+        e.neighbors[static_cast<std::size_t>(i)] = invalid_id;
+        return;
+    }
+    const ElementId n = m_faces[g].element;
+    e.neighbors[static_cast<std::size_t>(i)] = n;
+    ElementRecord& other = m_elements[n];
+    for (int j = 0; j <= m_dimension; ++j)
+        if (other.faces[static_cast<std::size_t>(j)] == g) other.neighbors[static_cast<std::size_t>(j)] = t;
+}
+
+void Mesh::link_neighbors(ElementId t) {
+    for (int i = 0; i <= m_dimension; ++i) link_neighbor(t, i);
+}
+
+void Mesh::unlink_neighbor(FaceId f) {
+    ElementRecord& e = m_elements[m_faces[f].element];
+    for (int j = 0; j <= m_dimension; ++j)
+        if (e.faces[static_cast<std::size_t>(j)] == f) e.neighbors[static_cast<std::size_t>(j)] = invalid_id;
+}
+
 void Mesh::repair_anchors(std::span<const Simplex> added, std::span<const ElementId> added_ids,
                           std::span<const VertexId> old_vertices,
-                          std::span<const ElementId> neighbours) {
-    // keep anchors that still hold their vertex: untouched vertices see no change at all
+                          std::span<const ElementId> neighbours,
+                          std::span<const ElementId> edited_sorted) {
+    // An anchor outside the edited elements is an element the edit did not touch, which holds
+    // its vertex as before (anchors were valid): only anchors into edited (freed, reused or
+    // substituted) elements are looked at, so untouched elements are never loaded.
+    auto holds = [&](ElementId a, VertexId v) {
+        if (a == invalid_id) return false;
+        if (!std::binary_search(edited_sorted.begin(), edited_sorted.end(), a)) return true;
+        return is_element(a) && m_elements[a].simplex.contains(v);
+    };
     for (std::size_t i = 0; i < added.size(); ++i)
-        for (VertexId v : added[i].vertices()) {
-            ElementId& a = m_vertex_element[v];
-            if (!is_element(a) || !m_elements[a].simplex.contains(v)) a = added_ids[i];
-        }
+        for (VertexId v : added[i].vertices())
+            if (!holds(m_vertex_element[v], v)) m_vertex_element[v] = added_ids[i];
     for (VertexId v : old_vertices) {
         const ElementId a = m_vertex_element[v];
-        if (is_element(a) && m_elements[a].simplex.contains(v)) continue;
+        if (holds(a, v)) continue;
         m_vertex_element[v] = invalid_id;
         for (ElementId n : neighbours)
             if (m_elements[n].simplex.contains(v)) {

@@ -84,13 +84,6 @@ private:
     std::size_t m_size = 0;
 };
 
-// Mesh::neighbor, inline (Mesh::neighbor lives in the shared library and costs a call per face
-// in the star walks below).
-inline ElementId neighbor_of(const Mesh& mesh, ElementId t, int i) {
-    const FaceId m = mesh.mate(mesh.face(t, i));
-    return m == invalid_id ? invalid_id : mesh.face_element(m);
-}
-
 // The elements met by a star walk, with a small open-addressing set beside the list so that
 // "seen already?" costs one probe instead of a scan (a 3D star has ~25 elements, each reached
 // from up to three neighbours). Short lists (2D stars) are scanned and never pay for clearing
@@ -151,7 +144,7 @@ bool star_has(const Mesh& mesh, VertexId v, Has&& has) {
         if (has(tau)) return true;
         for (int i = 0; i < k; ++i) {
             if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
-            const ElementId n = neighbor_of(mesh, t, i);
+            const ElementId n = mesh.neighbor(t, i);
             if (n != invalid_id) seen.insert(n);
         }
     }

@@ -26,6 +26,13 @@ struct NewFace {
     FaceId face = invalid_id;  // reused old face, or pre-made matched-pair face
     bool reused = false;
     bool paired = false;
+    ElementId across = invalid_id;  // reused: the neighbour across it before the edit
+};
+
+struct OldFace {
+    Simplex sigma;
+    FaceId face;
+    ElementId across;  // the neighbour across the face (the cache of Mesh::neighbor)
 };
 
 template <class Sorted, class T>
@@ -112,7 +119,7 @@ std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId>
             const Simplex& tau = mesh.simplex(t);
             for (int i = 0; i < k; ++i) {
                 if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
-                const ElementId n = detail::neighbor_of(mesh, t, i);
+                const ElementId n = mesh.neighbor(t, i);
                 std::uint32_t position = 0;
                 if (n != invalid_id) {
                     const ElementId* found = std::find(seen.begin() + base, seen.end(), n);
@@ -236,16 +243,17 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
                                j};
 
     // oldfacemap and newfacemap of the thesis, as sorted vectors (edits are small)
-    detail::SmallVector<std::pair<Simplex, FaceId>, 4 * small_edit> old_faces;
+    detail::SmallVector<OldFace, 4 * small_edit> old_faces;
     for (ElementId t : old_elements)
-        for (int j = 0; j < k; ++j)
-            old_faces.emplace_back(m_elements[t].simplex.subn(j), m_elements[t].faces[static_cast<std::size_t>(j)]);
+        for (std::size_t j = 0; j < uk; ++j)
+            old_faces.push_back({m_elements[t].simplex.subn(static_cast<int>(j)), m_elements[t].faces[j],
+                                 m_elements[t].neighbors[j]});
     std::sort(old_faces.begin(), old_faces.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    auto find_old = [&](const Simplex& s) -> FaceId {
+              [](const OldFace& a, const OldFace& b) { return a.sigma < b.sigma; });
+    auto find_old = [&](const Simplex& s) -> const OldFace* {
         auto it = std::lower_bound(old_faces.begin(), old_faces.end(), s,
-                                   [](const auto& a, const Simplex& b) { return a.first < b; });
-        return (it != old_faces.end() && it->first == s) ? it->second : invalid_id;
+                                   [](const OldFace& a, const Simplex& b) { return a.sigma < b; });
+        return (it != old_faces.end() && it->sigma == s) ? it : nullptr;
     };
 
     detail::SmallVector<NewFace, 4 * small_edit> new_faces;
@@ -272,9 +280,12 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     };
     detail::SmallVector<FaceId, 4 * small_edit> reused_faces;
     for (NewFace& nf : new_faces) {
-        nf.face = find_old(nf.sigma);
-        nf.reused = nf.face != invalid_id;
-        if (nf.reused) reused_faces.push_back(nf.face);
+        const OldFace* old = find_old(nf.sigma);
+        nf.reused = old != nullptr;
+        if (!nf.reused) continue;
+        nf.face = old->face;
+        nf.across = old->across;
+        reused_faces.push_back(nf.face);
     }
     std::sort(reused_faces.begin(), reused_faces.end());
 
@@ -370,8 +381,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
         return sorted_contains(old_sorted, m_faces[f].element) && !sorted_contains(reused_faces, f);
     };
     detail::SmallVector<FaceId, 4 * small_edit> discard;
-    for (const auto& [sigma, g] : old_faces)
-        if (!sorted_contains(reused_faces, g)) discard.push_back(g);
+    for (const OldFace& old : old_faces)
+        if (!sorted_contains(reused_faces, old.face)) discard.push_back(old.face);
     for (FaceId g : discard) {
         const FaceId mate_face = m_faces[g].mate;
         if (mate_face == invalid_id) {
@@ -381,6 +392,7 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
             log.touch(*this, mate_face);
             m_faces[mate_face].mate = invalid_id;
             m_boundary.insert(face_simplex(mate_face), mate_face);
+            unlink_neighbor(mate_face);
         }
         log.freed(*this, g);
     }
@@ -440,7 +452,25 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
         }
     }
 
-    repair_anchors(new_simplexes, created, old_vertices, neighbours);
+    // the neighbour cache: a reused face whose neighbour stays keeps that neighbour (known
+    // without loading the mate's face record), whose slot holding the mate now points back at
+    // the new element; every other slot is derived from its face's mate
+    for (std::size_t i = 0; i < m; ++i) {
+        const ElementId t = created[i];
+        for (std::size_t j = 0; j < uk; ++j) {
+            const NewFace& nf = new_faces[i * uk + j];
+            if (nf.reused && nf.across != invalid_id && !sorted_contains(old_sorted, nf.across)) {
+                m_elements[t].neighbors[j] = nf.across;
+                const FaceId g = m_faces[nf.face].mate;
+                ElementRecord& across = m_elements[nf.across];
+                for (std::size_t s = 0; s < uk; ++s)
+                    if (across.faces[s] == g) across.neighbors[s] = t;
+            } else {
+                link_neighbor(t, static_cast<int>(j));
+            }
+        }
+    }
+    repair_anchors(new_simplexes, created, old_vertices, neighbours, old_sorted);
 
     log.publish(*this, m_watchers);
     return created;

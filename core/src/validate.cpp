@@ -80,6 +80,22 @@ Outcome<Done> Mesh::validate() const {
                            ", expected " + to_text(sigma.mate())};
     }
 
+    // the neighbour cache: neighbors[i] is the element of the mate of faces[i]
+    for (ElementId t = 0; t < m_elements.size(); ++t) {
+        if (!is_element(t)) continue;
+        const ElementRecord& e = m_elements[t];
+        for (std::size_t i = 0; i < uk; ++i) {
+            const FaceId g = m_faces[e.faces[i]].mate;
+            const ElementId expected = g == invalid_id ? invalid_id : m_faces[g].element;
+            if (e.neighbors[i] != expected)
+                return Refusal{"neighbour cache: " + element_name(t, e.simplex) + " names " +
+                                   (e.neighbors[i] == invalid_id ? std::string("none") : std::to_string(e.neighbors[i])) +
+                                   " across slot " + std::to_string(i) + ", but its mate is in " +
+                                   (expected == invalid_id ? std::string("none") : std::to_string(expected)),
+                               t};
+        }
+    }
+
     // uniqueness (7.4): no two elements with the same vertices, no simplex in two faces
     {
         std::vector<std::pair<Simplex, ElementId>> all;

@@ -6,7 +6,9 @@
 // Setup (untimed): N random points in the unit cube (std::mt19937_64 with seed S) are
 // triangulated by CGAL::Delaunay_triangulation_3<Epick> (170,000 points give ~1.1M finite
 // tets); the finite cells are copied into an sxk::Mesh(3, 3) by assign_elements (reference and
-// deformed positions equal). Then K interior faces are drawn at random (a random finite cell
+// deformed positions equal), in CGAL's cell storage order, with vertex ids in CGAL's vertex
+// storage order (its spatial sort of the points), so that neither side's memory layout is
+// better than the other's: an application numbers its mesh so too (sxk convert --reorder). Then K interior faces are drawn at random (a random finite cell
 // and a random face of it) such that no tetrahedron belongs to two drawn faces, and each one is
 // tried once on both sides: a face is kept only when BOTH sides complete the round trip
 // (2-3 on the face, then 3-2 on the new edge, which restores the vertex sets of the two tets).
@@ -23,10 +25,14 @@
 // What each side checks per round trip:
 //   sxk   flip_23: interior face, equal labels, edge pq not already in the mesh (star walk around
 //         p), three exact orient3d tests in the reference AND three in the deformed positions;
-//         then Mesh::replace_elements with its own transaction checks (invariant 7.4, star
-//         connectivity) and face reuse (hull FaceIds survive). flip_32: the ring around pq
+//         then the bookkeeping of Mesh::replace_elements (face reuse: hull FaceIds survive;
+//         boundary map, anchors, neighbour cache, watcher log); its star walks are proven
+//         unnecessary by the flip's own checks (ProvenEdit). flip_32: the ring around pq
 //         (cycle_around, boundary and degree 3), equal labels, triangle cde not already present
 //         (star walk around c), 2 + 2 exact orient3d tests, replace_elements again.
+//   sxk_embedded   the same with TetFlipOptions::reference_is_embedding: the two star walks
+//         (edge pq, triangle cde) are skipped because the caller vouches for an embedding, which
+//         with the orientation tests proves them absent; everything else as above.
 //   cgal  flip(c, i): both cells finite, three orientation tests (Epick: filtered, exact);
 //         flip(c, i, j): degree 3 by circulating around the edge, no infinite cell, two
 //         orientation tests. No topological test (an embedded triangulation needs none) and one
@@ -97,9 +103,10 @@ struct Setup {
 
 // Our round trip on `face`; returns the face to use next time, or invalid_id when a flip was
 // refused (reason in *why).
-sxk::FaceId our_round_trip(sxk::Mesh& mesh, sxk::FaceId face, std::string* why) {
+sxk::FaceId our_round_trip(sxk::Mesh& mesh, sxk::FaceId face, const sxk::TetFlipOptions& options,
+                           std::string* why) {
     const sxk::Simplex sigma = mesh.face_simplex(face);
-    const auto three = sxk::flip_23(mesh, face);
+    const auto three = sxk::flip_23(mesh, face, options);
     if (!three) {
         if (why) *why = three.reason();
         return sxk::invalid_id;
@@ -109,7 +116,7 @@ sxk::FaceId our_round_trip(sxk::Mesh& mesh, sxk::FaceId face, std::string* why) 
     const sxk::ElementId first = (*three)[0];
     const sxk::FaceId entry = mesh.opposite_face(first, sigma.vertex(1));
     const int j = mesh.face_simplex(entry).index(sigma.vertex(2));
-    const auto two = sxk::flip_32(mesh, entry, j);
+    const auto two = sxk::flip_32(mesh, entry, j, options);
     if (!two) {
         if (why) *why = two.reason();
         return sxk::invalid_id;
@@ -179,9 +186,11 @@ std::unique_ptr<Setup> make_setup(const Options& options) {
     simplexes.reserve(setup->delaunay.number_of_finite_cells());
     sxk::Mesh& mesh = setup->mesh.emplace(3, 3);
     mesh.reserve(options.points, setup->delaunay.number_of_finite_cells());
-    for (const auto& [point, index] : points) {
-        (void)index;
-        mesh.add_vertex({point.x(), point.y(), point.z()});
+    // our vertex ids follow CGAL's vertex storage order, which is its spatial sort (Hilbert
+    // order) of the input: points close in space are close in memory on both sides
+    for (const VertexHandle v : setup->delaunay.finite_vertex_handles()) {
+        v->info() = static_cast<std::uint32_t>(mesh.vertex_count());
+        mesh.add_vertex({v->point().x(), v->point().y(), v->point().z()});
     }
     for (const CellHandle c : setup->delaunay.finite_cell_handles()) {
         cells.push_back(c);
@@ -226,7 +235,7 @@ std::unique_ptr<Setup> make_setup(const Options& options) {
         CgalFace theirs{c, i};
         const bool cgal_ok = cgal_round_trip(setup->delaunay, theirs);
         std::string why;
-        const sxk::FaceId next = our_round_trip(mesh, ours, &why);
+        const sxk::FaceId next = our_round_trip(mesh, ours, {}, &why);
         const bool ours_ok = next != sxk::invalid_id;
         if (cgal_ok != ours_ok) {
             ++setup->disagreements;
@@ -255,11 +264,11 @@ void set_counters(benchmark::State& state, const Setup& setup) {
     state.counters["disagreements"] = static_cast<double>(setup.disagreements);
 }
 
-void run_sxk(benchmark::State& state, Setup* setup) {
+void run_sxk(benchmark::State& state, Setup* setup, sxk::TetFlipOptions options) {
     sxk::Mesh& mesh = *setup->mesh;
     for (auto _ : state) {
         for (OurFace& face : setup->ours) {
-            face.face = our_round_trip(mesh, face.face, nullptr);
+            face.face = our_round_trip(mesh, face.face, options, nullptr);
             if (face.face == sxk::invalid_id) {
                 state.SkipWithError("sxk refused a round trip it made during setup");
                 return;
@@ -302,7 +311,12 @@ int main(int argc, char** argv) {
     }
     const std::unique_ptr<Setup> setup = make_setup(options);
     benchmark::AddCustomContext("tets", std::to_string(setup->tets));
-    benchmark::RegisterBenchmark("sxk/round_trip", run_sxk, setup.get())->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("sxk/round_trip", run_sxk, setup.get(), sxk::TetFlipOptions{})
+        ->Unit(benchmark::kMillisecond);
+    sxk::TetFlipOptions embedded;
+    embedded.reference_is_embedding = true;
+    benchmark::RegisterBenchmark("sxk_embedded/round_trip", run_sxk, setup.get(), embedded)
+        ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("cgal/round_trip", run_cgal, setup.get())->Unit(benchmark::kMillisecond);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

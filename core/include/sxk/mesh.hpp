@@ -179,8 +179,11 @@ public:
     VertexId opposite_vertex(ElementId t, FaceId f) const;
     // The face of t not containing vertex v (v must be a vertex of t).
     FaceId opposite_face(ElementId t, VertexId v) const;
-    // The neighbour of t across its i-th face, or invalid_id on the boundary.
-    ElementId neighbor(ElementId t, int i) const;
+    // The neighbour of t across its i-th face, or invalid_id on the boundary: the element of
+    // mate(face(t, i)), kept beside the faces so that walks pay one load per step.
+    ElementId neighbor(ElementId t, int i) const {
+        return m_elements[t].neighbors[static_cast<std::size_t>(i)];
+    }
 
     // ---- faces --------------------------------------------------------------------------------
     std::size_t face_capacity() const { return m_faces.size(); }
@@ -269,6 +272,10 @@ private:
         Simplex simplex;                // count() == 0: free; then faces[0] is the next free id
         std::array<FaceId, 4> faces{invalid_id, invalid_id, invalid_id, invalid_id};
         int label = 0;
+        // neighbors[i] = face_element(mate(faces[i])) or invalid_id: derived from the faces
+        // (validate checks it), stored because star walks and ring walks are memory-bound and
+        // the derivation costs two more dependent loads from the face pool per step.
+        std::array<ElementId, 4> neighbors{invalid_id, invalid_id, invalid_id, invalid_id};
     };
     struct FaceRecord {
         ElementId element = invalid_id;  // invalid_id: free; then mate is the next free id
@@ -311,9 +318,17 @@ private:
     // After an edit: vertices of the elements `added` (ids `added_ids`) get an anchor if theirs
     // no longer holds them; vertices of `old_vertices` that lost theirs take one of
     // `neighbours` (elements next to the edited ones) that contains them, or none.
+    // Recomputes neighbors[] of t from its faces' mates, and the entry of each mate's element
+    // that points back (the edit primitives call it for every element whose faces they set).
+    void link_neighbors(ElementId t);
+    void link_neighbor(ElementId t, int i);  // the same for slot i only
+    // f lost its mate (it is on the boundary now): its element's neighbour entry is cleared.
+    void unlink_neighbor(FaceId f);
+    // `edited_sorted`: the ids the edit removed or substituted (sorted); other anchors hold.
     void repair_anchors(std::span<const Simplex> added, std::span<const ElementId> added_ids,
                         std::span<const VertexId> old_vertices,
-                        std::span<const ElementId> neighbours);
+                        std::span<const ElementId> neighbours,
+                        std::span<const ElementId> edited_sorted);
 
     int m_dimension;
     int m_ambient;

@@ -23,7 +23,7 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
     const VertexId q = mesh.opposite_vertex(t1, other);
     // Thesis Fig. 5.9: if p and q are already joined elsewhere, the flip would represent the
     // edge pq twice and the result would not be a manifold complex.
-    if (detail::edge_exists(mesh, p, q))
+    if (!detail::embedding_proves_absence(options) && detail::edge_exists(mesh, p, q))
         return Refusal{"flip_23: edge " + to_text(Simplex(+1, {p, q})) +
                        " already exists"};
 

@@ -29,7 +29,8 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
                                              a, b, c);
     // Thesis Fig. 5.9: if cde is already a triangle of the mesh (outside the ring, necessarily),
     // the flip would represent it three times.
-    if (detail::star_has(mesh, c, [&](const Simplex& s) { return s.contains(d) && s.contains(e); }))
+    if (!detail::embedding_proves_absence(options) &&
+        detail::star_has(mesh, c, [&](const Simplex& s) { return s.contains(d) && s.contains(e); }))
         return Refusal{"flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) + " already exists"};
     // Replacing b (resp. a) by e in <ab,c,d> gives the tetrahedron <cde,a> (resp. <cde,b>) with
     // the orientation the ring induces: exactly the inverse of flip_23's substitutions.

@@ -31,7 +31,7 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     }
     const std::size_t m = static_cast<std::size_t>(diagonal);
     const VertexId u = v[m], w = v[m + 2];
-    if (detail::edge_exists(mesh, u, w))
+    if (!detail::embedding_proves_absence(options) && detail::edge_exists(mesh, u, w))
         return Refusal{"flip_44: edge " + to_text(Simplex(+1, {u, w})) +
                        " already exists"};
 

@@ -27,7 +27,8 @@
 // Refusals (mesh, ids and watchers untouched), reasons begin with "flip_23: ":
 //   not a tetrahedral mesh; `face` not a face; face on the boundary; t0 and t1 have different
 //   labels ("elements have different labels (a material interface)"); edge pq already exists
-//   (topologically impossible, thesis Fig. 5.9: the new edge would be represented twice);
+//   (topologically impossible, thesis Fig. 5.9: the new edge would be represented twice; not
+//   searched when options.reference_is_embedding, whose guarantee makes it impossible);
 //   unless options.topology_only, a new tetrahedron that is not strictly positive by exact
 //   orient3d in the reference or the deformed positions (equivalently: segment pq does not
 //   cross the interior of triangle abc, i.e. the union of t0 and t1 is not strictly convex).

@@ -27,7 +27,8 @@
 //   not tetrahedral; bad entry or j; edge on the boundary; degree != 3; the ring's elements
 //   have different labels ("elements have different labels (a material interface)"); the
 //   triangle cde
-//   already exists as a face (topologically impossible, thesis Fig. 5.9); unless
+//   already exists as a face (topologically impossible, thesis Fig. 5.9; not searched when
+//   options.reference_is_embedding); unless
 //   options.topology_only, a new tetrahedron not strictly positive (exact orient3d) in the
 //   reference or the deformed positions (equivalently: ab does not cross triangle cde).
 #pragma once

@@ -26,7 +26,8 @@
 // Refusals (mesh, ids and watchers untouched), reasons begin with "flip_44: ":
 //   not tetrahedral; bad entry, j or diagonal; edge on the boundary (the 2-2 boundary flip is
 //   not provided); degree != 4; the ring's elements have different labels ("elements have
-//   different labels (a material interface)"); the new edge already exists (thesis Fig. 5.9); unless
+//   different labels (a material interface)"); the new edge already exists (thesis Fig. 5.9; not searched when
+//   options.reference_is_embedding); unless
 //   options.topology_only, a new tetrahedron not strictly positive (exact orient3d) in the
 //   reference or the deformed positions. The classic 4-4 flip has a, b and the ring coplanar
 //   pairs; no such coplanarity is required here, only positivity of the result.
