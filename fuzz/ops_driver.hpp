@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "sxk/generators.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/dissect.hpp"
@@ -242,33 +243,12 @@ inline Mesh octahedron(double size) {
     return mesh;
 }
 
-// Kuhn cube of n^3 cubes with 6 tetrahedra each; label 1 for the lower half, 0 above.
+// Kuhn cube of n^3 cubes with 6 tetrahedra each (sxk::make_kuhn_cube); label 1 for the lower
+// half, 0 above.
 inline Mesh kuhn_cube(int n, double jitter, Choices& choices) {
-    Mesh mesh(3, 3);
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), double(k)});
-    auto id = [n](int i, int j, int k) { return VertexId((k * (n + 1) + j) * (n + 1) + i); };
-    static constexpr std::array<std::array<int, 3>, 6> orders{
-        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-    std::vector<Simplex> tets;
-    std::vector<int> labels;
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                for (std::size_t o = 0; o < orders.size(); ++o) {
-                    std::array<int, 3> c{i, j, k};
-                    std::array<VertexId, 4> v{};
-                    v[0] = id(c[0], c[1], c[2]);
-                    for (int step = 0; step < 3; ++step) {
-                        ++c[static_cast<std::size_t>(orders[o][static_cast<std::size_t>(step)])];
-                        v[static_cast<std::size_t>(step + 1)] = id(c[0], c[1], c[2]);
-                    }
-                    const int sign = (o == 0 || o == 3 || o == 4) ? +1 : -1;
-                    tets.emplace_back(sign, v);
-                    labels.push_back(2 * k < n ? 1 : 0);
-                }
-    (void)mesh.assign_elements(tets, labels);
+    Mesh mesh = std::move(make_kuhn_cube(n)).value();
+    const auto layer = static_cast<ElementId>(6 * n * n);  // elements per layer of cubes
+    for (const ElementId t : elements(mesh)) mesh.set_label(t, 2 * static_cast<int>(t / layer) < n ? 1 : 0);
     jitter_interior(mesh, jitter, choices);
     return mesh;
 }

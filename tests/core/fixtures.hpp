@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
+#include "sxk/generators.hpp"
 #include "sxk/mesh.hpp"
 
 namespace sxk::test {
@@ -49,33 +51,11 @@ inline Mesh planar_grid(int n) {
 // main diagonal (0,0,0)-(1,1,1) and positively oriented. n = 8 gives the thesis' 729-node,
 // 3072-tetrahedron cube.
 inline Mesh kuhn_cube(int n) {
-    Mesh mesh(3, 3);
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), double(k)});
-    auto id = [n](int i, int j, int k) { return VertexId((k * (n + 1) + j) * (n + 1) + i); };
-    // the six paths from (0,0,0) to (1,1,1) along unit steps, one tetrahedron each
-    static constexpr std::array<std::array<int, 3>, 6> orders{
-        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-    std::vector<Simplex> tets;
-    std::vector<int> labels;
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                for (std::size_t o = 0; o < orders.size(); ++o) {
-                    std::array<int, 3> c{i, j, k};
-                    std::array<VertexId, 4> v{};
-                    v[0] = id(c[0], c[1], c[2]);
-                    for (int step = 0; step < 3; ++step) {
-                        ++c[static_cast<std::size_t>(orders[o][static_cast<std::size_t>(step)])];
-                        v[static_cast<std::size_t>(step + 1)] = id(c[0], c[1], c[2]);
-                    }
-                    // even permutations of the axes give one orientation, odd the other
-                    const int sign = (o == 0 || o == 3 || o == 4) ? +1 : -1;
-                    tets.emplace_back(sign, v);
-                    labels.push_back(static_cast<int>(o));
-                }
-    EXPECT_TRUE(mesh.assign_elements(tets, labels).ok());
+    auto made = make_kuhn_cube(n);
+    EXPECT_TRUE(made.ok()) << made.reason();
+    Mesh mesh = std::move(made).value();
+    // label each tetrahedron by its path (0..5), so that label-aware code sees six materials
+    for (const ElementId t : elements(mesh)) mesh.set_label(t, static_cast<int>(t % 6));
     return mesh;
 }
 

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "parse_option.hpp"
+#include "sxk/generators.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/refine_around.hpp"
 #include "sxk/ops/refine_around_tetrahedra.hpp"
@@ -41,37 +42,12 @@ namespace {
 constexpr int restore_every = 50;
 
 sxk::Mesh kuhn_cube(int n) {
-    sxk::Mesh mesh(3, 3);
-    mesh.reserve(static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1)),
-                 static_cast<std::size_t>(6 * n * n * n));
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), double(k)});
-    auto id = [n](int i, int j, int k) { return sxk::VertexId((k * (n + 1) + j) * (n + 1) + i); };
-    // the six monotone paths from a cube's corner (0,0,0) to (1,1,1), one tetrahedron each
-    static constexpr std::array<std::array<int, 3>, 6> orders{
-        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
-    std::vector<sxk::Simplex> tets;
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                for (const auto& order : orders) {
-                    std::array<int, 3> c{i, j, k};
-                    std::array<sxk::VertexId, 4> v{};
-                    v[0] = id(c[0], c[1], c[2]);
-                    for (std::size_t step = 0; step < 3; ++step) {
-                        ++c[static_cast<std::size_t>(order[step])];
-                        v[step + 1] = id(c[0], c[1], c[2]);
-                    }
-                    const sxk::Sign s = sxk::orient3d(mesh.reference(v[0]), mesh.reference(v[1]),
-                                                      mesh.reference(v[2]), mesh.reference(v[3]));
-                    tets.emplace_back(s == sxk::Sign::negative ? -1 : +1, v);
-                }
-    if (const auto built = mesh.assign_elements(tets); !built) {
-        std::fprintf(stderr, "refine_latency: %s\n", built.reason().c_str());
+    auto made = sxk::make_kuhn_cube(n);
+    if (!made) {
+        std::fprintf(stderr, "refine_latency: %s\n", made.reason().c_str());
         std::exit(1);
     }
-    return mesh;
+    return std::move(made).value();
 }
 
 sxk::Mesh grid(int n) {
