@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "ops/tet_bisection_amp.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/split_edge.hpp"
 #include "sxk/predicates.hpp"
@@ -89,6 +90,14 @@ Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& 
     if (t == invalid_id)
         return Refusal{"refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
 
+    if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {
+        // AMP: bisect the leaf containing x and close to conformity, until its refinement edge
+        // is short enough; one transaction as well (tet_bisection_amp.hpp)
+        auto refined = detail::amp_refine_around(state, t, x, h);
+        if (!refined.ok())
+            return Refusal{"refine_around_tetrahedra: bisect_tetrahedron: " + refined.reason()};
+        return refined;
+    }
     // One transaction: every bisection of the call is planned on the overlay, then replayed.
     detail::TetBisectionPlan plan(mesh, state.rule(),
                                   [&state](ElementId u) { return state.marking(u); });

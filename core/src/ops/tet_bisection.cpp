@@ -160,6 +160,16 @@ Outcome<TetBisection> TetBisection::with_initial_marking(Mesh& mesh) {
     return TetBisection(mesh, std::move(markings), BisectionRule::longest_edge);
 }
 
+Outcome<TetBisection> TetBisection::with_amp_marking(Mesh& mesh) {
+    if (mesh.topological_dimension() != 3)
+        return Refusal{"tet_bisection: the mesh has triangles, not tetrahedra"};
+    // AMP's initial marking: the longest edge (one strict order) for the refinement edge and
+    // every face mark, so neighbours agree on each shared face; flags unset
+    std::vector<TetMarking> markings(mesh.element_capacity());
+    for (ElementId t : elements(mesh)) markings[t] = longest_edge_marking(mesh, t);
+    return TetBisection(mesh, std::move(markings), BisectionRule::arnold_mukherjee_pouly);
+}
+
 Outcome<TetBisection> TetBisection::for_kuhn_mesh(Mesh& mesh) {
     if (mesh.topological_dimension() != 3)
         return Refusal{"tet_bisection: the mesh has triangles, not tetrahedra"};

@@ -1,7 +1,9 @@
 // bisect_tetrahedron: thesis §6.5 bisect(e) in 3D, with Maubach / longest-edge marks
-// (tet_bisection.hpp). Planned on an overlay first, then replayed (tet_bisection_plan.hpp).
+// (tet_bisection.hpp). Planned on an overlay first, then replayed (tet_bisection_plan.hpp); the
+// AMP rule refines to conformity instead (tet_bisection_amp.hpp).
 #include <string>
 
+#include "ops/tet_bisection_amp.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/tet_bisection.hpp"
 
@@ -14,6 +16,11 @@ Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t) {
     if (state.is_stale())
         return Refusal{"bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
 
+    if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {
+        auto bisected = detail::amp_bisect(state, t);
+        if (!bisected.ok()) return Refusal{"bisect_tetrahedron: " + bisected.reason()};
+        return bisected;
+    }
     detail::TetBisectionPlan plan(mesh, state.rule(),
                                   [&state](ElementId u) { return state.marking(u); });
     bool did_not_end = false;

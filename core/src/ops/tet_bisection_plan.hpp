@@ -304,6 +304,10 @@ struct TetBisectionAccess {
     static void make_stale(TetBisection& state, const std::string& why) {
         state.m_stale_reason = why;
     }
+    // for the AMP replay (tet_bisection_amp.cpp), which edits through replace_elements
+    static std::vector<TetMarking>& markings(TetBisection& state) { return state.m_markings; }
+    static void set_own_edit(TetBisection& state, bool own) { state.m_own_edit = own; }
+    static void set_last_child(TetBisection& state, ElementId t) { state.m_last_child = t; }
 
     static Outcome<Done> replay(TetBisection& state, const std::vector<TetEdge>& splits,
                                 const std::string& operation) {

@@ -49,7 +49,12 @@ namespace sxk {
 // invalid one starts at the first live element). invalid_id when x is in no element.
 SXK_API ElementId locate_tetrahedron(const Mesh& mesh, const Point& x, ElementId start);
 
-// Refines with an existing bisection state (its marking carries over between calls).
+// Refines with an existing bisection state (its marking carries over between calls). With the
+// AMP rule (TetBisection::with_amp_marking) each bisection of the tetrahedron containing x is
+// followed by AMP's closure to conformity (tetrahedra with a hanging node bisected at their own
+// refinement edges) on the plan, and the whole call is replayed as one replace_elements; the
+// refusal of a child then reads "refine_around_tetrahedra: bisect_tetrahedron: new element ...
+// would be flat in the deformed positions" (no "split_edge: ").
 SXK_API Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x,
                                                       double h);
 
