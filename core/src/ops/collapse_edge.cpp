@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -12,64 +14,15 @@
 namespace sxk {
 namespace {
 
-// The virtual vertex standing for "outside": joined to every boundary face, it turns a mesh
-// with boundary into a closed complex for the link condition (Dey et al., edge contraction).
-constexpr VertexId outside = invalid_id;
-
-// A simplex of a link: {size, its vertices sorted, 0 padding}. The links of one edge collapse
-// have a few dozen simplexes of at most 3 vertices: flat sorted arrays searched by bisection,
-// with no allocation per simplex.
-using LinkSimplex = std::array<VertexId, 4>;
-
-// Adds every non-empty subset of the first n of `vertices` (which exclude the apex) to `link`.
-void add_faces_of(std::array<VertexId, 3> vertices, std::size_t n, std::vector<LinkSimplex>& link) {
-    for (std::size_t i = 1; i < n; ++i)  // at most three: insertion sort
-        for (std::size_t j = i; j > 0 && vertices[j] < vertices[j - 1]; --j)
-            std::swap(vertices[j], vertices[j - 1]);
-    for (unsigned mask = 1; mask < (1u << n); ++mask) {
-        LinkSimplex s{};
-        for (std::size_t i = 0; i < n; ++i)
-            if (mask & (1u << i)) s[++s[0]] = vertices[i];
-        link.push_back(s);
-    }
-}
-
-// link(sigma) for sigma = {v} or {v, w}: the simplexes tau disjoint from sigma with tau * sigma
-// in the closed star, the boundary joined to `outside`. Sorted, without repeats.
-std::vector<LinkSimplex> link_of(const Mesh& mesh, std::span<const ElementId> around,
-                                 std::span<const VertexId> sigma) {
-    std::vector<LinkSimplex> link;
-    auto in_sigma = [&](VertexId v) { return std::find(sigma.begin(), sigma.end(), v) != sigma.end(); };
-    for (const ElementId t : around) {
-        const Simplex& tau = mesh.simplex(t);
-        if (!std::all_of(sigma.begin(), sigma.end(), [&](VertexId v) { return tau.contains(v); }))
-            continue;
-        std::array<VertexId, 3> rest{};
-        std::size_t rest_count = 0;
-        for (const VertexId v : tau.vertices())
-            if (!in_sigma(v)) rest[rest_count++] = v;
-        add_faces_of(rest, rest_count, link);
-        // boundary faces of t containing sigma, joined to the outside vertex
-        for (int i = 0; i < tau.count(); ++i) {
-            if (in_sigma(tau.vertex(i)) || mesh.mate(mesh.face(t, i)) != invalid_id) continue;
-            std::array<VertexId, 3> face_rest{outside};
-            std::size_t face_count = 1;
-            for (std::size_t j = 0; j < rest_count; ++j)
-                if (rest[j] != tau.vertex(i)) face_rest[face_count++] = rest[j];
-            add_faces_of(face_rest, face_count, link);
-        }
-    }
-    std::sort(link.begin(), link.end());
-    link.erase(std::unique(link.begin(), link.end()), link.end());
-    return link;
-}
+// A vertex star: 2D stars have ~6 elements, 3D stars ~25.
+using Star = detail::SmallVector<ElementId, 64>;
 
 bool on_boundary(const Mesh& mesh, std::span<const ElementId> around, VertexId v, VertexId w = invalid_id) {
     for (const ElementId t : around) {
         const Simplex& tau = mesh.simplex(t);
         if (w != invalid_id && !tau.contains(w)) continue;
         for (int i = 0; i < tau.count(); ++i)
-            if (tau.vertex(i) != v && tau.vertex(i) != w && mesh.mate(mesh.face(t, i)) == invalid_id)
+            if (tau.vertex(i) != v && tau.vertex(i) != w && mesh.neighbor(t, i) == invalid_id)
                 return true;
     }
     return false;
@@ -84,13 +37,19 @@ bool on_hull_of(const Simplex& face, const Mesh& mesh, const Point& p, Positions
     return orient3d(point(0), point(1), point(2), p) == Sign::zero;
 }
 
+std::string in_the(Positions positions) {
+    return std::string(" in the ") + detail::positions_text(positions) + " positions";
+}
+
 Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail::MovedVertex& moved) {
     const std::size_t n = mesh.vertex_count();
     if (from >= n || to >= n)
         return Refusal{"collapse_edge: " + std::to_string(from >= n ? from : to) + " is not a vertex"};
     if (from == to) return Refusal{"collapse_edge: the two ends are the same vertex"};
-    const std::vector<ElementId> star_from = star(mesh, from);
-    const std::vector<ElementId> star_to = star(mesh, to);
+    // Both stars are walked once (in sxk::star order) and serve every check and the edit.
+    Star star_from, star_to;
+    detail::star_into(mesh, from, star_from);
+    detail::star_into(mesh, to, star_to);
     const Simplex edge(+1, {from, to});
     if (std::none_of(star_from.begin(), star_from.end(),
                      [&](ElementId t) { return mesh.simplex(t).contains(to); }))
@@ -103,19 +62,13 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                        " is interior but vertex " + std::to_string(from) +
                        " is on the boundary: the collapse would move the boundary"};
 
-    // Link condition (thesis Fig. 3.10): otherwise the result is not a manifold.
-    {
-        const std::array<VertexId, 1> just_from{from}, just_to{to};
-        const std::array<VertexId, 2> both{from, to};
-        const std::vector<LinkSimplex> link_from = link_of(mesh, star_from, just_from);
-        const std::vector<LinkSimplex> link_to = link_of(mesh, star_to, just_to);
-        const std::vector<LinkSimplex> link_edge = link_of(mesh, star_from, both);
-        for (const LinkSimplex& s : link_from)
-            if (std::binary_search(link_to.begin(), link_to.end(), s) &&
-                !std::binary_search(link_edge.begin(), link_edge.end(), s))
-                return Refusal{"collapse_edge: " + to_text(edge) +
-                               " violates the link condition (the result would not be a manifold)"};
-    }
+    // Link condition (thesis Fig. 3.10): otherwise the result is not a manifold. Triangle meshes
+    // test it on the two stars directly (split_collapse_checks.hpp: the same answer).
+    if (!(mesh.topological_dimension() == 2
+              ? detail::link_condition_holds_2d(mesh, star_from, star_to, from, to)
+              : detail::link_condition_holds(mesh, star_from, star_to, from, to)))
+        return Refusal{"collapse_edge: " + to_text(edge) +
+                       " violates the link condition (the result would not be a manifold)"};
 
     // Boundary faces whose vertex moves must keep their line / plane: for from, the faces of
     // star(from) not containing to (they get `to` in place of `from`); for the point overload
@@ -123,29 +76,27 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
     const bool moves_to = moved.vertex == to;
     for (const Positions positions : {Positions::reference, Positions::deformed}) {
         const Point& target = detail::position_of(mesh, to, positions, moved);
-        for (const auto* around : {&star_from, &star_to}) {
+        for (const Star* around : {&star_from, &star_to}) {
             const VertexId mover = around == &star_from ? from : to;
             if (mover == to && !moves_to) continue;
             for (const ElementId t : *around) {
                 const Simplex& tau = mesh.simplex(t);
                 for (int i = 0; i < tau.count(); ++i) {
-                    const FaceId f = mesh.face(t, i);
-                    if (mesh.mate(f) != invalid_id) continue;
-                    const Simplex face = mesh.face_simplex(f);
+                    if (mesh.neighbor(t, i) != invalid_id) continue;
+                    const Simplex face = tau.subn(i);  // invariant 7.1
                     if (!face.contains(mover) || (face.contains(from) && face.contains(to))) continue;
                     if (!on_hull_of(face, mesh, target, positions))
                         return Refusal{"collapse_edge: boundary face " + to_text(face) +
                                        " would leave its " + (face.count() == 2 ? "line" : "plane") +
-                                       " in the " + detail::positions_text(positions) +
-                                       " positions: the collapse would move the boundary"};
+                                       in_the(positions) + ": the collapse would move the boundary"};
                 }
             }
         }
     }
 
-    std::vector<Simplex> survivors;
-    std::vector<ElementId> originals;
-    std::vector<int> labels;
+    detail::SmallVector<Simplex, 32> survivors;
+    detail::SmallVector<ElementId, 32> originals;
+    detail::SmallVector<int, 32> labels;
     for (const ElementId t : star_from) {
         const Simplex& tau = mesh.simplex(t);
         if (tau.contains(to)) continue;
@@ -153,45 +104,60 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
         originals.push_back(t);
         labels.push_back(mesh.label(t));
     }
-    // Geometry of what changes shape: the re-attached elements, and for the point overload the
-    // elements of star(to) that stay.
-    std::vector<Simplex> reshaped = survivors;
-    std::vector<Simplex> before;
-    for (const ElementId t : originals) before.push_back(mesh.simplex(t));
+    // Geometry of what changes shape: the re-attached elements (survivors[i], before: the
+    // simplex of originals[i]), and for the point overload the elements of star(to) that stay
+    // (the same simplex before and after). Index i runs over both lists in that order.
+    detail::SmallVector<ElementId, 64> kept_at_to;
     if (moves_to)
         for (const ElementId t : star_to)
-            if (!mesh.simplex(t).contains(from)) {
-                reshaped.push_back(mesh.simplex(t));
-                before.push_back(mesh.simplex(t));
-            }
+            if (!mesh.simplex(t).contains(from)) kept_at_to.push_back(t);
+    const std::size_t reshaped_count = survivors.size() + kept_at_to.size();
+    auto reshaped = [&](std::size_t i) -> const Simplex& {
+        return i < survivors.size() ? survivors[i] : mesh.simplex(kept_at_to[i - survivors.size()]);
+    };
+    auto before = [&](std::size_t i) -> const Simplex& {
+        return mesh.simplex(i < survivors.size() ? originals[i] : kept_at_to[i - survivors.size()]);
+    };
     const bool surface = mesh.topological_dimension() < mesh.ambient_dimension();
     for (const Positions positions : {Positions::reference, Positions::deformed})
-        for (std::size_t i = 0; i < reshaped.size(); ++i) {
-            const Sign s = detail::simplex_orientation(mesh, reshaped[i], positions, moved);
-            const std::string where = std::string(" in the ") + detail::positions_text(positions) + " positions";
-            if (s != Sign::positive)
-                return Refusal{"collapse_edge: element " + to_text(reshaped[i]) +
-                                   (s == Sign::zero ? " would be flat" : " would be inverted") + where,
-                               i};
-            if (surface) {
-                // A triangle in space cannot be "inverted", but it can turn over: compare the
-                // normal before and after (degree-4 sign, exact).
-                auto point_before = [&](int j) -> const Point& {
-                    const VertexId v = before[i].vertex(j);
-                    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-                };
-                // the same vertex order as `before`, with from -> to and `to` where it goes
-                std::array<Point, 3> after{};
-                for (int j = 0; j < 3; ++j) {
-                    const VertexId v = before[i].vertex(j) == from ? to : before[i].vertex(j);
-                    after[static_cast<std::size_t>(j)] = detail::position_of(mesh, v, positions, moved);
-                }
-                if (normal_alignment(point_before(0), point_before(1), point_before(2), after[0],
-                                     after[1], after[2]) != Sign::positive)
-                    return Refusal{"collapse_edge: triangle " + to_text(reshaped[i]) +
-                                       " would turn over" + where,
+        for (std::size_t i = 0; i < reshaped_count; ++i) {
+            if (!surface) {
+                const Sign s = detail::simplex_orientation(mesh, reshaped(i), positions, moved);
+                if (s != Sign::positive)
+                    return Refusal{"collapse_edge: element " + to_text(reshaped(i)) +
+                                       (s == Sign::zero ? " would be flat" : " would be inverted") +
+                                       in_the(positions),
                                    i};
+                continue;
             }
+            // A triangle in space: flat when its vertices are collinear (simplex_orientation's
+            // Sign::zero; it is never "inverted"); and it cannot be inverted, but it can turn
+            // over: compare the normal before and after (degree-4 sign, exact). Both tests on
+            // normals computed once (filtered exact tests, split_collapse_checks.hpp).
+            const Simplex& old_simplex = before(i);
+            std::array<Point, 3> old_points{}, new_points{};
+            for (int j = 0; j < 3; ++j) {
+                const VertexId v = old_simplex.vertex(j);
+                // the same vertex order as before, with from -> to and `to` where it goes
+                old_points[static_cast<std::size_t>(j)] =
+                    positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+                new_points[static_cast<std::size_t>(j)] =
+                    detail::position_of(mesh, v == from ? to : v, positions, moved);
+            }
+            const detail::TriangleNormal new_normal =
+                detail::triangle_normal(new_points[0], new_points[1], new_points[2]);
+            if (detail::collinear_filtered(new_points[0], new_points[1], new_points[2], new_normal))
+                return Refusal{"collapse_edge: element " + to_text(reshaped(i)) + " would be flat" +
+                                   in_the(positions),
+                               i};
+            const detail::TriangleNormal old_normal =
+                detail::triangle_normal(old_points[0], old_points[1], old_points[2]);
+            if (detail::normal_alignment_filtered(old_points[0], old_points[1], old_points[2], old_normal,
+                                                  new_points[0], new_points[1], new_points[2],
+                                                  new_normal) != Sign::positive)
+                return Refusal{"collapse_edge: triangle " + to_text(reshaped(i)) + " would turn over" +
+                                   in_the(positions),
+                               i};
         }
 
     // Face labels (keyed by vertex set) of the faces around `from`: a face with both ends
@@ -212,7 +178,29 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                     moved_labels.emplace_back(Simplex(+1, face.substituted(from, to).vertices()), label->second);
             }
 
-    auto result = mesh.replace_elements(star_from, survivors, labels);
+    // Triangle meshes (planar or surfaces) skip replace_elements' star walks, which the checks
+    // above prove (mesh_checks.hpp, ProvenEdit). On a valid triangle mesh every vertex link is
+    // a path or a cycle (faces in at most two triangles, face-connected stars); `from`'s link
+    // L is a cycle (or, `from` on the boundary, a path ending at `to`, since a boundary `from`
+    // must slide along a boundary edge). (a) A new element tau[from -> to] is `to` joined to
+    // the edge rho of tau opposite `from`; were it an element already, rho would be in
+    // link(from) and link(to) but not in link(from-to) (that would make from, to and rho a
+    // tetrahedron): the link condition refuses that. A new face {to, x} with x in L: if it is
+    // an edge already, x is in link(from) and link(to), so (link condition) x is opposite the
+    // edge, (from, to, x) is a removed triangle and the re-attached triangle across {from, x}
+    // takes over exactly that triangle's face <to, x>, orientation included (the mate of
+    // {from, x} in it is the face the removed triangle had; substituting `to` for `from` in
+    // both gives equal oriented faces): a reused face, not a new one. (b) The link of `to`
+    // becomes link(to) with `from` replaced by the part of L between the two vertices opposite
+    // the edge (one, on a boundary edge), which share no other vertex with link(to) (link
+    // condition): a path or cycle again, so star(to) stays face-connected; the link of x in L
+    // gets `to` in place of `from` (x not opposite the edge: `to` is not in it already, by the
+    // link condition) or loses `from` next to `to` (x opposite the edge): connected again.
+    // Tetrahedral meshes allow vertex links that are not spheres or discs, so they keep the
+    // generic checks.
+    auto result = mesh.topological_dimension() == 2
+                      ? ProvenEdit::replace(mesh, star_from, survivors, labels)
+                      : mesh.replace_elements(star_from, survivors, labels);
     if (!result.ok()) return Refusal{"collapse_edge: " + result.reason()};
     for (const Simplex& face : gone_labels) mesh.face_labels().erase(face);
     for (const auto& [face, label] : moved_labels) mesh.face_labels().try_emplace(face, label);

@@ -7,6 +7,7 @@
 
 #include "mesh_checks.hpp"
 #include "ops/label_constraints.hpp"
+#include "ops/split_collapse_checks.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
@@ -30,13 +31,6 @@ const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
     return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
 }
 
-// The two new triangles' normals point in opposite directions: the surface would fold over
-// the new edge (thesis §5.3: flips on 3D surfaces must be checked for failure cases).
-bool folds(const Point& a, const Point& b, const Point& c, const Point& d) {
-    // normals of <a,d,c> and <d,b,c>
-    return normal_alignment(a, d, c, d, b, c) == Sign::negative;
-}
-
 }  // namespace
 
 Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipOptions& options) {
@@ -46,7 +40,11 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     if (!mesh.is_face(edge))
         return Refusal{"flip_edge: " + std::to_string(edge) + " is not a face of the mesh"};
 
-    const Simplex edge_simplex = mesh.face_simplex(edge);
+    // face_simplex(edge), c and d without Mesh::face_slot calls: t0's slot of `edge` is the
+    // index of c (invariant 7.1)
+    const ElementId t0 = mesh.face_element(edge);
+    const int slot0 = detail::slot_of(mesh, t0, edge);
+    const Simplex edge_simplex = mesh.simplex(t0).subn(slot0);
     // the oriented edge <a,b> as t0 = <a,b,c> sees it (t0 = edge_simplex.sup(c))
     const VertexId a = edge_simplex.sign() > 0 ? edge_simplex.vertex(0) : edge_simplex.vertex(1);
     const VertexId b = edge_simplex.sign() > 0 ? edge_simplex.vertex(1) : edge_simplex.vertex(0);
@@ -54,18 +52,18 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     if (mate == invalid_id)
         return Refusal{"flip_edge: edge " + vertex_set(a, b) + " is on the boundary"};
 
-    const ElementId t0 = mesh.face_element(edge);
     const ElementId t1 = mesh.face_element(mate);
     const std::array<ElementId, 2> pair{t0, t1};
     if (Refusal r = detail::refuse_material_interface(mesh, pair, "flip_edge"); !r.reason.empty())
         return r;
-    const VertexId c = mesh.opposite_vertex(t0, edge);
-    const VertexId d = mesh.opposite_vertex(t1, mate);
+    const VertexId c = mesh.simplex(t0).vertex(slot0);
+    const VertexId d = mesh.simplex(t1).vertex(detail::slot_of(mesh, t1, mate));
 
     // Thesis Fig. 5.9: when c-d is already an edge the flip would represent it twice (on a
-    // surface: anywhere; in the plane: a vertex of degree 3). Walking around c says what is
-    // actually wrong, and proves what replace_elements would otherwise check (see below).
-    if (detail::edge_exists(mesh, c, d))
+    // surface: anywhere; in the plane: a vertex of degree 3). Walking around c (its fan of
+    // triangles, from t0) says what is actually wrong, and proves what replace_elements would
+    // otherwise check (see below).
+    if (detail::fan_has_edge(mesh, t0, c, d))
         return Refusal{"flip_edge: new edge " + vertex_set(c, d) +
                        " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
                        " is topologically impossible"};
@@ -86,13 +84,24 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             }
         } else {
             // a triangle in space has no orientation of its own, but a collinear one has no
-            // normal and is never a valid element, whatever the caller decided
-            for (const auto& triangle : new_triangles)
-                if (collinear(p(triangle[0]), p(triangle[1]), p(triangle[2])))
+            // normal and is never a valid element, whatever the caller decided. Each normal is
+            // computed once (filtered exact tests, split_collapse_checks.hpp) for both the
+            // collinearity and the fold test.
+            const std::array<detail::TriangleNormal, 2> normals{
+                detail::triangle_normal(p(a), p(d), p(c)), detail::triangle_normal(p(d), p(b), p(c))};
+            for (std::size_t i = 0; i < 2; ++i) {
+                const auto& triangle = new_triangles[i];
+                if (detail::collinear_filtered(p(triangle[0]), p(triangle[1]), p(triangle[2]), normals[i]))
                     return Refusal{"flip_edge: new triangle " + vertex_set(triangle) +
                                    " would be degenerate (collinear vertices) in the " +
                                    positions_name(positions) + " positions"};
-            if (!options.topology_only && folds(p(a), p(b), p(c), p(d)))
+            }
+            // the new triangles' normals point in opposite directions: the surface would fold
+            // over the new edge (thesis §5.3: flips on 3D surfaces must be checked for failure
+            // cases); normals of <a,d,c> and <d,b,c>
+            if (!options.topology_only &&
+                detail::normal_alignment_filtered(p(a), p(d), p(c), normals[0], p(d), p(b), p(c),
+                                                  normals[1]) == Sign::negative)
                 return Refusal{"flip_edge: flipping edge " + vertex_set(a, b) + " to " + vertex_set(c, d) +
                                " would fold the surface (the new triangles' normals are opposite) in the " +
                                positions_name(positions) + " positions"};

@@ -14,7 +14,10 @@ Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t) {
     if (a == b) return Refusal{"split_edge: the two ends are the same vertex"};
     // negated comparison so that NaN is refused too
     if (!(t > 0 && t < 1)) return Refusal{"split_edge: t = " + std::to_string(t) + " is not in (0,1)"};
-    const std::vector<ElementId> parents = detail::elements_with_edge(mesh, a, b);
+    // the edge's elements in star(a) order, found without allocating (a triangle mesh stops
+    // the walk at the first one: its neighbour across ab is the only other)
+    detail::SmallVector<ElementId, 64> parents;
+    detail::edge_elements_into(mesh, a, b, parents);
     if (parents.empty())
         return Refusal{"split_edge: " + to_text(Simplex(+1, {a, b})) +
                        " is not an edge"};
