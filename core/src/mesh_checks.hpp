@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <new>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -30,9 +32,14 @@ inline std::string check_simplex(const Simplex& s, int vertex_count_per_element,
 
 // A vector that keeps its first N elements in place (on the stack, as a local) and moves to the
 // heap only beyond N: the edit primitives' scratch lists (a few faces, one vertex star) fit in
-// place, so a flip allocates nothing but its result. Only for trivially copyable T.
+// place, so a flip allocates nothing but its result. Only for trivially copyable T. The in-place
+// slots are raw storage, not N constructed T: types with default member initialisers would
+// otherwise be written N times on every construction (64 NewFace records, 2.5 KB of stores per
+// replace_elements call, before any work).
 template <class T, std::size_t N>
 class SmallVector {
+    static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+
 public:
     SmallVector() = default;
     SmallVector(const SmallVector&) = delete;
@@ -40,8 +47,8 @@ public:
 
     std::size_t size() const { return m_size; }
     bool empty() const { return m_size == 0; }
-    T* data() { return m_heap.empty() ? m_inline : m_heap.data(); }
-    const T* data() const { return m_heap.empty() ? m_inline : m_heap.data(); }
+    T* data() { return m_heap.empty() ? inline_data() : m_heap.data(); }
+    const T* data() const { return m_heap.empty() ? inline_data() : m_heap.data(); }
     T* begin() { return data(); }
     T* end() { return data() + m_size; }
     const T* begin() const { return data(); }
@@ -54,11 +61,12 @@ public:
     void push_back(const T& value) {
         if (m_heap.empty()) {
             if (m_size < N) {
-                m_inline[m_size++] = value;
+                ::new (static_cast<void*>(inline_data() + m_size)) T(value);
+                ++m_size;
                 return;
             }
             m_heap.reserve(2 * N);
-            m_heap.assign(m_inline, m_inline + m_size);
+            m_heap.assign(inline_data(), inline_data() + m_size);
         }
         m_heap.push_back(value);
         ++m_size;
@@ -79,7 +87,10 @@ public:
     }
 
 private:
-    T m_inline[N];
+    T* inline_data() { return std::launder(reinterpret_cast<T*>(m_inline)); }
+    const T* inline_data() const { return std::launder(reinterpret_cast<const T*>(m_inline)); }
+
+    alignas(T) std::byte m_inline[N * sizeof(T)];
     std::vector<T> m_heap;
     std::size_t m_size = 0;
 };
