@@ -134,6 +134,24 @@ TEST(SxkRefine, RefinesTetrahedraAroundAPoint) {
     EXPECT_EQ(info["elements"], json["elements"]);
 }
 
+TEST(SxkRefine, AmpRuleRefinesTetrahedraAndUnknownRulesAreRefused) {
+    ScratchFolder folder;
+    const fs::path mesh = folder / "two.mesh", out = folder / "out.mesh";
+    write_file(mesh, two_tetrahedra_mesh);
+    const ProcessResult run = sxk({"refine", mesh.string(), out.string(), "--around",
+                                   "0.2,0.2,0.2", "--size", "0.3", "--rule", "amp", "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json json = nlohmann::json::parse(run.out);
+    EXPECT_GT(json["bisections"].get<int>(), 3);
+    EXPECT_EQ(json["vertices"].get<int>(), 5 + json["bisections"].get<int>());
+    EXPECT_EQ(sxk({"validate", out.string()}).exit_code, 0);
+
+    const ProcessResult bad = sxk({"refine", mesh.string(), out.string(), "--around",
+                                   "0.2,0.2,0.2", "--size", "0.3", "--rule", "newest"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("--rule: newest not in {longest-edge,amp}"), std::string::npos) << bad.err;
+}
+
 TEST(SxkRefine, PointOutsideTheTetrahedraIsRefused) {
     ScratchFolder folder;
     const fs::path mesh = folder / "two.mesh", out = folder / "out.mesh";

@@ -1,7 +1,7 @@
-// sxk refine IN OUT --around X,Y[,Z] --size H [--json]: refines by edge bisection until the
-// element containing the point has edges no longer than H (thesis §6.5 refine-around;
-// sxk/ops/refine_around.hpp for triangle meshes, sxk/ops/refine_around_tetrahedra.hpp for
-// tetrahedra).
+// sxk refine IN OUT --around X,Y[,Z] --size H [--rule longest-edge|amp] [--json]: refines by
+// edge bisection until the element containing the point has edges no longer than H (thesis
+// §6.5 refine-around; sxk/ops/refine_around.hpp for triangle meshes,
+// sxk/ops/refine_around_tetrahedra.hpp and sxk/ops/tet_bisection.hpp for tetrahedra).
 #include <charconv>
 #include <cmath>
 #include <memory>
@@ -12,6 +12,7 @@
 #include "progress.hpp"
 #include "sxk/ops/refine_around.hpp"
 #include "sxk/ops/refine_around_tetrahedra.hpp"
+#include "sxk/ops/tet_bisection.hpp"
 
 namespace sxk::cli {
 namespace {
@@ -21,6 +22,7 @@ struct RefineOptions {
     std::string output;
     std::string around;
     double size = 0;
+    std::string rule = "longest-edge";
     bool json = false;
 };
 
@@ -65,10 +67,17 @@ int run_refine(Context& context, const RefineOptions& options) {
     if (mesh->topological_dimension() == 3) {
         // longest-edge bisection (the general rule of TetBisection; Maubach's on Kuhn meshes
         // bisects the same edges), state-less: its marks are computed from the positions
+        // or Arnold-Mukherjee-Pouly's marks (bounded shapes), which need a bisection state
         Outcome<std::size_t> refined = std::size_t{0};
         {
             Progress progress("refining " + options.input);
-            refined = refine_around_tetrahedra(*mesh, x, options.size);
+            if (options.rule == "amp") {
+                auto state = TetBisection::with_amp_marking(*mesh);
+                refined = state ? refine_around_tetrahedra(*state, x, options.size)
+                                : Outcome<std::size_t>(state.refusal());
+            } else {
+                refined = refine_around_tetrahedra(*mesh, x, options.size);
+            }
         }
         if (!refined) {
             context.err << "sxk: " << refined.reason() << '\n';
@@ -137,6 +146,11 @@ void add_refine_command(CLI::App& app, Context& context) {
                 return std::string();
             },
             "H > 0"));
+    command
+        ->add_option("--rule", options->rule,
+                     "Tetrahedra: longest-edge (default, no state) or amp (Arnold-Mukherjee-Pouly "
+                     "marks: boundedly many shapes); triangles always use the hypotenuse rule")
+        ->check(CLI::IsMember({"longest-edge", "amp"}));
     command->add_flag("--json", options->json, "Print one JSON object instead of text");
     command->callback([&context, options] { context.exit_code = run_refine(context, *options); });
 }
