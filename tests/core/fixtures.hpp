@@ -6,6 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,6 +18,16 @@
 #include "sxk/mesh.hpp"
 
 namespace sxk::test {
+
+// The seed of a randomised test: SXK_SEED if set, else a random one; printed as
+// "[ seed     ] NAME SXK_SEED=S" and recorded as a test property, so that a failure replays.
+inline std::uint64_t seed_for(const char* name) {
+    std::uint64_t seed = std::random_device{}();
+    if (const char* fixed = std::getenv("SXK_SEED")) seed = std::strtoull(fixed, nullptr, 10);
+    std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
+    ::testing::Test::RecordProperty("seed", std::to_string(seed));
+    return seed;
+}
 
 //   d(3) ------- c(2)
 //    |        /  |          two counter-clockwise triangles <0,1,2> and <0,2,3>

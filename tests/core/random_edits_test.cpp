@@ -16,14 +16,6 @@ namespace {
 using test::CountingWatcher;
 using test::expect_same_state;
 
-std::uint64_t seed_for(const char* name) {
-    std::uint64_t seed = std::random_device{}();
-    if (const char* fixed = std::getenv("SXK_SEED")) seed = std::strtoull(fixed, nullptr, 10);
-    std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
-    ::testing::Test::RecordProperty("seed", std::to_string(seed));
-    return seed;
-}
-
 ElementId random_element(const Mesh& mesh, std::mt19937_64& rng) {
     std::uniform_int_distribution<std::size_t> pick(0, mesh.element_capacity() - 1);
     for (;;) {
@@ -84,7 +76,7 @@ bool random_edit(Mesh& mesh, std::mt19937_64& rng) {
 }
 
 void run_random_edits(Mesh mesh, int steps, const char* name) {
-    std::mt19937_64 rng(seed_for(name));
+    std::mt19937_64 rng(test::seed_for(name));
     CountingWatcher watcher;
     mesh.add_watcher(watcher);
     int accepted = 0;

@@ -190,24 +190,10 @@ TEST(Flip23, RefusesATriangleMesh) {
 // deformed positions are jittered: every accepted flip leaves a valid mesh with every element
 // exactly positive in both positions; every refused one leaves the mesh exactly as it was.
 TEST(Flip23, RandomTwoThreeAndThreeTwoFlipsOnAJitteredKuhnCube) {
-    const std::uint64_t seed = std::random_device{}();
-    std::cout << "[ seed     ] " << seed << "\n";
-    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::uint64_t seed = test::seed_for("Flip23.RandomTwoThreeAndThreeTwoFlipsOnAJitteredKuhnCube");
+    SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 random(seed);
-    Mesh mesh = test::kuhn_cube(3);
-    // kuhn_cube labels each tetrahedron by its type; one material here, or every flip would
-    // cross a material interface and be refused
-    for (ElementId t : elements(mesh)) mesh.set_label(t, 0);
-    // Both positions jittered independently (the reference one less), so exact grid
-    // degeneracies do not refuse every flip and the two position sets disagree on convexity.
-    std::uniform_real_distribution<double> small(-0.08, 0.08), large(-0.15, 0.15);
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
-        Point r = mesh.reference(v), d = mesh.reference(v);
-        for (double& x : r) x += small(random);
-        for (double& x : d) x += large(random);
-        mesh.set_reference(v, r);
-        mesh.set_deformed(v, d);
-    }
+    Mesh mesh = test::jittered_kuhn_cube(3, random);
     ASSERT_TRUE(test::all_positive(mesh));  // jitter well below the unit edge keeps it valid
 
     int accepted_23 = 0, accepted_32 = 0, refused = 0;

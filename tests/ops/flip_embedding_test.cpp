@@ -20,32 +20,16 @@ namespace {
 
 using test::expect_same_state;
 
-std::uint64_t seed_from_environment() {
-    if (const char* s = std::getenv("SXK_SEED")) return std::strtoull(s, nullptr, 10);
-    return std::random_device{}();
-}
-
 // Same operations on two copies of a jittered Kuhn cube, one searching (default options), one
 // trusting the embedding: every flip is accepted by both or refused by both, and after an
-// accepted flip the two meshes are identical. The reference positions are jittered by less
-// than a tenth of the edge length, which keeps every tetrahedron positive and the boundary a
-// simple surface: an embedding. The deformed positions are jittered more (not an embedding;
-// the option is about the reference positions only).
+// accepted flip the two meshes are identical. The reference positions of jittered_kuhn_cube
+// embed the mesh (positive tetrahedra, a simple boundary); the deformed ones are jittered more
+// (the option is about the reference positions only).
 TEST(FlipEmbedding, TrustingTheEmbeddingChangesNoOutcome) {
-    const std::uint64_t seed = seed_from_environment();
-    std::cout << "[ seed     ] FlipEmbedding SXK_SEED=" << seed << "\n";
+    const std::uint64_t seed = test::seed_for("FlipEmbedding.TrustingTheEmbeddingChangesNoOutcome");
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 random(seed);
-    Mesh searching = test::kuhn_cube(3);
-    for (ElementId t : elements(searching)) searching.set_label(t, 0);
-    std::uniform_real_distribution<double> small(-0.08, 0.08), large(-0.15, 0.15);
-    for (VertexId v = 0; v < searching.vertex_count(); ++v) {
-        Point r = searching.reference(v), d = searching.reference(v);
-        for (double& x : r) x += small(random);
-        for (double& x : d) x += large(random);
-        searching.set_reference(v, r);
-        searching.set_deformed(v, d);
-    }
+    Mesh searching = test::jittered_kuhn_cube(3, random);
     ASSERT_TRUE(test::all_positive(searching));
     Mesh trusting = searching;
     TetFlipOptions trust;

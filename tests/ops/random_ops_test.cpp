@@ -16,23 +16,16 @@
 #include <string>
 
 #include "../../fuzz/ops_driver.hpp"
+#include "core/fixtures.hpp"
 
 namespace sxk {
 namespace {
-
-std::uint64_t seed_for(const char* name) {
-    std::uint64_t seed = std::random_device{}();
-    if (const char* fixed = std::getenv("SXK_SEED")) seed = std::strtoull(fixed, nullptr, 10);
-    std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
-    ::testing::Test::RecordProperty("seed", std::to_string(seed));
-    return seed;
-}
 
 // Runs `operations` random operations on meshes of one kind (see ops_driver::start_mesh),
 // starting a fresh mesh every `restart` operations (dissections shred a mesh over time).
 // Returns how many operations of each name succeeded.
 std::map<std::string, int> run(std::uint32_t kind, int operations, const char* name) {
-    const std::uint64_t seed = seed_for(name);
+    const std::uint64_t seed = test::seed_for(name);
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
     bool forced = true;  // the first choice of each start mesh is its kind

@@ -36,14 +36,6 @@
 namespace sxk {
 namespace {
 
-std::uint64_t seed_for(const char* name) {
-    std::uint64_t seed = std::random_device{}();
-    if (const char* fixed = std::getenv("SXK_SEED")) seed = std::strtoull(fixed, nullptr, 10);
-    std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
-    ::testing::Test::RecordProperty("seed", std::to_string(seed));
-    return seed;
-}
-
 // Points that stress the filters: random reals; small integers (exact zeros: collinear points,
 // perpendicular normals); collinear points nudged by one ulp; everything scaled by 2^k (exact),
 // from tiny to huge (beyond the filters' range, where they must hand over to the exact test).
@@ -76,7 +68,7 @@ struct PointMaker {
 };
 
 TEST(SurfaceFastPaths, FilteredTriangleTestsAgreeWithTheExactPredicates) {
-    const std::uint64_t seed = seed_for("SurfaceFastPaths.FilteredTriangleTestsAgreeWithTheExactPredicates");
+    const std::uint64_t seed = test::seed_for("SurfaceFastPaths.FilteredTriangleTestsAgreeWithTheExactPredicates");
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     PointMaker maker{std::mt19937_64(seed)};
     int collinear_cases = 0, zero_alignments = 0;
@@ -193,7 +185,7 @@ int compare_link_conditions(const Mesh& mesh) {
 }
 
 TEST(SurfaceFastPaths, TriangleLinkConditionAgreesWithTheGenericOne) {
-    const std::uint64_t seed = seed_for("SurfaceFastPaths.TriangleLinkConditionAgreesWithTheGenericOne");
+    const std::uint64_t seed = test::seed_for("SurfaceFastPaths.TriangleLinkConditionAgreesWithTheGenericOne");
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
     int violations = 0;

@@ -51,12 +51,7 @@ namespace {
 using test::expect_same_state;
 using Edge = std::array<VertexId, 2>;
 
-std::uint64_t seed_for(const char* name) {
-    std::uint64_t seed = std::random_device{}();
-    if (const char* fixed = std::getenv("SXK_SEED")) seed = std::strtoull(fixed, nullptr, 10);
-    std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
-    return seed;
-}
+using test::seed_for;
 
 Edge sorted(VertexId u, VertexId v) { return u < v ? Edge{u, v} : Edge{v, u}; }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -82,6 +83,24 @@ inline int interior_face_count(const Mesh& mesh) {
     for (FaceId f = 0; f < mesh.face_capacity(); ++f)
         if (mesh.is_face(f) && mesh.mate(f) != invalid_id) ++n;
     return n;
+}
+
+// A Kuhn cube of n^3 cells in one material, both position sets jittered independently (the
+// reference by up to 0.08, the deformed by up to 0.15 per coordinate): exact grid degeneracies
+// no longer refuse every flip, the two sets disagree on convexity, and every tetrahedron stays
+// positive (the jitter is well below the unit edge), so the reference positions embed the mesh.
+inline Mesh jittered_kuhn_cube(int n, std::mt19937_64& random) {
+    Mesh mesh = kuhn_cube(n);
+    for (ElementId t : elements(mesh)) mesh.set_label(t, 0);
+    std::uniform_real_distribution<double> small(-0.08, 0.08), large(-0.15, 0.15);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        Point r = mesh.reference(v), d = mesh.reference(v);
+        for (double& x : r) x += small(random);
+        for (double& x : d) x += large(random);
+        mesh.set_reference(v, r);
+        mesh.set_deformed(v, d);
+    }
+    return mesh;
 }
 
 }  // namespace sxk::test

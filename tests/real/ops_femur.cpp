@@ -37,6 +37,7 @@
 #include "sxk/ops/split_face.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
+#include "core/fixtures.hpp"
 
 namespace sxk {
 namespace {
@@ -52,14 +53,6 @@ std::string make_femur() {
     while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get())) output += buffer.data();
     while (!output.empty() && (output.back() == '\n' || output.back() == '\r')) output.pop_back();
     return output;
-}
-
-std::uint64_t seed_for(const char* name) {
-    std::uint64_t seed = std::random_device{}();
-    if (const char* fixed = std::getenv("SXK_SEED")) seed = std::strtoull(fixed, nullptr, 10);
-    std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
-    ::testing::Test::RecordProperty("seed", std::to_string(seed));
-    return seed;
 }
 
 // The elements of the stars of `vertices` (those still in an element), sorted, no repeats.
@@ -106,7 +99,7 @@ TEST(OpsFemur, RandomLocalOperations) {
     ASSERT_EQ(mesh.element_count(), 212936u);
     ASSERT_TRUE(mesh.validate().ok());
 
-    const std::uint64_t seed = seed_for("OpsFemur.RandomLocalOperations");
+    const std::uint64_t seed = test::seed_for("OpsFemur.RandomLocalOperations");
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
     auto uniform = [&](double low, double high) {
