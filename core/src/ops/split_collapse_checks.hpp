@@ -118,9 +118,10 @@ inline Sign normal_alignment_filtered(const Point& a, const Point& b, const Poin
 // chains (the walk is bound by cache misses). visit(t) returns true to stop. Returns false,
 // having visited a prefix of star(v) only, when v's star is not a fan (an invalid mesh): the
 // caller then walks it breadth first.
+// walk_fan_from starts at any triangle `anchor` of star(v) instead of v's anchor (the order is
+// then breadth first from that triangle).
 template <class Visit>
-bool walk_fan(const Mesh& mesh, VertexId v, Visit&& visit) {
-    const ElementId anchor = mesh.vertex_element(v);
+bool walk_fan_from(const Mesh& mesh, VertexId v, ElementId anchor, Visit&& visit) {
     if (anchor == invalid_id) return true;
     if (visit(anchor)) return true;
     const Simplex& first = mesh.simplex(anchor);
@@ -172,6 +173,11 @@ bool walk_fan(const Mesh& mesh, VertexId v, Visit&& visit) {
     return true;
 }
 
+template <class Visit>
+bool walk_fan(const Mesh& mesh, VertexId v, Visit&& visit) {
+    return walk_fan_from(mesh, v, mesh.vertex_element(v), std::forward<Visit>(visit));
+}
+
 // star(v) in the order sxk::star lists it (breadth first from v's anchor, faces in index order),
 // appended to `out`: no allocation for stars of up to N elements.
 template <std::size_t N>
@@ -212,58 +218,17 @@ inline int slot_of(const Mesh& mesh, ElementId t, FaceId f) {
 // True when c-d is an edge of a triangle mesh; t0 is a triangle containing c. On a valid
 // triangle mesh the star of c is a fan (a path or a cycle of triangles, each joined to the next
 // by an edge containing c: faces lie in at most two triangles and stars are face-connected), so
-// it is walked from t0 both ways round at once, until the two walks meet (a cycle) or both meet
-// the boundary (a path): each triangle once, no list of the ones seen (edge_exists' breadth-first
-// walk keeps one), and two independent chains of loads instead of one (the walk is bound by
-// cache misses on the triangles). A walk longer than the mesh or a triangle without the vertex
-// it should have (possible only on an invalid mesh) falls back to edge_exists.
+// it is walked from t0 both ways round at once (walk_fan_from), stopping at the first triangle
+// holding d: each triangle once, no list of the ones seen (edge_exists' breadth-first walk keeps
+// one), and two independent chains of loads instead of one (the walk is bound by cache misses
+// on the triangles). A star that is not a fan (only on an invalid mesh) falls back to
+// edge_exists.
 inline bool fan_has_edge(const Mesh& mesh, ElementId t0, VertexId c, VertexId d) {
-    const Simplex& first = mesh.simplex(t0);
-    if (first.contains(d)) return true;
-    // One walk: at triangle t, leave across the edge opposite x (x in t, x != c).
-    struct Walk {
-        ElementId t;
-        VertexId x;
-        ElementId next = invalid_id;
-    };
-    std::array<Walk, 2> walks{};
-    for (int j = 0, w = 0; j < 3; ++j)
-        if (first.vertex(j) != c) walks[static_cast<std::size_t>(w++)] = {t0, first.vertex(j)};
-    for (std::size_t steps = 0; walks[0].t != invalid_id || walks[1].t != invalid_id; ++steps) {
-        if (steps > mesh.element_count()) return edge_exists(mesh, c, d);
-        for (Walk& w : walks) {
-            if (w.t == invalid_id) continue;
-            const int i = mesh.simplex(w.t).index(w.x);
-            if (i < 0) return edge_exists(mesh, c, d);  // not a fan: an invalid mesh
-            w.next = mesh.neighbor(w.t, i);
-        }
-        // a walk stepping onto the triangle the other one stands on closes the cycle: every
-        // triangle has been seen; both stepping onto the same one: it is the last
-        if ((walks[0].t != invalid_id && walks[0].next == walks[1].t) ||
-            (walks[1].t != invalid_id && walks[1].next == walks[0].t))
-            return false;
-        if (walks[0].t != invalid_id && walks[1].t != invalid_id && walks[0].next == walks[1].next &&
-            walks[0].next != invalid_id)
-            return mesh.simplex(walks[0].next).contains(d);
-        for (Walk& w : walks) {
-            if (w.t == invalid_id) continue;
-            if (w.next == invalid_id) {  // the boundary: this way is done
-                w.t = invalid_id;
-                continue;
-            }
-            const Simplex& tau = mesh.simplex(w.t);
-            if (mesh.simplex(w.next).contains(d)) return true;
-            // next was entered across {c, y}, y the vertex of t other than c and x: leave it
-            // across the edge opposite y
-            for (int j = 0; j < 3; ++j)
-                if (tau.vertex(j) != c && tau.vertex(j) != w.x) {
-                    w.x = tau.vertex(j);
-                    break;
-                }
-            w.t = w.next;
-        }
-    }
-    return false;
+    bool found = false;
+    const bool fan = walk_fan_from(mesh, c, t0, [&](ElementId t) {
+        return found = mesh.simplex(t).contains(d);
+    });
+    return found || (!fan && edge_exists(mesh, c, d));
 }
 
 // elements_with_edge (below) into `out`, without allocation. In a triangle mesh an edge has at
