@@ -84,6 +84,55 @@ std::uint64_t face_key(const Simplex& tau, int i, VertexId v) {
 
 int face_sign(const Simplex& tau, int i) { return (i & 1) ? -tau.sign() : tau.sign(); }
 
+// Where each element met by one star walk sits in the walk's list: a scan while the list is
+// short (a 3D star has ~25 elements), then an open-addressing table that doubles as the list
+// grows, so that the stars of large edits (an AMP replay replaces thousands of elements around
+// vertices with hundreds in their star) cost linear, not quadratic, time.
+class StarPositions {
+public:
+    // The position of t in the list, or the list's size when absent.
+    std::uint32_t find(std::span<const ElementId> list, ElementId t) {
+        m_list = list;
+        if (list.size() <= scanned) {
+            const auto it = std::find(list.begin(), list.end(), t);
+            return static_cast<std::uint32_t>(it - list.begin());
+        }
+        if (2 * list.size() > m_slots.size()) rebuild();
+        catch_up();
+        for (std::size_t slot = hash(t);; slot = (slot + 1) & (m_slots.size() - 1)) {
+            if (m_slots[slot].element == invalid_id) return static_cast<std::uint32_t>(list.size());
+            if (m_slots[slot].element == t) return m_slots[slot].position;
+        }
+    }
+
+private:
+    struct Slot {
+        ElementId element;
+        std::uint32_t position;
+    };
+    static constexpr std::size_t scanned = 32;
+    std::size_t hash(ElementId t) const { return (t * 2654435761u) & (m_slots.size() - 1); }
+    void insert(ElementId t, std::uint32_t position) {
+        std::size_t slot = hash(t);
+        while (m_slots[slot].element != invalid_id) slot = (slot + 1) & (m_slots.size() - 1);
+        m_slots[slot] = {t, position};
+    }
+    void rebuild() {
+        std::size_t size = 128;
+        while (size < 4 * m_list.size()) size *= 2;
+        m_slots.assign(size, Slot{invalid_id, 0});
+        m_indexed = 0;
+    }
+    // enters the elements appended to the list since the last look-up
+    void catch_up() {
+        for (; m_indexed < m_list.size(); ++m_indexed)
+            insert(m_list[m_indexed], static_cast<std::uint32_t>(m_indexed));
+    }
+    std::span<const ElementId> m_list;
+    std::vector<Slot> m_slots;
+    std::size_t m_indexed = 0;
+};
+
 // Walks star(v) of `mesh`, appends its elements to stars.elements and returns the number of
 // pieces it would have after removing `removed` (sorted) and adding `added`.
 std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId> removed,
@@ -108,6 +157,7 @@ std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId>
         }
     };
     const int k = mesh.element_vertex_count();
+    StarPositions positions;
     if (mesh.vertex_element(v) != invalid_id) {
         seen.push_back(mesh.vertex_element(v));
         parent.push_back(0);
@@ -122,9 +172,9 @@ std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId>
                 const ElementId n = mesh.neighbor(t, i);
                 std::uint32_t position = 0;
                 if (n != invalid_id) {
-                    const ElementId* found = std::find(seen.begin() + base, seen.end(), n);
-                    position = static_cast<std::uint32_t>(found - (seen.begin() + base));
-                    if (found == seen.end()) {
+                    const std::span<const ElementId> list(seen.begin() + base, seen.end());
+                    position = positions.find(list, n);
+                    if (position == list.size()) {
                         seen.push_back(n);
                         parent.push_back(position);
                     }
