@@ -79,11 +79,7 @@ TEST(FlipEmbedding, TopologyOnlyFlipsStillSearch) {
     Mesh mesh = test::two_tets();
     ASSERT_TRUE(flip_23(mesh, test::shared_face(mesh)).ok());
     const Mesh before = mesh;
-    FaceId inner = invalid_id;
-    for (FaceId f = 0; f < mesh.face_capacity(); ++f)
-        if (mesh.is_face(f) && mesh.mate(f) != invalid_id &&
-            mesh.face_simplex(f).same_vertices(Simplex(+1, {0, 1, 4})))
-            inner = f;
+    const FaceId inner = test::interior_face_with(mesh, Simplex(+1, {0, 1, 4}));
     ASSERT_NE(inner, invalid_id);
     TetFlipOptions options;
     options.topology_only = true;

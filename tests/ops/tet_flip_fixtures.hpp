@@ -43,6 +43,15 @@ inline FaceId shared_face(const Mesh& mesh) {
     return mesh.opposite_face(0, 0);
 }
 
+// An interior face whose simplex has the vertices of `vertices` (either side), or invalid_id.
+inline FaceId interior_face_with(const Mesh& mesh, const Simplex& vertices) {
+    FaceId found = invalid_id;
+    for (FaceId f = 0; f < mesh.face_capacity(); ++f)
+        if (mesh.is_face(f) && mesh.mate(f) != invalid_id && mesh.face_simplex(f).same_vertices(vertices))
+            found = f;
+    return found;
+}
+
 // An entry face and j such that face_simplex(entry).subn(j) is the edge u-w, or invalid_id.
 inline std::pair<FaceId, int> edge_entry(const Mesh& mesh, VertexId u, VertexId w) {
     for (ElementId t : elements(mesh)) {
