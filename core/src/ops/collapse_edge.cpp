@@ -28,20 +28,54 @@ bool on_boundary(const Mesh& mesh, std::span<const ElementId> around, VertexId v
     return false;
 }
 
-// True when point p lies on the affine hull of the boundary face (line in 2D, plane in 3D).
-bool on_hull_of(const Simplex& face, const Mesh& mesh, const Point& p, Positions positions) {
+// True when point p lies on the affine hull of the boundary face (line in 2D, plane in 3D):
+// exactly when tolerance is 0, else within tolerance times the face's longest edge.
+bool on_hull_of(const Simplex& face, const Mesh& mesh, const Point& p, Positions positions,
+                double tolerance) {
     auto point = [&](int j) -> const Point& {
         return positions == Positions::reference ? mesh.reference(face.vertex(j)) : mesh.deformed(face.vertex(j));
     };
-    if (face.count() == 2) return collinear(point(0), point(1), p);
-    return orient3d(point(0), point(1), point(2), p) == Sign::zero;
+    if (tolerance == 0) {
+        if (face.count() == 2) return collinear(point(0), point(1), p);
+        return orient3d(point(0), point(1), point(2), p) == Sign::zero;
+    }
+    auto difference = [](const Point& x, const Point& y) {
+        return Point{x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+    };
+    auto dot = [](const Point& x, const Point& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+    double longest2 = 0;
+    for (int i = 0; i < face.count(); ++i)
+        for (int j = i + 1; j < face.count(); ++j) {
+            const Point e = difference(point(i), point(j));
+            longest2 = std::max(longest2, dot(e, e));
+        }
+    const Point w = difference(p, point(0));
+    const Point u = difference(point(1), point(0));
+    double distance2 = 0;
+    if (face.count() == 2) {  // distance to the line
+        const double uu = dot(u, u);
+        const double along = uu > 0 ? dot(w, u) / uu : 0;
+        const Point r{w[0] - along * u[0], w[1] - along * u[1], w[2] - along * u[2]};
+        distance2 = dot(r, r);
+    } else {  // distance to the plane
+        const Point v = difference(point(2), point(0));
+        const Point n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const double nn = dot(n, n);
+        if (nn == 0) return false;  // a flat boundary face has no plane to keep
+        const double height = dot(w, n);
+        distance2 = height * height / nn;
+    }
+    return distance2 <= tolerance * tolerance * longest2;
 }
 
 std::string in_the(Positions positions) {
     return std::string(" in the ") + detail::positions_text(positions) + " positions";
 }
 
-Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail::MovedVertex& moved) {
+Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail::MovedVertex& moved,
+                           const CollapseOptions& options) {
+    if (!(options.boundary_tolerance >= 0 && options.boundary_tolerance < 1))
+        return Refusal{"collapse_edge: boundary tolerance must be in [0, 1)"};
     const std::size_t n = mesh.vertex_count();
     if (from >= n || to >= n)
         return Refusal{"collapse_edge: " + std::to_string(from >= n ? from : to) + " is not a vertex"};
@@ -85,7 +119,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                     if (mesh.neighbor(t, i) != invalid_id) continue;
                     const Simplex face = tau.subn(i);  // invariant 7.1
                     if (!face.contains(mover) || (face.contains(from) && face.contains(to))) continue;
-                    if (!on_hull_of(face, mesh, target, positions))
+                    if (!on_hull_of(face, mesh, target, positions, options.boundary_tolerance))
                         return Refusal{"collapse_edge: boundary face " + to_text(face) +
                                        " would leave its " + (face.count() == 2 ? "line" : "plane") +
                                        in_the(positions) + ": the collapse would move the boundary"};
@@ -230,13 +264,13 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
 
 }  // namespace
 
-Outcome<VertexId> collapse_edge(Mesh& mesh, VertexId from, VertexId to) {
-    return collapse(mesh, from, to, {});
+Outcome<VertexId> collapse_edge(Mesh& mesh, VertexId from, VertexId to, const CollapseOptions& options) {
+    return collapse(mesh, from, to, {}, options);
 }
 
 Outcome<VertexId> collapse_edge(Mesh& mesh, VertexId from, VertexId to, const Point& reference,
-                                const Point& deformed) {
-    return collapse(mesh, from, to, detail::MovedVertex{to, reference, deformed});
+                                const Point& deformed, const CollapseOptions& options) {
+    return collapse(mesh, from, to, detail::MovedVertex{to, reference, deformed}, options);
 }
 
 }  // namespace sxk

@@ -442,14 +442,23 @@ inline std::pair<Point, Point> interpolate(const Mesh& mesh, std::span<const Ver
 // exact arithmetic a point strictly inside a simplex (or edge, or face) gives children of the
 // parent's sign; the rounded new position can still make a child of a nearly flat parent flat,
 // and that is refused rather than built. Empty reason when all children are fine.
+// Children of parents containing every vertex of `vanishing_with` (when not empty) are not
+// checked (SplitOptions: the caller removes them in its next edit).
 inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> children,
                                    std::span<const ElementId> parents_of_children,
-                                   const MovedVertex& moved, const char* operation) {
+                                   const MovedVertex& moved, const char* operation,
+                                   std::span<const VertexId> vanishing_with = {}) {
+    auto vanishing = [&](ElementId parent) {
+        return !vanishing_with.empty() &&
+               std::all_of(vanishing_with.begin(), vanishing_with.end(),
+                           [&](VertexId v) { return mesh.simplex(parent).contains(v); });
+    };
     for (const Positions positions : {Positions::reference, Positions::deformed}) {
         // children of one parent are consecutive: its orientation is computed once per run
         ElementId parent_id = invalid_id;
         Sign parent = Sign::zero;
         for (std::size_t i = 0; i < children.size(); ++i) {
+            if (vanishing(parents_of_children[i])) continue;
             if (parents_of_children[i] != parent_id) {
                 parent_id = parents_of_children[i];
                 parent = simplex_orientation(mesh, mesh.simplex(parent_id), positions);
@@ -476,7 +485,8 @@ inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> ch
 // a refused split leaves the mesh exactly as it was in every case.
 inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId> parents,
                                           std::span<const VertexId> replaced,
-                                          std::span<const double> weights, const char* operation) {
+                                          std::span<const double> weights, const char* operation,
+                                          std::span<const VertexId> vanishing_with = {}) {
     const auto [reference, deformed] = interpolate(mesh, replaced, weights);
     const auto m = static_cast<VertexId>(mesh.vertex_count());
     const MovedVertex moved{m, reference, deformed};
@@ -491,7 +501,7 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
             parent_of_child.push_back(parent);
             labels.push_back(mesh.label(parent));
         }
-    if (Refusal r = refuse_bad_children(mesh, children, parent_of_child, moved, operation);
+    if (Refusal r = refuse_bad_children(mesh, children, parent_of_child, moved, operation, vanishing_with);
         !r.reason.empty())
         return r;
     // Face labels (keyed by vertex set) on the faces of the parents that are split: a face in no

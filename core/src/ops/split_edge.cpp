@@ -7,7 +7,7 @@
 
 namespace sxk {
 
-Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t) {
+Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t, const SplitOptions& options) {
     if (a >= mesh.vertex_count() || b >= mesh.vertex_count())
         return Refusal{"split_edge: " + std::to_string(a >= mesh.vertex_count() ? a : b) +
                        " is not a vertex"};
@@ -24,7 +24,7 @@ Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t) {
 
     const std::array<VertexId, 2> ends{a, b};
     const std::array<double, 2> weights{1 - t, t};
-    return detail::split_parents(mesh, parents, ends, weights, "split_edge");
+    return detail::split_parents(mesh, parents, ends, weights, "split_edge", options.vanishing_with);
 }
 
 }  // namespace sxk

@@ -5,7 +5,7 @@
 
 namespace sxk {
 
-Outcome<SplitResult> split_face(Mesh& mesh, FaceId f, std::array<double, 3> weights) {
+Outcome<SplitResult> split_face(Mesh& mesh, FaceId f, std::array<double, 3> weights, const SplitOptions& options) {
     if (mesh.topological_dimension() != 3)
         return Refusal{"split_face: needs a tetrahedral mesh (split a triangle mesh's edges with split_edge)"};
     if (!mesh.is_face(f)) return Refusal{"split_face: " + std::to_string(f) + " is not a face"};
@@ -18,7 +18,7 @@ Outcome<SplitResult> split_face(Mesh& mesh, FaceId f, std::array<double, 3> weig
     std::vector<ElementId> parents{mesh.face_element(f)};
     if (mesh.mate(f) != invalid_id) parents.push_back(mesh.face_element(mesh.mate(f)));
 
-    return detail::split_parents(mesh, parents, sigma.vertices(), weights, "split_face");
+    return detail::split_parents(mesh, parents, sigma.vertices(), weights, "split_face", options.vanishing_with);
 }
 
 }  // namespace sxk

@@ -55,9 +55,19 @@
 
 namespace sxk {
 
-SXK_API Outcome<VertexId> collapse_edge(Mesh& mesh, VertexId from, VertexId to);
+struct CollapseOptions {
+    // 0: a boundary face whose vertex moves must keep its plane (line) exactly, so the boundary
+    // keeps its shape bit for bit. > 0: it may leave it by this times its longest edge (a
+    // relative distance): degeneracy removal collapses edges of flat elements at a snapped,
+    // slightly bent boundary, and undoes a split whose rounded midpoint is off the plane.
+    double boundary_tolerance = 0;
+};
+
+SXK_API Outcome<VertexId> collapse_edge(Mesh& mesh, VertexId from, VertexId to,
+                                        const CollapseOptions& options = {});
 // Collapses and moves the surviving vertex `to` to (reference, deformed).
 SXK_API Outcome<VertexId> collapse_edge(Mesh& mesh, VertexId from, VertexId to,
-                                        const Point& reference, const Point& deformed);
+                                        const Point& reference, const Point& deformed,
+                                        const CollapseOptions& options = {});
 
 }  // namespace sxk

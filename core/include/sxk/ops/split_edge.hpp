@@ -31,7 +31,8 @@
 // Refusals (mesh untouched, no vertex added), reasons begin with "split_edge: ":
 //   a or b is not a vertex; a == b; ab is not an edge; t not in the open interval (0,1); a child
 //   that would be flat or of the other orientation than its parent in either position set
-//   (possible only by rounding of m for nearly flat parents).
+//   (possible only by rounding of m for nearly flat parents), except the children of parents
+//   containing all of options.vanishing_with (split_result.hpp), which the caller removes next.
 #pragma once
 
 #include "sxk/config.hpp"
@@ -41,6 +42,7 @@
 
 namespace sxk {
 
-SXK_API Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t = 0.5);
+SXK_API Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t = 0.5,
+                                        const SplitOptions& options = {});
 
 }  // namespace sxk

@@ -29,7 +29,8 @@
 //   removes m again (Mesh::remove_last_vertex), so no refusal leaves a vertex behind.
 // Refusals (mesh untouched, no vertex added), reasons begin with "split_face: ":
 //   not a tetrahedral mesh; f not a face; a weight not > 0; a child flat or of the other
-//   orientation than its parent in either position set (rounding of m only).
+//   orientation than its parent in either position set (rounding of m only), except the
+//   children of parents containing all of options.vanishing_with (split_result.hpp).
 #pragma once
 
 #include <array>
@@ -42,6 +43,7 @@
 namespace sxk {
 
 SXK_API Outcome<SplitResult> split_face(Mesh& mesh, FaceId f,
-                                        std::array<double, 3> weights = {1.0, 1.0, 1.0});
+                                        std::array<double, 3> weights = {1.0, 1.0, 1.0},
+                                        const SplitOptions& options = {});
 
 }  // namespace sxk

@@ -1,0 +1,58 @@
+// Cutting elements free (thesis §3.2.3: "the remaining degeneracies are considered
+// incollapsible, and they are removed by cutting them free, and removing them"): dissect along
+// every face of the elements (thesis §7.3; vertices whose stars fall apart get copies), then
+// remove the elements, now joined to nothing. The faces their neighbours had with them become
+// boundary: the cracks of Fig. 3.16.
+#include <algorithm>
+#include <vector>
+
+#include "removal_steps.hpp"
+#include "sxk/ops/dissect.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::degeneracy::detail {
+namespace {
+
+// True when some element has a face with these vertices (found in the star of the first).
+bool face_exists(const Mesh& mesh, const Simplex& face) {
+    const VertexId v = face.vertex(0);
+    if (mesh.vertex_element(v) == invalid_id) return false;
+    for (const ElementId t : star(mesh, v))
+        if (std::all_of(face.vertices().begin(), face.vertices().end(),
+                        [&](VertexId w) { return mesh.simplex(t).contains(w); }))
+            return true;
+    return false;
+}
+
+}  // namespace
+
+Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
+    std::vector<Simplex> faces;
+    for (const ElementId t : elements)
+        for (int i = 0; i < mesh.element_vertex_count(); ++i)
+            if (mesh.mate(mesh.face(t, i)) != invalid_id) faces.push_back(mesh.simplex(t).subn(i));
+    if (!faces.empty()) {
+        const auto dissected = dissect(mesh, faces);
+        if (!dissected) return Refusal{"cut free: " + dissected.reason()};
+    }
+    // Each element is now alone in the star of each of its vertices (all its faces are cut),
+    // so removing it pinches no star. One edit removes them all.
+    std::vector<ElementId> doomed(elements.begin(), elements.end());
+    std::sort(doomed.begin(), doomed.end());
+    doomed.erase(std::unique(doomed.begin(), doomed.end()), doomed.end());
+    std::vector<Simplex> faces_of_doomed;
+    if (!mesh.face_labels().empty())
+        for (const ElementId t : doomed)
+            for (int i = 0; i < mesh.element_vertex_count(); ++i)
+                faces_of_doomed.emplace_back(+1, mesh.simplex(t).subn(i).vertices());
+    const auto removed = mesh.replace_elements(doomed, {});
+    if (!removed) return Refusal{"cut free: " + removed.reason()};
+    // Labels of faces that went with the elements (each was theirs alone after the dissection)
+    // would name no face: drop them. A face with the same vertices that still exists is a
+    // neighbour's boundary face now, and keeps the label.
+    for (const Simplex& face : faces_of_doomed)
+        if (!face_exists(mesh, face)) mesh.face_labels().erase(face);
+    return Done{};
+}
+
+}  // namespace sxk::degeneracy::detail

@@ -1,0 +1,78 @@
+// Peeling a flat element off the boundary (beyond the thesis): a degenerate element with a face
+// on the boundary whose other vertices lie within the boundary tolerance of that face's plane is
+// removed, and its other faces become the boundary. No crack opens and no vertex moves: the
+// boundary moves by the element's height over its boundary face, which the tolerance bounds, as
+// it bounds every boundary move of a collapse.
+//
+//      interior                    interior
+//    a -------- b                a -------- b      the flat element a b c (a triangle here:
+//     \   t   /          -->      \       /        c lies on the boundary line a-b within the
+//  ----c-----              ----------c-----        tolerance) goes; a-c and c-b are the boundary
+//      boundary (a-b was on it)
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "removal_steps.hpp"
+
+namespace sxk::degeneracy::detail {
+namespace {
+
+// Distance from p to the plane (line) through the face's vertices, relative to the face's
+// longest edge; infinity for a face too flat to have a plane.
+double relative_distance(const Mesh& mesh, const Simplex& face, const Point& p, Positions positions) {
+    std::array<Point, 3> x{};
+    for (int i = 0; i < face.count(); ++i) x[static_cast<std::size_t>(i)] = position(mesh, face.vertex(i), positions);
+    double longest = 0;
+    for (int i = 0; i < face.count(); ++i)
+        for (int j = i + 1; j < face.count(); ++j)
+            longest = std::max(longest, distance(x[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(j)]));
+    if (!(longest > 0)) return std::numeric_limits<double>::infinity();
+    if (face.count() == 2) return foot_on_line(x[0], x[1], p).distance / longest;
+    const Point n = cross(minus(x[1], x[0]), minus(x[2], x[0]));
+    const double nn = dot(n, n);
+    if (!(nn > 0)) return std::numeric_limits<double>::infinity();
+    return std::abs(dot(minus(p, x[0]), n)) / std::sqrt(nn) / longest;
+}
+
+}  // namespace
+
+std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
+    const Simplex tau = mesh.simplex(t);
+    std::vector<Simplex> boundary, exposed;
+    for (int i = 0; i < tau.count(); ++i)
+        (mesh.neighbor(t, i) == invalid_id ? boundary : exposed).push_back(tau.subn(i));
+    if (boundary.empty()) return "it has no face on the boundary";
+    if (exposed.empty()) return "it is a whole component (no interior face)";
+    for (const Simplex& face : boundary)
+        for (const VertexId v : tau.vertices()) {
+            if (face.contains(v)) continue;
+            for (const Positions positions : {Positions::reference, Positions::deformed}) {
+                const double d = relative_distance(mesh, face, position(mesh, v, positions), positions);
+                if (!(d <= options.boundary_tolerance))
+                    return "peeling it off would move the boundary face " + to_text(face) + " by " +
+                           std::to_string(d) + " of its longest edge";
+            }
+        }
+    int label = 0;
+    bool labelled = false;
+    for (const Simplex& face : boundary) {
+        const auto found = mesh.face_labels().find(Simplex(+1, face.vertices()));
+        if (found != mesh.face_labels().end()) {
+            label = found->second;
+            labelled = true;
+            break;
+        }
+    }
+    const std::array<ElementId, 1> doomed{t};
+    const auto removed = mesh.replace_elements(doomed, {});
+    if (!removed) return removed.reason();
+    // its boundary faces are gone; the faces it exposed carry the boundary's label on
+    for (const Simplex& face : boundary) mesh.face_labels().erase(Simplex(+1, face.vertices()));
+    if (labelled)
+        for (const Simplex& face : exposed) mesh.face_labels().try_emplace(Simplex(+1, face.vertices()), label);
+    return {};
+}
+
+}  // namespace sxk::degeneracy::detail

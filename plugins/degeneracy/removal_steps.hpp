@@ -1,0 +1,161 @@
+// The steps of remove_degeneracies, one file each: collapsing a flat tetrahedron or triangle
+// (split + collapse, thesis Fig. 3.9), flipping an element out, cutting elements free.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "move_journal.hpp"
+#include "remove_degeneracies.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/predicates.hpp"
+
+namespace sxk::degeneracy::detail {
+
+// What the steps did, summed into the pass report.
+struct Tally {
+    std::size_t collapses = 0;
+    std::size_t splits = 0;  // kept splits
+    std::size_t flips = 0;
+};
+
+// How hard a removal tries (try_moves' rounds).
+enum class Effort {
+    clean,      // only moves that make no degenerate element
+    paying,     // also moves that leave fewer degenerates, or none worse than the element
+    follow_up,  // also moves whose new degenerates each go by a clean move right after
+};
+
+// Removes the flat tetrahedron t by a collapse, after one or two splits where its shape asks
+// for them (collapse_flat_tetrahedron.cpp). Returns an empty string when t is gone, else why
+// the last attempt was refused (the mesh is then as before, up to element ids).
+// With Effort::follow_up, `inner` is the journal of the follow-up moves.
+std::string collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
+                                      MoveJournal& journal, Effort effort = Effort::paying,
+                                      MoveJournal* inner = nullptr);
+// The same for a flat triangle (collapse_flat_triangle.cpp): a collapse, an edge flip, or a
+// split and a collapse.
+std::string collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
+                                   MoveJournal& journal, Effort effort = Effort::paying,
+                                   MoveJournal* inner = nullptr);
+// Removes tetrahedron t by the 2-3, 3-2 or 4-4 flip whose new elements are best shaped, if
+// none of them is degenerate (flip_out.cpp). Empty string on success.
+std::string flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally);
+// Removes t when it has a face on the boundary and lies within options.boundary_tolerance of
+// the plane of each such face (peel_off_boundary.cpp): its other faces become the boundary, no
+// crack. Empty string on success.
+std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options);
+// Cuts the elements free (dissect along all their faces, thesis §7.3) and removes them
+// (cut_free.cpp): the cracks. Refuses, mesh untouched, when dissect or the removal does.
+Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements);
+
+// Collapses a into b (reverse: b into a) with the boundary tolerance of the options; empty
+// string on success (split_and_collapse.cpp).
+std::string collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const Options& options);
+
+// ---- geometry in the measured positions -----------------------------------------------------
+
+inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
+    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+}
+inline Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Point cross(const Point& a, const Point& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double distance(const Point& a, const Point& b) { return std::sqrt(dot(minus(a, b), minus(a, b))); }
+
+// Thesis aspect ratio of the simplex with these vertices (3 or 4), in the measured positions.
+double aspect_ratio_of(const Mesh& mesh, std::span<const VertexId> vertices, Positions positions);
+// Aspect ratio and class of element t (DegenerateClass; triangles: needle or cap).
+double element_aspect_ratio(const Mesh& mesh, ElementId t, Positions positions);
+DegenerateClass classify_element(const Mesh& mesh, ElementId t, const Options& options);
+
+// Parameter s of the foot of p on the line a-b (0 at a, 1 at b) and the distance to it.
+struct Foot {
+    double s = 0;
+    double distance = 0;
+};
+Foot foot_on_line(const Point& a, const Point& b, const Point& p);
+
+// Splits at parameters in (0,1) closer than this to an end are not tried: the vertex is then
+// next to that end, and collapsing that edge is the same move without the split.
+inline constexpr double end_margin = 1e-3;
+// Moves longer than this times the element's longest edge are not tried: they would reshape
+// the neighbours, not remove a flat element (its height is below aspect_ratio times that edge).
+inline constexpr double longest_move = 0.25;
+
+// The smallest aspect ratio of the elements (1 for none), and how many are degenerate.
+struct Shapes {
+    double worst = 1;
+    std::size_t degenerate = 0;
+};
+Shapes shapes_of(const Mesh& mesh, std::span<const ElementId> elements, const Options& options);
+Shapes shapes_of(const Mesh& mesh, std::span<const Simplex> simplexes, const Options& options);
+
+// The element with these vertices (sorted, sign +1), or invalid_id: found in the star of the
+// first vertex. An undone move gives the elements it puts back new ids; vertices stay.
+ElementId element_with(const Mesh& mesh, const Simplex& vertices);
+// The vertices of the elements around `vertices` (their stars), sorted: the region a removal
+// and the removals of what it made can touch.
+std::vector<VertexId> ring_of(const Mesh& mesh, std::span<const VertexId> vertices);
+
+// Tries the moves in order, each undone by the journal when refused part way or when it does
+// not pay. Beyond the thesis, which keeps every collapse that succeeds: a removal that makes
+// another degenerate only moves the problem, and repeated passes then churn. Round 1 keeps a
+// move only if it makes no degenerate element; when every move does, round 2 keeps the first
+// move that leaves fewer degenerates than it removed, or none worse than the element itself
+// (`before`); round 3 (Effort::follow_up, for what the passes could not remove) keeps a move
+// whose new degenerates `follow_up` (their vertex sets) removes by clean moves at once, the
+// journal then undoing move and follow-ups together if that fails. `execute(move)` returns a
+// refusal or an empty string; `count(move)` books a kept move. Returns an empty string when a
+// move was kept, else the last reason.
+template <class Move, class Execute, class Count, class FollowUp>
+std::string try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const VertexId> vertices,
+                      double before, const Options& options, MoveJournal& journal, Effort effort,
+                      Execute execute, Count count, FollowUp follow_up) {
+    std::vector<char> refused(moves.size(), 0);  // by an operation: later rounds skip them
+    const int rounds = effort == Effort::clean ? 1 : effort == Effort::paying ? 2 : 3;
+    std::vector<VertexId> region;
+    if (rounds == 3) region = ring_of(mesh, vertices);
+    std::string why;
+    for (int round = 0; round < rounds; ++round)
+        for (std::size_t i = 0; i < moves.size(); ++i) {
+            if (refused[i]) continue;
+            journal.begin(round == 2 ? std::span<const VertexId>(region) : vertices);
+            std::string refusal = execute(moves[i]);
+            if (refusal.empty()) {
+                const std::vector<ElementId> created = journal.created();
+                const Shapes made = shapes_of(mesh, created, options);
+                bool pays = made.degenerate == 0;
+                if (round == 1)
+                    pays = made.degenerate < shapes_of(mesh, journal.removed(), options).degenerate ||
+                           made.worst > before;
+                if (round == 2) {
+                    std::vector<Simplex> flat;
+                    for (const ElementId t : created)
+                        if (element_aspect_ratio(mesh, t, options.positions) < options.aspect_ratio)
+                            flat.emplace_back(+1, mesh.simplex(t).vertices());
+                    pays = follow_up(flat) && shapes_of(mesh, journal.created(), options).degenerate == 0;
+                }
+                if (pays) {
+                    count(moves[i]);
+                    return {};
+                }
+                refusal = "every move leaves a degenerate element (this one: aspect ratio " +
+                          std::to_string(made.worst) + ")";
+            } else {
+                refused[i] = 1;
+            }
+            if (journal.changed() && !journal.undo()) return "a refused move could not be undone: " + refusal;
+            why = std::move(refusal);
+        }
+    return why;
+}
+
+}  // namespace sxk::degeneracy::detail

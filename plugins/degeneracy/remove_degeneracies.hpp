@@ -1,0 +1,131 @@
+// Degeneracy removal (thesis §3.2.3, Figs. 3.8-3.10; results §3.3, Fig. 3.16): flat elements,
+// as a snap cut leaves them, are found by their aspect ratio and removed by splits and edge
+// collapses chosen by their shape; what cannot be collapsed is cut free.
+//
+// Classes (tetrahedra, by the number of dihedral angles above options.large_angle, Fig. 3.8)
+// and what removes them (Fig. 3.9):
+//
+//   needle  (0)  a short edge                    collapse the shortest edge
+//   spindle (1)  a vertex v near the edge ab      split ab at v's foot m, collapse m-v
+//                opposite the large angle
+//   sliver  (2)  two crossing edges ab, cd        split both at their closest points m1, m2,
+//                (the quadrilateral a c b d)       collapse m1-m2
+//   cap     (3)  a vertex d near the opposite     split abc at d's foot m, collapse m-d
+//                face abc
+//
+//        spindle                  sliver                      cap
+//
+//           v                        c                          c
+//          /|\ .                  / | \                      / | \      d just above abc:
+//         / | \ .               a --m-- b                   /  d  \ .   its foot m lies
+//        a--m--b                  \ | /                    /   m   \ .  inside the face
+//                                   d                      a ------- b
+//   v just off ab: m, its     ab and cd cross (seen from
+//   foot on ab, is near v     above): m on both, close
+//
+// Triangles: a flat triangle with an angle above large_angle (its vertex v lies near the
+// opposite edge ab) is flipped across ab when both new triangles are fine, else ab is split at
+// v's foot and the short edge collapsed; one without (a short edge) collapses its shortest edge.
+//
+// Passes, as in the thesis: the degenerates form a list, each is handled, a new list is made
+// from what remains and what the edits created; while the list shrinks, another pass. Beyond
+// the thesis: then 2-3, 3-2 and 4-4 flips that remove an element without a crack and create
+// no new degenerate (each flip is followed by collapse passes again); then elements lying flat
+// on the boundary are peeled off (removed, their other faces becoming the boundary: the
+// boundary moves by less than boundary_tolerance); only what still remains is cut free
+// (dissected along its faces, thesis §7.3) and removed: those are the cracks.
+//
+// Guarantees. Every edit is one of the kernel's operations (split_edge, split_face,
+// collapse_edge, flip_23/32/44, dissect, replace_elements), each a transaction checked by exact
+// orientation in BOTH position sets, so no element is ever flat or inverted by an edit here. A
+// split whose collapse is refused is undone (collapse back and remove the new vertex), so a
+// failed attempt leaves no trace. Boundary vertices only move along the boundary: a collapse
+// that moves a boundary vertex needs the edge on the boundary and each boundary face around it
+// to stay within options.boundary_tolerance of its plane.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sxk/ids.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+#include "sxk/quality.hpp"
+
+namespace sxk::degeneracy {
+
+struct Options {
+    double aspect_ratio = 0.01;      // thesis aspect ratio below this: degenerate (0 < a < 1)
+    double large_angle = 0.99 * pi;  // a dihedral (triangle) angle above this is large (pi/2 < x < pi)
+    bool flips = true;               // try crack-free flips before cutting free
+    bool peel = true;                // remove flat elements lying on the boundary (no crack)
+    bool cut_free = true;            // cut free and remove what no collapse, flip or peel removed
+    // A boundary face whose vertex a collapse moves may leave its plane (line) by at most this
+    // times its longest edge (0: exactly in the plane, which the snapped positions of a cut
+    // rarely allow). The default matches aspect_ratio: a collapse may move the boundary by no
+    // more than the height of the flat element it removes.
+    double boundary_tolerance = 0.01;
+    std::size_t max_passes = 64;     // collapse passes in all (the list must also shrink)
+    // Shapes are measured in these positions. Reference by default: the reference shape makes
+    // the stiffness matrix (thesis §3.2.3: flat elements give unbounded condition numbers), and
+    // a snap cut moves the reference positions (§3.2.2).
+    Positions positions = Positions::reference;
+};
+
+// One pass over the list of degenerates.
+struct PassReport {
+    enum class Kind { collapse, flip, peel, cut_free };
+    Kind kind = Kind::collapse;
+    // degenerates on the list at the start of the pass, by DegenerateClass (index = enum value;
+    // triangles use needle and cap)
+    std::array<std::size_t, 5> found{};
+    std::size_t collapses = 0;
+    std::size_t splits = 0;       // kept splits (undone ones are not counted)
+    std::size_t flips = 0;
+    std::size_t peeled = 0;       // flat elements removed from the boundary (no crack)
+    std::size_t cut_free = 0;     // elements cut free and removed (cracks)
+    std::size_t elements_before = 0, elements_after = 0;
+    std::size_t vertices_before = 0, vertices_after = 0;  // vertices in some element
+    // over the whole mesh after the pass, in options.positions
+    double min_aspect_ratio_after = 0;
+    double min_angle_after = 0, max_angle_after = 0;  // dihedral angles (triangles: angles), radians
+    std::size_t found_total() const;
+};
+const char* to_string(PassReport::Kind kind);
+
+struct Report {
+    std::vector<PassReport> passes;
+    std::size_t found = 0;         // degenerates on the first list
+    std::size_t remaining = 0;     // degenerates left at the end (0 unless cut_free is off)
+    std::size_t cut_free = 0;      // cracks: elements cut free and removed
+    std::size_t collapses = 0, splits = 0, flips = 0, peeled = 0;
+    std::size_t elements_before = 0, elements_after = 0;
+    std::size_t vertices_before = 0, vertices_after = 0;
+    // The elements still degenerate at the end (when remaining > 0), and why their last
+    // attempt was refused (one reason per element, same order).
+    std::vector<ElementId> remaining_elements;
+    std::vector<std::string> remaining_reasons;
+};
+
+// Finds every degenerate element of the mesh and removes them. Refuses (mesh untouched) when
+// an option is out of range: "remove_degeneracies: aspect ratio threshold must be in (0, 1),
+// not X" and the like. Elements that are flat or inverted already (exact orientation zero or
+// negative) are degenerate too, but splits refuse to cut them (their pieces would not be
+// positive), so only collapses, flips or cutting free remove them.
+Outcome<Report> remove_degeneracies(Mesh& mesh, const Options& options = {});
+
+// The same, looking for degenerates only among `candidates` (ids that are not elements are
+// skipped) and the elements the removal itself creates: after a local edit (a snap cut moves a
+// few vertices) pass the stars of the moved vertices and the cost stays local. Elements outside
+// `candidates` that are degenerate already are left alone. The quality figures of the report
+// then cover the elements looked at, not the whole mesh.
+Outcome<Report> remove_degeneracies(Mesh& mesh, std::span<const ElementId> candidates,
+                                    const Options& options = {});
+
+// The class of element t (none when it is not degenerate) in options.positions.
+DegenerateClass classify(const Mesh& mesh, ElementId t, const Options& options = {});
+
+}  // namespace sxk::degeneracy

@@ -1,0 +1,56 @@
+// The building blocks of the removal moves (thesis Fig. 3.9): collapse an edge whichever way
+// the checks allow; the worst shape a move left.
+#include <algorithm>
+
+#include "removal_steps.hpp"
+#include "sxk/ops/collapse_edge.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::degeneracy::detail {
+
+std::string collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const Options& options) {
+    const auto collapsed = reverse ? collapse_edge(mesh, b, a, CollapseOptions{options.boundary_tolerance})
+                                   : collapse_edge(mesh, a, b, CollapseOptions{options.boundary_tolerance});
+    return collapsed ? std::string{} : collapsed.reason();
+}
+
+ElementId element_with(const Mesh& mesh, const Simplex& vertices) {
+    const VertexId first = vertices.vertex(0);
+    if (first >= mesh.vertex_count() || mesh.vertex_element(first) == invalid_id) return invalid_id;
+    for (const ElementId t : star(mesh, first))
+        if (Simplex(+1, mesh.simplex(t).vertices()) == vertices) return t;
+    return invalid_id;
+}
+
+std::vector<VertexId> ring_of(const Mesh& mesh, std::span<const VertexId> vertices) {
+    std::vector<VertexId> ring(vertices.begin(), vertices.end());
+    for (const VertexId v : vertices)
+        if (mesh.vertex_element(v) != invalid_id)
+            for (const ElementId t : star(mesh, v))
+                for (const VertexId w : mesh.simplex(t).vertices()) ring.push_back(w);
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    return ring;
+}
+
+Shapes shapes_of(const Mesh& mesh, std::span<const ElementId> elements, const Options& options) {
+    Shapes shapes;
+    for (const ElementId t : elements) {
+        const double aspect = element_aspect_ratio(mesh, t, options.positions);
+        shapes.worst = std::min(shapes.worst, aspect);
+        shapes.degenerate += aspect < options.aspect_ratio;
+    }
+    return shapes;
+}
+
+Shapes shapes_of(const Mesh& mesh, std::span<const Simplex> simplexes, const Options& options) {
+    Shapes shapes;
+    for (const Simplex& simplex : simplexes) {
+        const double aspect = aspect_ratio_of(mesh, simplex.vertices(), options.positions);
+        shapes.worst = std::min(shapes.worst, aspect);
+        shapes.degenerate += aspect < options.aspect_ratio;
+    }
+    return shapes;
+}
+
+}  // namespace sxk::degeneracy::detail
