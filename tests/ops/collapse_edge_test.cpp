@@ -182,6 +182,36 @@ TEST(CollapseEdge, RefusesToMoveTheBoundary) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+// The bottom side 0-1-2 of planar_grid(2) bent by lifting vertex 1 a little: collapsing 1 into
+// 2 along it moves the side. Exactly: refused; within a boundary tolerance: done.
+TEST(CollapseEdge, BoundaryToleranceAllowsASmallMoveOfTheBoundary) {
+    Mesh mesh = test::planar_grid(2);
+    const Point p0 = mesh.reference(0), p2 = mesh.reference(2);
+    const double lift = 1e-3 * (p2[0] - p0[0]);
+    const Point bent{(p0[0] + p2[0]) / 2, p0[1] + lift, 0};
+    mesh.set_reference(1, bent);
+    mesh.set_deformed(1, bent);
+    const Mesh before = mesh;
+    auto exact = collapse_edge(mesh, 1, 2);
+    ASSERT_FALSE(exact.ok());
+    EXPECT_EQ(exact.reason(), "collapse_edge: boundary face " + test::text(Simplex(+1, {0, 1})) +
+                                  " would leave its line in the reference positions: the"
+                                  " collapse would move the boundary");
+    expect_same_state(mesh, before);
+    // 2 lies about 2 * lift from the line 0-1, whose length is half the side: relative 0.004
+    auto too_tight = collapse_edge(mesh, 1, 2, CollapseOptions{0.001});
+    ASSERT_FALSE(too_tight.ok());
+    expect_same_state(mesh, before);
+    auto bad = collapse_edge(mesh, 1, 2, CollapseOptions{-1});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.reason(), "collapse_edge: boundary tolerance must be in [0, 1)");
+    expect_same_state(mesh, before);
+    auto tolerant = collapse_edge(mesh, 1, 2, CollapseOptions{0.01});
+    ASSERT_TRUE(tolerant.ok()) << tolerant.reason();
+    EXPECT_EQ(mesh.element_count(), 7u);  // the one triangle on the edge 1-2 is gone
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(CollapseEdge, RefusesWhatIsNotAnEdge) {
     Mesh mesh = test::planar_grid(2);
     const Mesh before = mesh;

@@ -8,6 +8,7 @@
 #include "ops/split_collapse_fixtures.hpp"
 #include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/split_edge.hpp"
+#include "sxk/predicates.hpp"
 
 namespace sxk {
 namespace {
@@ -198,6 +199,40 @@ TEST(SplitEdge, RefusalAfterAddingTheVertexRemovesItAgain) {
     expect_same_state(mesh, before);
 }
 
+
+// A flat triangle <0,1,2> (vertex 2 on the edge 0-1) over <1,0,3>: its halves would be flat,
+// so the split is refused, unless SplitOptions names vertex 2 as vanishing with them (the
+// caller collapses the new vertex into 2 next, which removes them: degeneracy removal).
+//
+//   0 -- 2 -- 1        0 -- m=2 -- 1      then collapse m into 2:
+//    \       /          \   |    /        <0,1,3> in two halves, the flat triangle gone
+//     \     /            \  |   /
+//        3                   3
+TEST(SplitEdge, ParentsVanishingWithAVertexMayHaveFlatChildren) {
+    Mesh mesh(2, 2);
+    mesh.add_vertex({0, 0, 0});
+    mesh.add_vertex({2, 0, 0});
+    mesh.add_vertex({1, 0, 0});
+    mesh.add_vertex({1, -1, 0});
+    const std::array<Simplex, 2> triangles{Simplex(+1, {0, 1, 2}), Simplex(+1, {1, 0, 3})};
+    ASSERT_TRUE(mesh.assign_elements(triangles).ok());
+    const Mesh before = mesh;
+    const auto checked = split_edge(mesh, 0, 1);
+    ASSERT_FALSE(checked.ok());
+    EXPECT_EQ(checked.reason().rfind("split_edge: new element ", 0), 0u) << checked.reason();
+    EXPECT_NE(checked.reason().find(" would be flat in the reference positions"), std::string::npos);
+    expect_same_state(mesh, before);
+    const std::array<VertexId, 1> vanishing{2};
+    const auto split = split_edge(mesh, 0, 1, 0.5, SplitOptions{vanishing});
+    ASSERT_TRUE(split.ok()) << split.reason();
+    EXPECT_EQ(mesh.element_count(), 4u);
+    const auto collapsed = collapse_edge(mesh, split->vertex, 2);
+    ASSERT_TRUE(collapsed.ok()) << collapsed.reason();
+    EXPECT_EQ(mesh.element_count(), 2u);
+    for (const ElementId t : elements(mesh))
+        EXPECT_EQ(element_orientation(mesh, t, Positions::reference), Sign::positive);
+    EXPECT_TRUE(mesh.validate().ok());
+}
 
 // Face labels (keyed by vertex set) follow the split: the labelled boundary edge 0-1 of the
 // unit square becomes 0-4 and 4-1 with its label; the other labels stay.
