@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "sxk/plugin_host.hpp"
 #if SXK_HAVE_STATS
@@ -21,6 +22,20 @@ namespace fs = std::filesystem;
 
 const fs::path plugin_folder = SXK_PLUGIN_BUILD_DIR;
 const fs::path bad_folder = SXK_BAD_PLUGIN_DIR;
+
+// The plug-ins the build made (stats, degeneracy, ...): the folder holds one .so each.
+std::size_t built_plugins() {
+    std::size_t n = 0;
+    for (const auto& entry : fs::directory_iterator(plugin_folder)) n += entry.path().extension() == ".so";
+    return n;
+}
+
+// The loaded plug-in called `name`, or nullptr.
+const LoadedPlugin* loaded(const PluginHost& host, std::string_view name) {
+    for (const LoadedPlugin& plugin : host.plugins())
+        if (plugin.name == name) return &plugin;
+    return nullptr;
+}
 
 std::string describe(std::span<const PluginDiagnostic> diagnostics) {
     std::string text;
@@ -46,10 +61,11 @@ TEST(PluginHost, DefaultFolderIsTheBuildFolderInTheBuildTree) {
 #if SXK_HAVE_STATS
 TEST(PluginHost, LoadsTheStatsPlugin) {
     PluginHost host;
-    EXPECT_EQ(host.load_folder(plugin_folder), 1u);
+    EXPECT_EQ(host.load_folder(plugin_folder), built_plugins());
     EXPECT_EQ(describe(host.diagnostics()), "");
-    ASSERT_EQ(host.plugins().size(), 1u);
-    const LoadedPlugin& stats = host.plugins()[0];
+    ASSERT_EQ(host.plugins().size(), built_plugins());
+    ASSERT_NE(loaded(host, "stats"), nullptr);
+    const LoadedPlugin& stats = *loaded(host, "stats");
     EXPECT_EQ(stats.name, "stats");
     EXPECT_EQ(stats.version, "0.1.0");
     EXPECT_EQ(stats.summary, "histograms of element quality");
@@ -69,7 +85,7 @@ TEST(PluginHost, RefusesBadPluginsWithExactReasonsAndGoesOn) {
     PluginHost host;
     EXPECT_EQ(host.load_folder(bad_folder), 0u);
 #if SXK_HAVE_STATS
-    EXPECT_EQ(host.load_folder(plugin_folder), 1u);
+    EXPECT_EQ(host.load_folder(plugin_folder), built_plugins());
 #endif
     const auto diagnostics = host.diagnostics();
     ASSERT_EQ(diagnostics.size(), 3u) << describe(diagnostics);
@@ -82,8 +98,8 @@ TEST(PluginHost, RefusesBadPluginsWithExactReasonsAndGoesOn) {
     EXPECT_EQ(diagnostics[2].path, bad_folder / "wrong_abi.so");
     EXPECT_EQ(diagnostics[2].reason, "plug-in ABI version 999, this host needs 1");
 #if SXK_HAVE_STATS
-    ASSERT_EQ(host.plugins().size(), 1u);
-    EXPECT_EQ(host.plugins()[0].name, "stats");
+    ASSERT_EQ(host.plugins().size(), built_plugins());
+    EXPECT_NE(loaded(host, "stats"), nullptr);
 #endif
 }
 
@@ -102,24 +118,24 @@ TEST(PluginHost, RefusesAFileThatIsNotASharedObject) {
 TEST(PluginHost, FirstPluginOfANameWins) {
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_stats(), "linked-in stats"));
-    EXPECT_EQ(host.load_folder(plugin_folder), 0u);
+    EXPECT_EQ(host.load_folder(plugin_folder), built_plugins() - 1);
     ASSERT_EQ(host.diagnostics().size(), 1u);
     EXPECT_EQ(host.diagnostics()[0].path, plugin_folder / "stats.so");
     EXPECT_EQ(host.diagnostics()[0].reason,
               "plug-in 'stats' is already loaded from linked-in stats; this one is ignored");
-    ASSERT_EQ(host.plugins().size(), 1u);
-    EXPECT_EQ(host.plugins()[0].path, "linked-in stats");
+    ASSERT_EQ(host.plugins().size(), built_plugins());
+    EXPECT_EQ(loaded(host, "stats")->path, "linked-in stats");
 }
 #endif
 
 #if SXK_HAVE_STATS
 TEST(PluginHost, TheSameFileLoadsOnce) {
     PluginHost host;
-    EXPECT_EQ(host.load_folder(plugin_folder), 1u);
+    EXPECT_EQ(host.load_folder(plugin_folder), built_plugins());
     EXPECT_EQ(host.load_folder(plugin_folder / "."), 0u);
     EXPECT_FALSE(host.load_file(plugin_folder / "stats.so"));
     EXPECT_TRUE(host.diagnostics().empty());
-    EXPECT_EQ(host.plugins().size(), 1u);
+    EXPECT_EQ(host.plugins().size(), built_plugins());
 }
 #endif
 
@@ -136,7 +152,7 @@ TEST(PluginHost, EnvironmentPathIsSearched) {
     PluginHost host;
     host.load_default_folders();
     ::unsetenv("SXK_PLUGIN_PATH");
-    EXPECT_EQ(host.plugins().size(), 1u);  // stats, from the build folder
+    EXPECT_EQ(host.plugins().size(), built_plugins());  // stats and the others, from the build folder
     ASSERT_EQ(host.diagnostics().size(), 4u) << describe(host.diagnostics());
     EXPECT_EQ(host.diagnostics()[3].path, bad_folder / "missing");
 }
@@ -157,9 +173,9 @@ TEST(PluginHost, RefusesStaticInfoWithAnotherAbi) {
 #if SXK_HAVE_STATS
 TEST(PluginHost, MovesKeepPluginsLoaded) {
     PluginHost host;
-    ASSERT_EQ(host.load_folder(plugin_folder), 1u);
+    ASSERT_EQ(host.load_folder(plugin_folder), built_plugins());
     PluginHost moved(std::move(host));
-    ASSERT_EQ(moved.plugins().size(), 1u);
+    ASSERT_EQ(moved.plugins().size(), built_plugins());
     const std::vector<std::string> args{"stats", "--help"};
     const FoundCommand found = moved.find_command(args);
     ASSERT_NE(found.command, nullptr);
