@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "removal_steps.hpp"
@@ -104,7 +105,9 @@ public:
         if (!list.empty() && collapse_passes < m_options.max_passes) {
             m_effort = detail::Effort::follow_up;
             previous = std::numeric_limits<std::size_t>::max();
-            while (!list.empty() && list.size() < previous && collapse_passes < m_options.max_passes) {
+            m_follow_up_tried.clear();
+            while (!list.empty() && (list.size() < previous || has_untried_follow_up(list)) &&
+                   collapse_passes < m_options.max_passes) {
                 previous = list.size();
                 ++collapse_passes;
                 list = pass(PassReport::Kind::collapse, list, report);
@@ -133,6 +136,13 @@ private:
             const auto found = m_reasons.find(key(t));
             return found == m_reasons.end() || found->second[0].empty();
         });
+    }
+
+    // The follow-up stage's own "untried": elements it has not had yet (it marks what it tries).
+    bool has_untried_follow_up(const std::vector<ElementId>& list) {
+        bool untried = false;
+        for (const ElementId t : list) untried |= m_follow_up_tried.insert(key(t)).second;
+        return untried;
     }
 
     std::string reason(ElementId t) const {
@@ -272,6 +282,7 @@ private:
     detail::MoveJournal m_journal{m_mesh, m_touched.ids};
     detail::MoveJournal m_inner_journal{m_mesh, m_touched.ids};  // follow-up moves
     detail::Effort m_effort = detail::Effort::paying;
+    std::unordered_set<Simplex, SimplexHash> m_follow_up_tried;
     std::vector<ElementId> m_seen;  // candidates and every element created since (local runs)
     // why the collapse, flip and cut free attempts failed
     std::unordered_map<Simplex, std::array<std::string, 4>, SimplexHash> m_reasons;  // by Kind
