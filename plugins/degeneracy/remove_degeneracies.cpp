@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -78,8 +79,19 @@ public:
         Report report;
         report.elements_before = m_mesh.element_count();
         report.vertices_before = vertices_in_elements(m_mesh);
-        m_seen = candidates;
-        std::vector<ElementId> list = degenerates_among(candidates);
+        std::vector<ElementId> list;
+        if (m_whole_mesh) {
+            list = degenerates_among(candidates);
+        } else {
+            // the candidates' shapes, flattest first: what measure() walks (local runs)
+            sort_unique(candidates);
+            for (const ElementId t : candidates) {
+                const double aspect = detail::element_aspect_ratio(m_mesh, t, m_options.positions);
+                m_candidates.emplace_back(aspect, t);
+                if (aspect < m_options.aspect_ratio) list.push_back(t);
+            }
+            std::sort(m_candidates.begin(), m_candidates.end());
+        }
         report.found = list.size();
 
         std::size_t collapse_passes = 0;
@@ -222,7 +234,6 @@ private:
             for (const Simplex& vertices : keys)
                 if (const ElementId t = detail::element_with(m_mesh, vertices); t != invalid_id) next.push_back(t);
             next.insert(next.end(), m_touched.ids.begin(), m_touched.ids.end());
-            m_seen.insert(m_seen.end(), m_touched.ids.begin(), m_touched.ids.end());
             next = degenerates_among(next);
         }
         p.collapses = tally.collapses;
@@ -240,18 +251,26 @@ private:
         return next;
     }
 
-    // Quality after the pass: the whole mesh, or (local runs) every element looked at.
+    // Quality after the pass: of the whole mesh, or (local runs) of the candidates and every
+    // element the removal made. A local run's cost must stay with the degenerates, not the
+    // candidates, so it never measures all candidates again: their aspect ratios were sorted
+    // once (run()), the elements edits made are measured when made, and the figures come from
+    // the made ones and the flattest candidates still there and untouched. Dihedral angles are
+    // computed only where they can matter: a tetrahedron of aspect ratio r has all dihedral
+    // angles in [asin r, pi - asin r] (the height h of a vertex over the plane of a face through
+    // edge e is at most its distance to e times sin(angle at e), and h >= r L; triangles: the
+    // same for their angles), so once the flattest elements have set the range, elements
+    // whose bound lies inside it cannot widen it.
     void measure(PassReport& p) {
         double min_aspect = std::numeric_limits<double>::infinity();
         double min_angle = std::numeric_limits<double>::infinity(), max_angle = 0;
-        auto visit = [&](ElementId t) {
+        auto widen = [&](ElementId t) {
             const Simplex& tau = m_mesh.simplex(t);
             std::array<Point, 4> x{};
             for (int i = 0; i < tau.count(); ++i)
                 x[static_cast<std::size_t>(i)] = detail::position(m_mesh, tau.vertex(i), m_options.positions);
             const std::span<const Point> points(x.data(), static_cast<std::size_t>(tau.count()));
-            min_aspect = std::min(min_aspect, aspect_ratio(points));
-            auto angles = [&](const auto& values) {
+            auto take = [&](const auto& values) {
                 for (const double a : values) {
                     if (std::isnan(a)) continue;
                     min_angle = std::min(min_angle, a);
@@ -259,16 +278,41 @@ private:
                 }
             };
             if (tau.count() == 4)
-                angles(dihedral_angles(points));
+                take(dihedral_angles(points));
             else
-                angles(triangle_angles(points));
+                take(triangle_angles(points));
         };
+        auto matters = [&](double aspect) {
+            const double bound = std::asin(std::min(1.0, aspect));
+            return bound < min_angle || pi - bound > max_angle;
+        };
+        // Elements in ascending aspect ratio: the first gives the minimum, and the walk ends
+        // where no later one can widen the angle range.
+        auto walk = [&](const std::vector<std::pair<double, ElementId>>& sorted, auto&& usable) {
+            for (const auto& [aspect, t] : sorted) {
+                if (!usable(t)) continue;
+                min_aspect = std::min(min_aspect, aspect);
+                if (!matters(aspect)) break;
+                widen(t);
+            }
+        };
+        std::vector<std::pair<double, ElementId>> shapes;
         if (m_whole_mesh) {
-            for (const ElementId t : elements(m_mesh)) visit(t);
+            shapes.reserve(m_mesh.element_count());
+            for (const ElementId t : elements(m_mesh))
+                shapes.emplace_back(detail::element_aspect_ratio(m_mesh, t, m_options.positions), t);
+            std::sort(shapes.begin(), shapes.end());
+            walk(shapes, [](ElementId) { return true; });
         } else {
-            sort_unique(m_seen);
-            for (const ElementId t : m_seen)
-                if (m_mesh.is_element(t)) visit(t);
+            for (const ElementId t : m_touched.ids) m_made.insert(t);
+            m_touched_ever.insert(m_touched.ids.begin(), m_touched.ids.end());
+            std::erase_if(m_made, [&](ElementId t) { return !m_mesh.is_element(t); });
+            for (const ElementId t : m_made)
+                shapes.emplace_back(detail::element_aspect_ratio(m_mesh, t, m_options.positions), t);
+            std::sort(shapes.begin(), shapes.end());
+            walk(shapes, [](ElementId) { return true; });
+            // a candidate id an edit touched is a made element now (or gone)
+            walk(m_candidates, [&](ElementId t) { return m_mesh.is_element(t) && !m_touched_ever.count(t); });
         }
         p.min_aspect_ratio_after = std::isinf(min_aspect) ? 0 : min_aspect;
         p.min_angle_after = std::isinf(min_angle) ? 0 : min_angle;
@@ -283,7 +327,11 @@ private:
     detail::MoveJournal m_inner_journal{m_mesh, m_touched.ids};  // follow-up moves
     detail::Effort m_effort = detail::Effort::paying;
     std::unordered_set<Simplex, SimplexHash> m_follow_up_tried;
-    std::vector<ElementId> m_seen;  // candidates and every element created since (local runs)
+    // local runs: the candidates by aspect ratio (ascending), the elements edits made that are
+    // still there, and every id an edit touched
+    std::vector<std::pair<double, ElementId>> m_candidates;
+    std::unordered_set<ElementId> m_made;
+    std::unordered_set<ElementId> m_touched_ever;
     // why the collapse, flip and cut free attempts failed
     std::unordered_map<Simplex, std::array<std::string, 4>, SimplexHash> m_reasons;  // by Kind
 };

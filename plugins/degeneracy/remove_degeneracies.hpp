@@ -29,11 +29,23 @@
 //
 // Passes, as in the thesis: the degenerates form a list, each is handled, a new list is made
 // from what remains and what the edits created; while the list shrinks, another pass. Beyond
-// the thesis: then 2-3, 3-2 and 4-4 flips that remove an element without a crack and create
-// no new degenerate (each flip is followed by collapse passes again); then elements lying flat
-// on the boundary are peeled off (removed, their other faces becoming the boundary: the
-// boundary moves by less than boundary_tolerance); only what still remains is cut free
-// (dissected along its faces, thesis §7.3) and removed: those are the cracks.
+// the thesis:
+//   - a move is kept only if it pays (detail::try_moves): first only moves that make no new
+//     degenerate, then moves that leave fewer degenerates or better shapes; a move that does
+//     not pay is undone (MoveJournal), so passes do not churn (the thesis keeps every collapse
+//     and its cube and femur runs then went on for dozens of passes);
+//   - a pass also runs while the list holds elements no pass has tried (a pass may remove
+//     some and make as many new ones);
+//   - slivers try a clean flip before the vertex the thesis puts where their edges cross,
+//     which splits every element around both edges (+5 elements per sliver);
+//   - then 2-3, 3-2 and 4-4 flips that remove an element without a crack (clean ones, else
+//     ones that raise the worst shape), each followed by collapse passes again;
+//   - then a follow-up stage: a move may make new degenerates if clean moves right after it
+//     remove them all (move and follow-ups undone together otherwise);
+//   - then elements lying flat on the boundary are peeled off (removed, their other faces
+//     becoming the boundary: it moves by less than boundary_tolerance);
+// and only what still remains is cut free (dissected along its faces, thesis §7.3) and
+// removed: those are the cracks.
 //
 // Guarantees. Every edit is one of the kernel's operations (split_edge, split_face,
 // collapse_edge, flip_23/32/44, dissect, replace_elements), each a transaction checked by exact
