@@ -8,13 +8,13 @@
 //   two edges ab, cd passing close     (sliver)   split each at the closest points, collapse
 //   a vertex d close to the face abc   (cap)      split abc at d's foot m, collapse m-d
 //
-// The thesis picks the move by the number of large dihedral angles; that move is tried first.
-// When the checks refuse it (link condition, boundary, orientation in either position set),
-// the other moves are tried by increasing distance, up to detail::longest_move times the
-// longest edge. Beyond the thesis, a move must not make new flat elements: one that does is
-// undone (MoveJournal) and the next is tried; only when every move does, the first that at
-// least improves on the element's own aspect ratio is kept (try_moves). Every failed try
-// leaves the mesh as it was, up to element ids.
+// The thesis picks the move by the number of large dihedral angles; that move is tried first
+// (unless it is long: see moves_for). When the checks refuse it (link condition, boundary,
+// orientation in either position set), the other moves are tried by increasing distance, up to
+// detail::longest_move times the longest edge, each collapse both ways. Beyond the thesis, a
+// move must pay (try_moves in removal_steps.hpp: no new flat element, or fewer, or better
+// shapes, or new ones that follow-up moves remove); one that does not is undone (MoveJournal)
+// and the next is tried. Every failed try leaves the mesh as it was, up to element ids.
 #include <algorithm>
 #include <array>
 #include <utility>
@@ -34,8 +34,9 @@ struct Move {
     enum class Kind { collapse_edge, split_edge, split_two_edges, split_face } kind;
     double distance = 0;  // between the two points the collapse merges
     bool thesis = false;  // the move the thesis prescribes for the class
-    // collapse_edge: a-b. split_edge: edge a-b at s, then m-v (v in c). split_two_edges: a-b at
-    // s and c-d at u. split_face: the face opposite d, at weights w for its sorted vertices.
+    // collapse_edge: v0-v1. split_edge: edge v0-v1 at s, then m-v2. split_two_edges: v0-v1 at
+    // s and v2-v3 at u, then m2-m1. split_face: the face v0 v1 v2 (sorted) opposite v3, at
+    // weights w, then m-v3.
     std::array<VertexId, 4> v{};
     double s = 0, u = 0;
     std::array<double, 3> w{};
