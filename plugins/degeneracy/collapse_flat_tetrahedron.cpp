@@ -224,29 +224,9 @@ std::string collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& op
                                       MoveJournal& journal, Effort effort, MoveJournal* inner) {
     const std::vector<Move> moves = moves_for(mesh, t, options);
     if (moves.empty()) return "no split or collapse fits its shape";
-    const std::array<VertexId, 4> vertices{mesh.simplex(t).vertex(0), mesh.simplex(t).vertex(1),
-                                           mesh.simplex(t).vertex(2), mesh.simplex(t).vertex(3)};
-    const double before = element_aspect_ratio(mesh, t, options.positions);
-    Tally follow_ups;  // booked only with the move they follow
-    auto follow_up = [&](const std::vector<Simplex>& flat) {
-        follow_ups = {};
-        for (const Simplex& key : flat) {
-            const ElementId e = element_with(mesh, key);
-            if (e == invalid_id || element_aspect_ratio(mesh, e, options.positions) >= options.aspect_ratio) continue;
-            if (!collapse_flat_tetrahedron(mesh, e, options, follow_ups, *inner, Effort::clean).empty()) return false;
-        }
-        return true;
-    };
-    return try_moves(
-        mesh, std::span<const Move>(moves), std::span<const VertexId>(vertices), before, options, journal,
-        inner ? effort : std::min(effort, Effort::paying), [&](const Move& move) { return execute(mesh, move, options); },
-        [&](const Move& move) {
-            count(move, tally);
-            tally.collapses += follow_ups.collapses;
-            tally.splits += follow_ups.splits;
-            tally.flips += follow_ups.flips;
-        },
-        follow_up);
+    return try_moves_of(
+        mesh, t, std::span<const Move>(moves), options, tally, journal, effort, inner,
+        [&](const Move& move) { return execute(mesh, move, options); }, count, collapse_flat_tetrahedron);
 }
 
 }  // namespace sxk::degeneracy::detail

@@ -114,27 +114,9 @@ std::string collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& optio
         both.push_back(move);
         both.back().reverse = true;
     }
-    const double before = element_aspect_ratio(mesh, t, options.positions);
-    Tally follow_ups;  // booked only with the move they follow
-    auto follow_up = [&](const std::vector<Simplex>& flat) {
-        follow_ups = {};
-        for (const Simplex& key : flat) {
-            const ElementId e = element_with(mesh, key);
-            if (e == invalid_id || element_aspect_ratio(mesh, e, options.positions) >= options.aspect_ratio) continue;
-            if (!collapse_flat_triangle(mesh, e, options, follow_ups, *inner, Effort::clean).empty()) return false;
-        }
-        return true;
-    };
-    return try_moves(
-        mesh, std::span<const Move>(both), std::span<const VertexId>(p), before, options, journal,
-        inner ? effort : std::min(effort, Effort::paying), [&](const Move& move) { return execute(mesh, move, options); },
-        [&](const Move& move) {
-            count(move, tally);
-            tally.collapses += follow_ups.collapses;
-            tally.splits += follow_ups.splits;
-            tally.flips += follow_ups.flips;
-        },
-        follow_up);
+    return try_moves_of(
+        mesh, t, std::span<const Move>(both), options, tally, journal, effort, inner,
+        [&](const Move& move) { return execute(mesh, move, options); }, count, collapse_flat_triangle);
 }
 
 }  // namespace sxk::degeneracy::detail

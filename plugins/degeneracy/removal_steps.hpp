@@ -2,6 +2,7 @@
 // (split + collapse, thesis Fig. 3.9), flipping an element out, cutting elements free.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -156,6 +157,40 @@ std::string try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const V
             why = std::move(refusal);
         }
     return why;
+}
+
+// try_moves for a removal step `remove(mesh, element, options, tally, journal, effort, inner)`
+// (collapse_flat_tetrahedron, collapse_flat_triangle) on element t: its follow-ups are the same
+// step with Effort::clean on the inner journal, and what they do is booked with the move they
+// follow. Effort::follow_up needs `inner`; without it the step tries no harder than paying.
+template <class Move, class Execute, class Count, class Remove>
+std::string try_moves_of(Mesh& mesh, ElementId t, std::span<const Move> moves, const Options& options,
+                         Tally& tally, MoveJournal& journal, Effort effort, MoveJournal* inner,
+                         Execute execute, Count count, Remove remove) {
+    const Simplex& tau = mesh.simplex(t);
+    std::array<VertexId, 4> vertices{};
+    std::copy(tau.vertices().begin(), tau.vertices().end(), vertices.begin());
+    const std::span<const VertexId> own(vertices.data(), static_cast<std::size_t>(tau.count()));
+    const double before = element_aspect_ratio(mesh, t, options.positions);
+    Tally follow_ups;
+    auto follow_up = [&](const std::vector<Simplex>& flat) {
+        follow_ups = {};
+        for (const Simplex& key : flat) {
+            const ElementId e = element_with(mesh, key);
+            if (e == invalid_id || element_aspect_ratio(mesh, e, options.positions) >= options.aspect_ratio) continue;
+            if (!remove(mesh, e, options, follow_ups, *inner, Effort::clean, nullptr).empty()) return false;
+        }
+        return true;
+    };
+    return try_moves(
+        mesh, moves, own, before, options, journal, inner ? effort : std::min(effort, Effort::paying), execute,
+        [&](const Move& move) {
+            count(move, tally);
+            tally.collapses += follow_ups.collapses;
+            tally.splits += follow_ups.splits;
+            tally.flips += follow_ups.flips;
+        },
+        follow_up);
 }
 
 }  // namespace sxk::degeneracy::detail

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "real/femur_data.hpp"
 #include "remove_degeneracies.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/io.hpp"
@@ -27,21 +28,7 @@
 namespace sxk::degeneracy {
 namespace {
 
-// Runs tools/make-data and returns the .ele path it prints (as ops_femur.cpp does).
-std::string make_femur() {
-    const std::string command =
-        std::string(SXK_SOURCE_DIR "/tools/make-data femur ") + SXK_GENERATED_DATA_DIR;
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), &pclose);
-    if (!pipe)
-        return {};
-    std::string output;
-    std::array<char, 512> buffer{};
-    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get()))
-        output += buffer.data();
-    while (!output.empty() && (output.back() == '\n' || output.back() == '\r'))
-        output.pop_back();
-    return output;
-}
+using test::make_femur;
 
 bool below(const Mesh& mesh, ElementId t, double threshold) {
     return aspect_ratio(element_points(mesh, t, Positions::reference)) < threshold;

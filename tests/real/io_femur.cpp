@@ -10,27 +10,14 @@
 #include <memory>
 #include <string>
 
+#include "real/femur_data.hpp"
 #include "sxk/io.hpp"
 #include "sxk/predicates.hpp"
 
 namespace sxk {
 namespace {
 
-// Runs tools/make-data and returns the .ele path it prints.
-std::string make_femur() {
-    const std::string command =
-        std::string(SXK_SOURCE_DIR "/tools/make-data femur ") + SXK_GENERATED_DATA_DIR;
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), &pclose);
-    if (!pipe)
-        return {};
-    std::string output;
-    std::array<char, 512> buffer{};
-    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get()))
-        output += buffer.data();
-    while (!output.empty() && (output.back() == '\n' || output.back() == '\r'))
-        output.pop_back();
-    return output;
-}
+using test::make_femur;
 
 TEST(IoFemur, ReadsTheTetgenMesh) {
     const std::string ele = make_femur();

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "real/femur_data.hpp"
 #include "sxk/io.hpp"
 #include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/flip_23.hpp"
@@ -42,18 +43,7 @@
 namespace sxk {
 namespace {
 
-// Runs tools/make-data and returns the .ele path it prints.
-std::string make_femur() {
-    const std::string command =
-        std::string(SXK_SOURCE_DIR "/tools/make-data femur ") + SXK_GENERATED_DATA_DIR;
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), &pclose);
-    if (!pipe) return {};
-    std::string output;
-    std::array<char, 512> buffer{};
-    while (fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get())) output += buffer.data();
-    while (!output.empty() && (output.back() == '\n' || output.back() == '\r')) output.pop_back();
-    return output;
-}
+using test::make_femur;
 
 // The elements of the stars of `vertices` (those still in an element), sorted, no repeats.
 std::vector<ElementId> region(const Mesh& mesh, std::span<const VertexId> vertices) {
