@@ -1,0 +1,205 @@
+// Triangular Bézier patches (Roth §4.4): evaluation against the Bernstein sum, subdivision,
+// elevation, derivatives, normals with a collapsed edge, and the tensor-to-triangle conversion,
+// all checked numerically on random patches (seed printed; SXK_SEED repeats a run).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <random>
+#include <vector>
+
+#include "core/fixtures.hpp"
+#include "read_bpt.hpp"
+#include "sxk/io.hpp"
+#include "triangular_patch.hpp"
+
+namespace sxk::bezier {
+namespace {
+
+double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+
+double distance(const Point& a, const Point& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+TriangularPatch random_patch(int degree, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> coordinate(-1, 1);
+    std::vector<Point> points((degree + 1) * (degree + 2) / 2);
+    for (Point& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    return TriangularPatch(degree, points);
+}
+
+Barycentric random_point(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    double r = unit(rng), s = unit(rng);
+    if (r + s > 1) r = 1 - r, s = 1 - s;
+    return {r, s, 1 - r - s};
+}
+
+// The Bernstein sum of the header, term by term.
+Point bernstein(const TriangularPatch& patch, const Barycentric& x) {
+    const int n = patch.degree();
+    Point sum{0, 0, 0};
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n - k; ++j) {
+            const int i = n - j - k;
+            const double w = factorial(n) / (factorial(i) * factorial(j) * factorial(k)) * std::pow(x[0], i) *
+                             std::pow(x[1], j) * std::pow(x[2], k);
+            for (int q = 0; q < 3; ++q) sum[q] += w * patch.control_point(j, k)[q];
+        }
+    return sum;
+}
+
+TEST(TriangularPatch, DeCasteljauIsTheBernsteinSum) {
+    std::mt19937_64 rng(test::seed_for("TriangularPatch.DeCasteljauIsTheBernsteinSum"));
+    for (int degree = 0; degree <= 7; ++degree) {
+        const TriangularPatch patch = random_patch(degree, rng);
+        for (int sample = 0; sample < 20; ++sample) {
+            const Barycentric x = random_point(rng);
+            EXPECT_LT(distance(patch.evaluate(x), bernstein(patch, x)), 1e-12) << "degree " << degree;
+        }
+        // corners are corner control points
+        EXPECT_EQ(patch.evaluate({1, 0, 0}), patch.control_point(0, 0));
+        EXPECT_EQ(patch.evaluate({0, 0, 1}), patch.control_point(0, degree));
+    }
+}
+
+TEST(TriangularPatch, SubdivisionReproducesTheSurfaceOverTheSubTriangle) {
+    std::mt19937_64 rng(test::seed_for("TriangularPatch.SubdivisionReproducesTheSurfaceOverTheSubTriangle"));
+    for (int degree = 1; degree <= 6; ++degree) {
+        const TriangularPatch patch = random_patch(degree, rng);
+        const Barycentric r = random_point(rng), s = random_point(rng), t = random_point(rng);
+        const TriangularPatch part = patch.subdivided(r, s, t);
+        for (int sample = 0; sample < 20; ++sample) {
+            const Barycentric x = random_point(rng);
+            const Barycentric in_whole{x[0] * r[0] + x[1] * s[0] + x[2] * t[0], x[0] * r[1] + x[1] * s[1] + x[2] * t[1],
+                                       x[0] * r[2] + x[1] * s[2] + x[2] * t[2]};
+            EXPECT_LT(distance(part.evaluate(x), patch.evaluate(in_whole)), 1e-12) << "degree " << degree;
+        }
+    }
+}
+
+TEST(TriangularPatch, ElevationKeepsTheSurface) {
+    std::mt19937_64 rng(test::seed_for("TriangularPatch.ElevationKeepsTheSurface"));
+    for (int degree = 0; degree <= 6; ++degree) {
+        const TriangularPatch patch = random_patch(degree, rng);
+        const TriangularPatch higher = patch.elevated().elevated();
+        EXPECT_EQ(higher.degree(), degree + 2);
+        for (int sample = 0; sample < 20; ++sample) {
+            const Barycentric x = random_point(rng);
+            EXPECT_LT(distance(higher.evaluate(x), patch.evaluate(x)), 1e-12);
+        }
+    }
+}
+
+TEST(TriangularPatch, DerivativeMatchesCentralDifferences) {
+    std::mt19937_64 rng(test::seed_for("TriangularPatch.DerivativeMatchesCentralDifferences"));
+    const TriangularPatch patch = random_patch(5, rng);
+    const Barycentric x{0.3, 0.3, 0.4}, d{-1, 1, 0};
+    const double h = 1e-5;
+    const Point plus = patch.evaluate({x[0] - h, x[1] + h, x[2]}), minus = patch.evaluate({x[0] + h, x[1] - h, x[2]});
+    const Point derivative = patch.derivative(x, d);
+    for (int q = 0; q < 3; ++q) EXPECT_NEAR(derivative[q], (plus[q] - minus[q]) / (2 * h), 1e-7);
+}
+
+// A flat quadratic patch (z = 0) whose control points b_200, b_110 and b_101 coincide: both
+// edges leave that corner with zero speed, the derivatives vanish there and the normal is the
+// limit from inside, the z axis (as at the teapot's lid knob, where an edge collapses).
+TEST(TriangularPatch, NormalAtACollapsedCornerIsTheLimitFromInside) {
+    const TriangularPatch patch(2, {{0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    const Point corner = patch.normal({1, 0, 0});
+    EXPECT_NEAR(std::abs(corner[2]), 1.0, 1e-9);
+    const Point inside = patch.normal({0.2, 0.3, 0.5});
+    EXPECT_NEAR(corner[2], inside[2], 1e-9);  // the same side
+}
+
+TEST(TriangularPatch, RefusesAWrongNumberOfControlPoints) {
+    try {
+        TriangularPatch(2, std::vector<Point>(5));
+        FAIL() << "no throw";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_STREQ(error.what(), "TriangularPatch: degree 2 needs 6 control points, not 5");
+    }
+}
+
+// Goldman–Filip: the two triangular halves of degree m + n reproduce the tensor patch.
+TEST(TensorPatch, TwoTriangularHalvesReproduceIt) {
+    std::mt19937_64 rng(test::seed_for("TensorPatch.TwoTriangularHalvesReproduceIt"));
+    std::uniform_real_distribution<double> coordinate(-1, 1), unit(0, 1);
+    for (const auto& [m, n] : std::vector<std::pair<int, int>>{{3, 3}, {1, 2}, {2, 4}, {0, 3}}) {
+        TensorPatch patch{m, n, std::vector<Point>((m + 1) * (n + 1))};
+        for (Point& p : patch.points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+        const auto halves = to_triangular(patch);
+        EXPECT_EQ(halves[0].degree(), m + n);
+        for (int sample = 0; sample < 200; ++sample) {
+            const double u = unit(rng), v = unit(rng);
+            const Point expected = patch.evaluate(u, v);
+            // (u, v) = r (0,0) + s (1,0) + t (1,1) for u >= v, r (0,0) + s (1,1) + t (0,1) else
+            const Point got = u >= v ? halves[0].evaluate({1 - u, u - v, v}) : halves[1].evaluate({1 - v, u, v - u});
+            EXPECT_LT(distance(got, expected), 1e-12) << m << "x" << n << " at " << u << ", " << v;
+        }
+    }
+}
+
+// The teapot (tests/data/teapot.bpt): 32 bicubic patches become 64 sextic triangular ones
+// (Roth §6.4) that reproduce them.
+TEST(TensorPatch, TeapotBecomes64SexticTriangularPatches) {
+    const std::vector<TensorPatch> teapot = read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt");
+    ASSERT_EQ(teapot.size(), 32u);
+    std::size_t triangular = 0;
+    double worst = 0;
+    for (const TensorPatch& patch : teapot) {
+        ASSERT_EQ(patch.degree_u, 3);
+        ASSERT_EQ(patch.degree_v, 3);
+        const auto halves = to_triangular(patch);
+        for (const TriangularPatch& half : halves) {
+            EXPECT_EQ(half.degree(), 6);
+            ++triangular;
+            // a unit normal everywhere, the collapsed lid and bottom corners included
+            for (const Barycentric& corner : {Barycentric{1, 0, 0}, Barycentric{0, 1, 0}, Barycentric{0, 0, 1}}) {
+                const Point normal = half.normal(corner);
+                EXPECT_NEAR(std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]), 1.0, 1e-12);
+            }
+        }
+        for (int a = 0; a <= 10; ++a)
+            for (int b = 0; b <= 10; ++b) {
+                const double u = a / 10.0, v = b / 10.0;
+                const Point got = u >= v ? halves[0].evaluate({1 - u, u - v, v}) : halves[1].evaluate({1 - v, u, v - u});
+                worst = std::max(worst, distance(got, patch.evaluate(u, v)));
+            }
+    }
+    EXPECT_EQ(triangular, 64u);
+    EXPECT_LT(worst, 1e-12);
+}
+
+TEST(ReadBpt, RefusesMalformedFilesNamingTheLine) {
+    const auto dir = std::filesystem::temp_directory_path() / ("sxk-bpt-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    auto expect_error = [&](const std::string& text, const std::string& message) {
+        const auto file = dir / "bad.bpt";
+        std::ofstream(file) << text;
+        try {
+            (void)read_bpt(file);
+            ADD_FAILURE() << "no error for: " << text;
+        } catch (const InputError& error) {
+            EXPECT_EQ(std::string(error.what()), file.string() + ":" + message);
+        }
+    };
+    expect_error("", "0: unexpected end of file, expected the patch count");
+    expect_error("0\n", "1: patch count 0 is not in 1..1000000");
+    expect_error("1\n1 1\n0 0 0\n1 0 0\n0 1 0\n", "5: unexpected end of file, expected a point x y z");
+    expect_error("1\n1 x\n", "2: expected two degrees");
+    expect_error("1\n0 0\n0 0 nan\n", "3: expected a point x y z");
+    expect_error("1\n0 0\n0 0 0 4\n", "3: unexpected '4' after a point x y z");
+    expect_error("1\n0 0\n0 0 0\n7\n", "4: trailing data after 1 patches");
+    expect_error("1\n21 0\n", "2: degrees 21 0 are not in 0..20");
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace sxk::bezier
