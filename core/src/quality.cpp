@@ -69,6 +69,21 @@ double aspect_ratio(std::span<const Point> p) {
     return min_height / longest;
 }
 
+double relative_distance_to_hull(std::span<const Point> face, const Point& p) {
+    const double longest = max_edge(face);
+    if (!(longest > 0)) return std::numeric_limits<double>::infinity();
+    const Vec w = p - face[0];
+    const Vec u = face[1] - face[0];
+    if (face.size() == 2) {  // to the line
+        const double along = dot(w, u) / dot(u, u);
+        return norm(Vec{w.x - along * u.x, w.y - along * u.y, w.z - along * u.z}) / longest;
+    }
+    const Vec n = cross(u, face[2] - face[0]);
+    const double nn = dot(n, n);
+    if (!(nn > 0)) return std::numeric_limits<double>::infinity();
+    return std::abs(dot(w, n)) / std::sqrt(nn) / longest;
+}
+
 double radius_ratio(std::span<const Point> p) {
     if (p.size() == 4) {
         const double volume = tetrahedron_volume(p);

@@ -8,23 +8,8 @@
 
 #include "removal_steps.hpp"
 #include "sxk/ops/dissect.hpp"
-#include "sxk/traversal.hpp"
 
 namespace sxk::degeneracy::detail {
-namespace {
-
-// True when some element has a face with these vertices (found in the star of the first).
-bool face_exists(const Mesh& mesh, const Simplex& face) {
-    const VertexId v = face.vertex(0);
-    if (mesh.vertex_element(v) == invalid_id) return false;
-    for (const ElementId t : star(mesh, v))
-        if (std::all_of(face.vertices().begin(), face.vertices().end(),
-                        [&](VertexId w) { return mesh.simplex(t).contains(w); }))
-            return true;
-    return false;
-}
-
-}  // namespace
 
 Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
     std::vector<Simplex> faces;
@@ -51,7 +36,7 @@ Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
     // would name no face: drop them. A face with the same vertices that still exists is a
     // neighbour's boundary face now, and keeps the label.
     for (const Simplex& face : faces_of_doomed)
-        if (!face_exists(mesh, face)) mesh.face_labels().erase(face);
+        if (element_containing(mesh, face.vertices()) == invalid_id) mesh.face_labels().erase(face);
     return Done{};
 }
 

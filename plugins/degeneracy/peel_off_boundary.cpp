@@ -15,29 +15,9 @@
 #include <vector>
 
 #include "removal_steps.hpp"
+#include "sxk/quality.hpp"
 
 namespace sxk::degeneracy::detail {
-namespace {
-
-// Distance from p to the plane (line) through the face's vertices, relative to the face's
-// longest edge; infinity for a face too flat to have a plane.
-double relative_distance(const Mesh& mesh, const Simplex& face, const Point& p, Positions positions) {
-    std::array<Point, 3> x{};
-    for (int i = 0; i < face.count(); ++i) x[static_cast<std::size_t>(i)] = position(mesh, face.vertex(i), positions);
-    double longest = 0;
-    for (int i = 0; i < face.count(); ++i)
-        for (int j = i + 1; j < face.count(); ++j)
-            longest = std::max(longest, distance(x[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(j)]));
-    if (!(longest > 0)) return std::numeric_limits<double>::infinity();
-    if (face.count() == 2) return foot_on_line(x[0], x[1], p).distance / longest;
-    const Point n = cross(minus(x[1], x[0]), minus(x[2], x[0]));
-    const double nn = dot(n, n);
-    if (!(nn > 0)) return std::numeric_limits<double>::infinity();
-    return std::abs(dot(minus(p, x[0]), n)) / std::sqrt(nn) / longest;
-}
-
-}  // namespace
-
 std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
     const Simplex tau = mesh.simplex(t);
     std::vector<Simplex> boundary, exposed;
@@ -49,7 +29,12 @@ std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
         for (const VertexId v : tau.vertices()) {
             if (face.contains(v)) continue;
             for (const Positions positions : {Positions::reference, Positions::deformed}) {
-                const double d = relative_distance(mesh, face, position(mesh, v, positions), positions);
+                std::array<Point, 3> corners{};
+                for (int i = 0; i < face.count(); ++i)
+                    corners[static_cast<std::size_t>(i)] = position(mesh, face.vertex(i), positions);
+                const double d = relative_distance_to_hull(
+                    std::span<const Point>(corners.data(), static_cast<std::size_t>(face.count())),
+                    position(mesh, v, positions));
                 if (!(d <= options.boundary_tolerance))
                     return "peeling it off would move the boundary face " + to_text(face) + " by " +
                            std::to_string(d) + " of its longest edge";

@@ -99,8 +99,11 @@ struct Shapes {
 Shapes shapes_of(const Mesh& mesh, std::span<const ElementId> elements, const Options& options);
 Shapes shapes_of(const Mesh& mesh, std::span<const Simplex> simplexes, const Options& options);
 
-// The element with these vertices (sorted, sign +1), or invalid_id: found in the star of the
-// first vertex. An undone move gives the elements it puts back new ids; vertices stay.
+// Some element containing all these vertices (a face's, an element's), or invalid_id: found in
+// the star of the first one.
+ElementId element_containing(const Mesh& mesh, std::span<const VertexId> vertices);
+// The element with these vertices (sorted, sign +1), or invalid_id. An undone move gives the
+// elements it puts back new ids; vertices stay.
 ElementId element_with(const Mesh& mesh, const Simplex& vertices);
 // The vertices of the elements around `vertices` (their stars), sorted: the region a removal
 // and the removals of what it made can touch.

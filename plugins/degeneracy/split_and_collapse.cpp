@@ -14,12 +14,18 @@ std::string collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, c
     return collapsed ? std::string{} : collapsed.reason();
 }
 
-ElementId element_with(const Mesh& mesh, const Simplex& vertices) {
-    const VertexId first = vertices.vertex(0);
+ElementId element_containing(const Mesh& mesh, std::span<const VertexId> vertices) {
+    const VertexId first = vertices[0];
     if (first >= mesh.vertex_count() || mesh.vertex_element(first) == invalid_id) return invalid_id;
     for (const ElementId t : star(mesh, first))
-        if (Simplex(+1, mesh.simplex(t).vertices()) == vertices) return t;
+        if (std::all_of(vertices.begin(), vertices.end(), [&](VertexId v) { return mesh.simplex(t).contains(v); }))
+            return t;
     return invalid_id;
+}
+
+ElementId element_with(const Mesh& mesh, const Simplex& vertices) {
+    // an element containing all d + 1 vertices of a d-simplex is that simplex
+    return element_containing(mesh, vertices.vertices());
 }
 
 std::vector<VertexId> ring_of(const Mesh& mesh, std::span<const VertexId> vertices) {

@@ -27,6 +27,11 @@ SXK_API std::array<double, 6> dihedral_angles(std::span<const Point> tetrahedron
 // The three angles of a triangle at vertices 0, 1, 2, in radians (any ambient dimension).
 SXK_API std::array<double, 3> triangle_angles(std::span<const Point> triangle);
 
+// Distance from p to the line (2 points) or plane (3 points) through `face`, divided by the
+// face's longest edge; infinity when the face has no line or plane (coincident or collinear
+// points). The boundary tolerance of collapses and of degeneracy removal is measured so.
+SXK_API double relative_distance_to_hull(std::span<const Point> face, const Point& p);
+
 // The positions of element t's vertices in canonical order.
 SXK_API std::vector<Point> element_points(const Mesh& mesh, ElementId t,
                                           Positions positions = Positions::deformed);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ops/split_collapse_checks.hpp"
+#include "sxk/quality.hpp"
 
 namespace sxk {
 namespace {
@@ -39,33 +40,11 @@ bool on_hull_of(const Simplex& face, const Mesh& mesh, const Point& p, Positions
         if (face.count() == 2) return collinear(point(0), point(1), p);
         return orient3d(point(0), point(1), point(2), p) == Sign::zero;
     }
-    auto difference = [](const Point& x, const Point& y) {
-        return Point{x[0] - y[0], x[1] - y[1], x[2] - y[2]};
-    };
-    auto dot = [](const Point& x, const Point& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-    double longest2 = 0;
-    for (int i = 0; i < face.count(); ++i)
-        for (int j = i + 1; j < face.count(); ++j) {
-            const Point e = difference(point(i), point(j));
-            longest2 = std::max(longest2, dot(e, e));
-        }
-    const Point w = difference(p, point(0));
-    const Point u = difference(point(1), point(0));
-    double distance2 = 0;
-    if (face.count() == 2) {  // distance to the line
-        const double uu = dot(u, u);
-        const double along = uu > 0 ? dot(w, u) / uu : 0;
-        const Point r{w[0] - along * u[0], w[1] - along * u[1], w[2] - along * u[2]};
-        distance2 = dot(r, r);
-    } else {  // distance to the plane
-        const Point v = difference(point(2), point(0));
-        const Point n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        const double nn = dot(n, n);
-        if (nn == 0) return false;  // a flat boundary face has no plane to keep
-        const double height = dot(w, n);
-        distance2 = height * height / nn;
-    }
-    return distance2 <= tolerance * tolerance * longest2;
+    std::array<Point, 3> points{};
+    for (int i = 0; i < face.count(); ++i) points[static_cast<std::size_t>(i)] = point(i);
+    // a face with no line or plane (collinear vertices) is infinitely far: any move refuses
+    return relative_distance_to_hull(std::span<const Point>(points.data(), static_cast<std::size_t>(face.count())), p) <=
+           tolerance;
 }
 
 std::string in_the(Positions positions) {
