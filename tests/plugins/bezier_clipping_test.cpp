@@ -1,0 +1,212 @@
+// Ray–patch intersection by triangular Bézier clipping (Roth §6.2–6.4): exact hits on flat
+// patches, rays aimed at known points of random curved patches (every one must hit, on the patch
+// to 1e-9 of its size, the nearest of several crossings), misses, the t window, and the teapot's
+// collapsed knob corner. Random patches print their seed (SXK_SEED repeats a run).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "bezier_clipping.hpp"
+#include "core/fixtures.hpp"
+#include "read_bpt.hpp"
+
+namespace sxk::bezier {
+namespace {
+
+double distance(const Point& a, const Point& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+Point along(const Ray& ray, double t) {
+    return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
+            ray.origin[2] + t * ray.direction[2]};
+}
+
+double diagonal(const TriangularPatch& patch) {
+    Point lower = patch.control_points()[0], upper = lower;
+    for (const Point& p : patch.control_points())
+        for (int c = 0; c < 3; ++c) {
+            lower[c] = std::min(lower[c], p[c]);
+            upper[c] = std::max(upper[c], p[c]);
+        }
+    return distance(lower, upper);
+}
+
+Point unit(Point v) {
+    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+Barycentric random_point(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(0, 1);
+    double r = u(rng), s = u(rng);
+    if (r + s > 1) r = 1 - r, s = 1 - s;
+    return {r, s, 1 - r - s};
+}
+
+Point random_direction(std::mt19937_64& rng) {
+    std::normal_distribution<double> g;
+    return unit({g(rng), g(rng), g(rng)});
+}
+
+// A wavy patch over the unit triangle: control points on a grid with random heights, so that
+// rays at a slant may cross it more than once.
+TriangularPatch wavy_patch(int degree, double amplitude, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> height(-amplitude, amplitude);
+    std::vector<Point> points(static_cast<std::size_t>((degree + 1) * (degree + 2) / 2));
+    for (int k = 0; k <= degree; ++k)
+        for (int j = 0; j <= degree - k; ++j)
+            points[TriangularPatch::index(degree, j, k)] = {static_cast<double>(j) / degree,
+                                                            static_cast<double>(k) / degree, height(rng)};
+    return TriangularPatch(degree, points);
+}
+
+// The hit must lie on the patch and on the ray, with a unit normal.
+void expect_on_patch(const TriangularPatch& patch, const Ray& ray, const PatchHit& hit) {
+    const double tolerance = 1e-9 * diagonal(patch);
+    EXPECT_LE(distance(along(ray, hit.t), patch.evaluate(hit.at)), tolerance);
+    EXPECT_NEAR(hit.at[0] + hit.at[1] + hit.at[2], 1.0, 1e-12);
+    for (double c : hit.at) EXPECT_GE(c, -1e-9);
+    EXPECT_NEAR(std::sqrt(hit.normal[0] * hit.normal[0] + hit.normal[1] * hit.normal[1] +
+                          hit.normal[2] * hit.normal[2]),
+                1.0, 1e-9);
+}
+
+TEST(BezierClipping, FlatTriangleGivesTheExactHit) {
+    // degree 1: the triangle (0,0,0) (1,0,0) (0,1,0) in the plane z = 0
+    const TriangularPatch flat(1, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const Ray down{{0.25, 0.5, 2}, {0, 0, -1}};
+    const auto hit = intersect(flat, down);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 2, 1e-12);
+    // b(r,s,t) = r b_100 + s b_010 + t b_001 = (s, t, 0): s = 0.25, t = 0.5
+    EXPECT_NEAR(hit->at[0], 0.25, 1e-12);
+    EXPECT_NEAR(hit->at[1], 0.25, 1e-12);
+    EXPECT_NEAR(hit->at[2], 0.5, 1e-12);
+    EXPECT_NEAR(std::abs(hit->normal[2]), 1, 1e-12);
+    // beyond the hypotenuse, and behind the origin
+    EXPECT_FALSE(intersect(flat, Ray{{0.6, 0.6, 2}, {0, 0, -1}}));
+    EXPECT_FALSE(intersect(flat, Ray{{0.25, 0.5, 2}, {0, 0, 1}}));
+}
+
+TEST(BezierClipping, RayThroughTheSharedEdgeHitsAPatch) {
+    // two triangles sharing the edge (1,0,0)-(0,1,0); rays exactly through points of that edge
+    const TriangularPatch a(1, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const TriangularPatch b(1, {{1, 1, 0}, {0, 1, 0}, {1, 0, 0}});
+    for (double x : {0.0, 0.125, 0.5, 0.875, 1.0}) {
+        const Ray ray{{x, 1 - x, 1}, {0, 0, -1}};
+        EXPECT_TRUE(intersect(a, ray) || intersect(b, ray)) << "x = " << x;
+    }
+}
+
+TEST(BezierClipping, RaysAimedAtPointsOfCurvedPatchesHitThem) {
+    std::mt19937_64 rng(test::seed_for("BezierClipping.RaysAimedAtPointsOfCurvedPatchesHitThem"));
+    std::uniform_real_distribution<double> coordinate(-1, 1);
+    int rays = 0, at_target = 0;
+    for (int degree = 1; degree <= 7; ++degree) {
+        for (int trial = 0; trial < 10; ++trial) {
+            std::vector<Point> points(static_cast<std::size_t>((degree + 1) * (degree + 2) / 2));
+            for (Point& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+            const TriangularPatch patch(degree, points);
+            for (int sample = 0; sample < 20; ++sample) {
+                const Barycentric target = random_point(rng);
+                const Point p = patch.evaluate(target);
+                const Point d = random_direction(rng);
+                const double back = 3;
+                const Ray ray{{p[0] - back * d[0], p[1] - back * d[1], p[2] - back * d[2]}, d};
+                const auto hit = intersect(patch, ray);
+                ++rays;
+                ASSERT_TRUE(hit) << "degree " << degree << " missed the point at (" << target[0] << ", " << target[1]
+                                 << ", " << target[2] << ")";
+                // the nearest hit: at the target, or before it where the ray crosses the patch earlier
+                EXPECT_LE(hit->t, back * (1 + 1e-9));
+                expect_on_patch(patch, ray, *hit);
+                if (std::abs(hit->t - back) < 1e-9) ++at_target;
+            }
+        }
+    }
+    std::cout << rays << " rays, " << at_target << " nearest hit at the target\n";
+    EXPECT_GT(at_target, rays / 2);
+}
+
+TEST(BezierClipping, ReportsTheNearestOfSeveralCrossings) {
+    std::mt19937_64 rng(test::seed_for("BezierClipping.ReportsTheNearestOfSeveralCrossings"));
+    int multiple = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const TriangularPatch patch = wavy_patch(6, 0.3, rng);
+        // a slanted ray through two points of the patch: it crosses at least those
+        const Barycentric a = random_point(rng), b = random_point(rng);
+        const Point pa = patch.evaluate(a), pb = patch.evaluate(b);
+        const Point d = unit({pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]});
+        const Ray ray{{pa[0] - 2 * d[0], pa[1] - 2 * d[1], pa[2] - 2 * d[2]}, d};
+        const auto hit = intersect(patch, ray);
+        ASSERT_TRUE(hit);
+        expect_on_patch(patch, ray, *hit);
+        EXPECT_LE(hit->t, 2 * (1 + 1e-9));  // pa is a crossing, so the nearest is no farther
+        // starting just after the nearest crossing finds the next one, farther on
+        Ray after = ray;
+        after.t_near = hit->t + 1e-6;
+        if (const auto next = intersect(patch, after)) {
+            EXPECT_GT(next->t, hit->t);
+            expect_on_patch(patch, after, *next);
+            ++multiple;
+        }
+    }
+    std::cout << multiple << " of 40 rays crossed again after the nearest hit\n";
+    EXPECT_GT(multiple, 20);  // every ray passes through pa and pb
+}
+
+TEST(BezierClipping, RespectsTheRayWindow) {
+    const TriangularPatch flat(1, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    Ray ray{{0.25, 0.25, 2}, {0, 0, -1}};
+    ray.t_far = 1.5;
+    EXPECT_FALSE(intersect(flat, ray));
+    ray.t_far = 2.5;
+    ray.t_near = 2.1;
+    EXPECT_FALSE(intersect(flat, ray));
+    ray.t_near = 1.9;
+    EXPECT_TRUE(intersect(flat, ray));
+}
+
+TEST(BezierClipping, MissesWhatLiesBesideTheRay) {
+    std::mt19937_64 rng(test::seed_for("BezierClipping.MissesWhatLiesBesideTheRay"));
+    const TriangularPatch patch = wavy_patch(6, 0.3, rng);
+    // rays parallel to the patch's plane above its highest point, and rays passing beside it
+    for (double y = -0.5; y <= 1.5; y += 0.25) {
+        EXPECT_FALSE(intersect(patch, Ray{{-1, y, 0.5}, {1, 0, 0}}));
+        EXPECT_FALSE(intersect(patch, Ray{{1.5, y, -1}, {0, 0, 1}}));
+    }
+}
+
+TEST(BezierClipping, HitsTheTeapotKnobWhereAnEdgeCollapses) {
+    // the lid's top row collapses to one point: the sextic halves there have a corner where seven
+    // control points coincide (Roth Fig. 6.13). Rays straight down near the axis must hit.
+    const std::vector<TensorPatch> teapot = read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt");
+    std::vector<TriangularPatch> patches;
+    for (const TensorPatch& p : teapot)
+        for (const TriangularPatch& half : to_triangular(p)) patches.push_back(half);
+    double top = -1e9;
+    for (const TriangularPatch& p : patches)
+        for (const Point& b : p.control_points()) top = std::max(top, b[2]);
+    int hits = 0;
+    for (double x : {0.0, 1e-6, 1e-3, 0.01, 0.05}) {
+        for (double y : {0.0, 1e-6, 0.01}) {
+            const Ray ray{{x, y, top + 1}, {0, 0, -1}};
+            double nearest = 1e300;
+            for (const TriangularPatch& p : patches)
+                if (const auto hit = intersect(p, ray)) {
+                    expect_on_patch(p, ray, *hit);
+                    nearest = std::min(nearest, hit->t);
+                }
+            EXPECT_LT(nearest, 2.0) << "no hit at the knob for x = " << x << ", y = " << y;
+            hits += nearest < 1e300;
+        }
+    }
+    EXPECT_EQ(hits, 15);
+}
+
+}  // namespace
+}  // namespace sxk::bezier
