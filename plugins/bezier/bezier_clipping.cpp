@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "de_casteljau.hpp"
+
 namespace sxk::bezier {
 namespace {
 
@@ -32,13 +34,6 @@ Vec cross(const Vec& a, const Vec& b) {
 }
 double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
 Vec scaled(const Vec& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-
-std::size_t point_count(int degree) { return static_cast<std::size_t>((degree + 1) * (degree + 2) / 2); }
-
-// TriangularPatch::index, inlined: clipping calls it in its innermost loops.
-inline std::size_t at_index(int degree, int j, int k) {
-    return static_cast<std::size_t>(k * (degree + 1) - k * (k - 1) / 2 + j);
-}
 
 // The orthonormal frame (n0, n1, e) of a ray.
 struct RayFrame {
@@ -84,105 +79,9 @@ struct Workspace {
     // reordering the stack never moves a net
     std::vector<Vec> arena;
     std::vector<Candidate> stack;
-    std::vector<Vec> original, current, clipped, quarter, child, jet;
-    std::vector<Vec> by_t, by_s, by_r;  // blossom steps of one subdivision
+    std::vector<Vec> original, current, clipped, quarter, jet;
+    NetScratch nets;
 };
-
-// One de Casteljau step of the net a (degree m) with respect to x into b (degree m - 1); b may be
-// a (each output lies at or before the inputs still to be read). Rows of constant k run from
-// a[row] (j = 0); the row above starts m + 1 - k entries later.
-void step(int m, const Vec* a, const Barycentric& x, Vec* b) {
-    const double x0 = x[0], x1 = x[1], x2 = x[2];
-    std::size_t row = 0, out = 0;
-    for (int k = 0; k < m; ++k) {
-        const std::size_t length = static_cast<std::size_t>(m - k);  // outputs in this row
-        const Vec* p = a + row;
-        const Vec* u = a + row + length + 1;
-        Vec* c = b + out;
-        for (std::size_t j = 0; j < length; ++j) {
-            const double v0 = x0 * p[j][0] + x1 * p[j + 1][0] + x2 * u[j][0];
-            const double v1 = x0 * p[j][1] + x1 * p[j + 1][1] + x2 * u[j][1];
-            const double v2 = x0 * p[j][2] + x1 * p[j + 1][2] + x2 * u[j][2];
-            c[j] = {v0, v1, v2};
-        }
-        row += length + 1;
-        out += length;
-    }
-}
-
-// The net of the same surface over the sub-triangle (R, S, T) of the net's domain (eq. 6.5):
-// c_ijk = d[R^i, S^j, T^k]. The blossom is symmetric, so the k steps with T are shared by every
-// c_ijk with that k, then the j steps with S by every c_ijk with that (j, k): the i steps with R
-// that remain evaluate a net of degree i at R.
-void subdivide(int n, const std::vector<Vec>& net, const std::array<Barycentric, 3>& sub, std::vector<Vec>& out,
-               Workspace& scratch) {
-    out.resize(point_count(n));
-    scratch.by_t.assign(net.begin(), net.end());  // the net after k steps with T, k = 0 first
-    for (int k = 0; k <= n; ++k) {
-        const int after_t = n - k;
-        scratch.by_s.assign(scratch.by_t.begin(), scratch.by_t.begin() + point_count(after_t));
-        for (int j = 0; j <= after_t; ++j) {
-            const int i = after_t - j;
-            // evaluate the degree-i net by_s at R: i steps
-            scratch.by_r.assign(scratch.by_s.begin(), scratch.by_s.begin() + point_count(i));
-            for (int m = i; m > 0; --m) step(m, scratch.by_r.data(), sub[0], scratch.by_r.data());
-            out[at_index(n, j, k)] = scratch.by_r[0];
-            if (i > 0) step(i, scratch.by_s.data(), sub[1], scratch.by_s.data());
-        }
-        if (after_t > 0) step(after_t, scratch.by_t.data(), sub[2], scratch.by_t.data());
-    }
-}
-
-// The net of the same surface over the triangle whose corner `corner` (0: r, 1: s, 2: t) moved to
-// the domain point x, the other two staying: c_ijk = d[...] with x in place of that corner's unit
-// point. Those are entries of the de Casteljau pyramid at x (level l = the exponent of x, the
-// entry with 0 in the replaced slot), so one pyramid, O(n^3), gives the whole net.
-void replace_corner(int n, const std::vector<Vec>& net, int corner, const Barycentric& x, std::vector<Vec>& out,
-                    std::vector<Vec>& level) {
-    out.resize(point_count(n));
-    level.assign(net.begin(), net.end());
-    for (int l = 0; l <= n; ++l) {
-        const int m = n - l;  // degree of the pyramid's level l; the other two exponents sum to m
-        const Vec* v = level.data();
-        switch (corner) {
-            case 0:  // c_(l, j, k) = level entry (0, j, k), j + k = m: the last of each row k
-                for (int k = 0; k <= m; ++k) out[at_index(n, m - k, k)] = v[at_index(m, m - k, k)];
-                break;
-            case 1:  // c_(i, l, k) = level entry (i, 0, k): the first of each row k
-                for (int k = 0; k <= m; ++k) out[at_index(n, l, k)] = v[at_index(m, 0, k)];
-                break;
-            default:  // c_(i, j, l) = level entry (i, j, 0): row 0
-                for (int j = 0; j <= m; ++j) out[at_index(n, j, l)] = v[j];
-                break;
-        }
-        if (m > 0) step(m, level.data(), x, level.data());
-    }
-}
-
-// The clipped candidate (R, S, T) (r >= r_min, s >= s_min, t >= t_min, eq. 6.5) in three corner
-// moves of O(n^3) each instead of the blossom per control point: the r corner to R, then the s
-// corner to S and the t corner to T, each written in the coordinates of the triangle so far.
-// False when a move is singular (a candidate that is a point); subdivide() serves then.
-bool clip_to(int n, const std::vector<Vec>& net, const std::array<Barycentric, 3>& sub, std::vector<Vec>& out,
-             Workspace& w) {
-    const Barycentric& R = sub[0];
-    const Barycentric& S = sub[1];
-    const Barycentric& T = sub[2];
-    if (!(R[0] > 1e-12)) return false;
-    // S in (R, e_s, e_t)
-    const double alpha = S[0] / R[0];
-    const Barycentric s_local{alpha, S[1] - alpha * R[1], S[2] - alpha * R[2]};
-    // T in (R, S, e_t): T_r = a R_r + b S_r, T_s = a R_s + b S_s
-    const double det = R[0] * S[1] - R[1] * S[0];
-    if (!(std::abs(det) > 1e-12)) return false;
-    const double a = (T[0] * S[1] - T[1] * S[0]) / det;
-    const double b = (R[0] * T[1] - R[1] * T[0]) / det;
-    const Barycentric t_local{a, b, T[2] - a * R[2] - b * S[2]};
-    replace_corner(n, net, 0, R, w.child, w.by_t);
-    replace_corner(n, w.child, 1, s_local, w.by_s, w.by_t);
-    replace_corner(n, w.by_s, 2, t_local, out, w.by_t);
-    return true;
-}
 
 // Smallest x where the convex hull of the points (c/n, y), y in [lo_c, hi_c] for each column c,
 // meets the axis y = 0 (§6.2.4, Fig. 6.8); values within eps of 0 count as 0 (a ray through a
@@ -233,11 +132,11 @@ enum class Side { r, s, t };
 std::array<std::size_t, 2> row_ends(Side side, int n, int row) {
         switch (side) {
         case Side::r:  // i = row: j + k = n - row, from (j = n - row, k = 0) to (j = 0, k = n - row)
-            return {at_index(n, n - row, 0), at_index(n, 0, n - row)};
+            return {net_index(n, n - row, 0), net_index(n, 0, n - row)};
         case Side::s:  // j = row: from k = 0 to k = n - row
-            return {at_index(n, row, 0), at_index(n, row, n - row)};
+            return {net_index(n, row, 0), net_index(n, row, n - row)};
         case Side::t:  // k = row: from j = 0 to j = n - row
-            return {at_index(n, 0, row), at_index(n, n - row, row)};
+            return {net_index(n, 0, row), net_index(n, n - row, row)};
     }
     return {0, 0};
 }
@@ -277,7 +176,7 @@ Minima clip(int n, const std::vector<Vec>& q, double extent, double eps) {
         std::fill(hi, hi + n + 1, -std::numeric_limits<double>::infinity());
         for (int k = 0; k <= n; ++k)
             for (int j = 0; j <= n - k; ++j) {
-                const Vec& p = q[at_index(n, j, k)];
+                const Vec& p = q[net_index(n, j, k)];
                 const double d = a * p[0] + b * p[1];
                 const int column = side == Side::r ? n - j - k : side == Side::s ? j : k;
                 lo[column] = std::min(lo[column], d);
@@ -299,7 +198,7 @@ struct Jet {
 Jet jet(int n, const std::vector<Vec>& net, const Barycentric& x, std::vector<Vec>& scratch) {
     scratch.assign(net.begin(), net.end());
     if (n == 0) return {scratch[0], {0, 0, 0}, {0, 0, 0}};
-    for (int m = n; m > 1; --m) step(m, scratch.data(), x, scratch.data());
+    for (int m = n; m > 1; --m) de_casteljau_step(m, scratch.data(), x, scratch.data());
     const Vec& pr = scratch[0];  // b_100
     const Vec& ps = scratch[1];  // b_010
     const Vec& pt = scratch[2];  // b_001
@@ -316,7 +215,7 @@ Jet jet(int n, const std::vector<Vec>& net, const Barycentric& x, std::vector<Ve
 
 std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, const ClippingOptions& options) {
     const int n = patch.degree();
-    const std::size_t count = point_count(n);
+    const std::size_t count = net_size(n);
     const RayFrame f = frame_of(ray);
     if (!(f.direction_length > 0) || !std::isfinite(f.direction_length)) return std::nullopt;
     thread_local Workspace w;
@@ -438,7 +337,7 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
                 // not on the ray yet: a wrong intersection (§6.3: the hulls reached the axis, the
                 // patch does not), or a grazing ray where Newton cannot polish. Clip on, finer.
                 if (candidate.tolerance > 1e-13 && size > 0) {
-                    if (!clip_to(n, w.original, corners, w.clipped, w)) subdivide(n, w.original, corners, w.clipped, w);
+                    subdivide_net(n, w.original, corners, w.clipped, w.nets);
                     push(w.clipped, corners, candidate.tolerance * 1e-3);
                 }
                 continue;
@@ -463,7 +362,7 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
             continue;
         }
 
-        if (!clip_to(n, net, clipped, w.clipped, w)) subdivide(n, net, clipped, w.clipped, w);
+        subdivide_net(n, net, clipped, w.clipped, w.nets);
         if (m.r + m.s + m.t >= 0.5) {
             // clipped enough: go on with the candidate
             push(w.clipped, corners, candidate.tolerance);
@@ -474,12 +373,13 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
         // stack last, to be visited first (a hit there prunes the others)
         const Barycentric r{1, 0, 0}, s{0, 1, 0}, t{0, 0, 1};
         const Barycentric rs{0.5, 0.5, 0}, st{0, 0.5, 0.5}, rt{0.5, 0, 0.5};
-        // (the middle one listed from rt, so that each corner has weight in its own slot: clip_to)
+        // (the middle one listed from rt: each corner has weight in its own slot, as the corner
+        // moves of subdivide_net need)
         const std::array<std::array<Barycentric, 3>, 4> quarters{{{r, rs, rt}, {rs, s, st}, {rt, st, t}, {rt, rs, st}}};
         std::array<double, 4> nearest{};
         const std::size_t first = w.stack.size();
         for (std::size_t c = 0; c < 4; ++c) {
-            if (!clip_to(n, w.clipped, quarters[c], w.quarter, w)) subdivide(n, w.clipped, quarters[c], w.quarter, w);
+            subdivide_net(n, w.clipped, quarters[c], w.quarter, w.nets);
             nearest[c] = std::numeric_limits<double>::infinity();
             for (const Vec& p : w.quarter) nearest[c] = std::min(nearest[c], p[2]);
             std::array<Barycentric, 3> child_corners;

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "de_casteljau.hpp"
+
 namespace sxk::bezier {
 namespace {
 
@@ -45,13 +47,9 @@ std::size_t TriangularPatch::index(int degree, int j, int k) {
 
 TriangularPatch TriangularPatch::step(const Barycentric& x) const {
     if (m_degree == 0) throw std::invalid_argument("TriangularPatch: a patch of degree 0 has no de Casteljau step");
-    const int n = m_degree - 1;
-    std::vector<Point> next(count(n));
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n - k; ++j)
-            next[index(n, j, k)] = combination(x[0], control_point(j, k), x[1], control_point(j + 1, k), x[2],
-                                               control_point(j, k + 1));
-    return TriangularPatch(n, std::move(next));
+    std::vector<Point> next(count(m_degree - 1));
+    de_casteljau_step(m_degree, m_points.data(), x, next.data());
+    return TriangularPatch(m_degree - 1, std::move(next));
 }
 
 TriangularPatch TriangularPatch::blossom(std::span<const Barycentric> arguments) const {
@@ -61,16 +59,15 @@ TriangularPatch TriangularPatch::blossom(std::span<const Barycentric> arguments)
 }
 
 Point TriangularPatch::evaluate(const Barycentric& at) const {
-    TriangularPatch result = *this;
-    while (result.degree() > 0) result = result.step(at);
-    return result.m_points[0];
+    std::vector<Point> net = m_points;
+    return evaluate_in_place(m_degree, net.data(), at);
 }
 
 Point TriangularPatch::derivative(const Barycentric& at, const Barycentric& direction) const {
     if (m_degree == 0) return {0, 0, 0};
-    TriangularPatch result = step(direction);
-    while (result.degree() > 0) result = result.step(at);
-    const Point& d = result.m_points[0];
+    std::vector<Point> net = m_points;
+    de_casteljau_step(m_degree, net.data(), direction, net.data());
+    const Point d = evaluate_in_place(m_degree - 1, net.data(), at);
     return {m_degree * d[0], m_degree * d[1], m_degree * d[2]};
 }
 
@@ -91,16 +88,9 @@ Point TriangularPatch::normal(const Barycentric& at) const {
 }
 
 TriangularPatch TriangularPatch::subdivided(const Barycentric& r, const Barycentric& s, const Barycentric& t) const {
-    std::vector<Point> points(count(m_degree));
-    std::vector<Barycentric> arguments;
-    for (int k = 0; k <= m_degree; ++k)
-        for (int j = 0; j <= m_degree - k; ++j) {
-            const int i = m_degree - j - k;
-            arguments.assign(static_cast<std::size_t>(i), r);
-            arguments.insert(arguments.end(), static_cast<std::size_t>(j), s);
-            arguments.insert(arguments.end(), static_cast<std::size_t>(k), t);
-            points[index(m_degree, j, k)] = blossom(arguments).m_points[0];
-        }
+    std::vector<Point> points;
+    NetScratch scratch;
+    subdivide_net(m_degree, m_points, {r, s, t}, points, scratch);
     return TriangularPatch(m_degree, std::move(points));
 }
 

@@ -1,0 +1,51 @@
+// De Casteljau on flat arrays of control points, without allocation: the kernels that
+// TriangularPatch (evaluation, subdivision) and Bézier clipping (the ray-frame nets) share.
+// Internal to the plug-in.
+//
+// A net of degree n holds (n+1)(n+2)/2 points b_ijk (i + j + k = n) in rows of constant k, j
+// running along each row: net_index(n, j, k) = k(n+1) - k(k-1)/2 + j, i = n - j - k.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "sxk/mesh.hpp"  // sxk::Point
+
+namespace sxk::bezier {
+
+using Barycentric = std::array<double, 3>;
+
+inline std::size_t net_size(int degree) { return static_cast<std::size_t>((degree + 1) * (degree + 2) / 2); }
+inline std::size_t net_index(int degree, int j, int k) {
+    return static_cast<std::size_t>(k * (degree + 1) - k * (k - 1) / 2 + j);
+}
+
+// One de Casteljau step of the net a (degree m >= 1) with respect to x (a point or a direction)
+// into b (degree m - 1): c_ijk = x_r b_(i+1)jk + x_s b_i(j+1)k + x_t b_ij(k+1). b may be a.
+void de_casteljau_step(int m, const Point* a, const Barycentric& x, Point* b);
+
+// The value at x of the net of degree n held in `net`, which the steps overwrite.
+Point evaluate_in_place(int n, Point* net, const Barycentric& x);
+
+// The net over the triangle whose corner `corner` (0: r, 1: s, 2: t) moved to the domain point
+// x, the other two staying: one de Casteljau pyramid at x, O(n^3) (the new net's points are the
+// pyramid's entries with 0 in the moved corner's slot). `level` is scratch space.
+void move_corner(int n, const std::vector<Point>& net, int corner, const Barycentric& x, std::vector<Point>& out,
+                 std::vector<Point>& level);
+
+// Scratch space for subdivide_net, kept by callers that subdivide often.
+struct NetScratch {
+    std::vector<Point> a, b, c;
+};
+
+// The net over the sub-triangle (R, S, T) of the domain (eq. 4.33): c_ijk = b[R^i, S^j, T^k],
+// R, S, T anywhere (outside the domain too). By three corner moves of O(n^3) each where every
+// move is a convex combination (r to R, then s to S and t to T, each written in the coordinates
+// of the triangle so far; true of the candidates Bézier clipping keeps and of three of the four
+// quarters of a split); otherwise by the blossom directly, sharing the steps with T among all
+// c_ijk of one k and the steps with S among those of one (j, k).
+void subdivide_net(int n, const std::vector<Point>& net, const std::array<Barycentric, 3>& sub,
+                   std::vector<Point>& out, NetScratch& scratch);
+
+}  // namespace sxk::bezier
