@@ -130,7 +130,7 @@ double hull_minimum(int n, const double* lo, const double* hi, double eps) {
 enum class Side { r, s, t };
 
 std::array<std::size_t, 2> row_ends(Side side, int n, int row) {
-        switch (side) {
+    switch (side) {
         case Side::r:  // i = row: j + k = n - row, from (j = n - row, k = 0) to (j = 0, k = n - row)
             return {net_index(n, n - row, 0), net_index(n, 0, n - row)};
         case Side::s:  // j = row: from k = 0 to k = n - row
@@ -146,7 +146,7 @@ std::array<double, 2> line_normal(Side side, int n, const std::vector<Vec>& q, d
     for (int row = 0; row < n; ++row) {
         const auto [from, to] = row_ends(side, n, row);
         const double dx = q[to][0] - q[from][0], dy = q[to][1] - q[from][1];
-        const double length = std::hypot(dx, dy);
+        const double length = std::sqrt(dx * dx + dy * dy);
         if (length > 1e-12 * extent && length > 0) return {-dy / length, dx / length};
     }
     return {1, 0};
@@ -184,6 +184,8 @@ Minima clip(int n, const std::vector<Vec>& q, double extent, double eps) {
             }
         const double m = hull_minimum(n, lo, hi, eps);
         (side == Side::r ? minima.r : side == Side::s ? minima.s : minima.t) = m;
+        // the ray misses: the other sides cannot change that
+        if (!(m <= 1 + 1e-6)) return {m, m, m};
     }
     return minima;
 }

@@ -1,0 +1,156 @@
+#include "mesh_surface.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "sxk/quality.hpp"
+
+namespace sxk::bezier {
+
+namespace {
+
+// The vertices of a simplex in an order of its orientation: the canonical (sorted) order, with
+// the first two swapped when the sign is negative (as the writers orient faces).
+std::array<VertexId, 4> oriented_vertices(const Simplex& simplex) {
+    std::array<VertexId, 4> vertices{invalid_id, invalid_id, invalid_id, invalid_id};
+    for (int j = 0; j < simplex.count(); ++j)
+        vertices[static_cast<std::size_t>(j)] = simplex.vertex(j);
+    if (simplex.sign() < 0)
+        std::swap(vertices[0], vertices[1]);
+    return vertices;
+}
+
+double normalised_quality(const Mesh& mesh, ElementId t, Positions positions) {
+    // the thesis aspect ratio of the regular tetrahedron and of the equilateral triangle
+    const double regular =
+        mesh.topological_dimension() == 3 ? std::sqrt(2.0 / 3.0) : std::sqrt(3.0) / 2.0;
+    const double ratio = aspect_ratio(element_points(mesh, t, positions)) / regular;
+    return std::isfinite(ratio) ? std::clamp(ratio, 0.0, 1.0) : 0.0;
+}
+
+// A boundary face as the set of its reference positions (sorted; unused slots stay zero), so
+// that the two sides of a cut, whose vertices are distinct copies at the same points, compare
+// equal.
+using PositionKey = std::array<Point, 3>;
+
+PositionKey position_key(const Mesh& mesh, const Simplex& face) {
+    PositionKey key{};
+    for (int j = 0; j < face.count(); ++j)
+        key[static_cast<std::size_t>(j)] = mesh.reference(face.vertex(j));
+    std::sort(key.begin(), key.begin() + face.count());
+    return key;
+}
+
+// Which boundary faces (by position in `boundary`, mesh.boundary_faces()) are on a cut: they
+// coincide with another one, or carry the cut label.
+std::vector<bool> cut_boundary_faces(const Mesh& mesh, const std::vector<FaceId>& boundary,
+                                     const std::optional<int>& cut_label) {
+    std::vector<std::pair<PositionKey, std::size_t>> keyed;
+    keyed.reserve(boundary.size());
+    for (std::size_t index = 0; index < boundary.size(); ++index)
+        keyed.emplace_back(position_key(mesh, mesh.face_simplex(boundary[index])), index);
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<bool> cut(boundary.size(), false);
+    for (std::size_t first = 0; first < keyed.size();) {
+        std::size_t last = first + 1;
+        while (last < keyed.size() && keyed[last].first == keyed[first].first)
+            ++last;
+        if (last - first > 1)
+            for (std::size_t run = first; run < last; ++run)
+                cut[keyed[run].second] = true;
+        first = last;
+    }
+    if (cut_label && !mesh.face_labels().empty())
+        for (std::size_t index = 0; index < boundary.size(); ++index) {
+            // face labels are keyed by the vertex set, sign +1
+            const Simplex face = mesh.face_simplex(boundary[index]);
+            const auto label = mesh.face_labels().find(Simplex(+1, face.vertices()));
+            if (label != mesh.face_labels().end() && label->second == *cut_label)
+                cut[index] = true;
+        }
+    return cut;
+}
+
+// Adds the vertices of `used` (indexed by VertexId) to the soup in increasing id order and
+// returns their new numbers.
+std::vector<std::uint32_t> add_used_vertices(const Mesh& mesh, const std::vector<bool>& used,
+                                             Positions positions, TriangleSoup& soup) {
+    std::vector<std::uint32_t> renumbered(mesh.vertex_count(), invalid_id);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        if (used[v]) {
+            renumbered[v] = static_cast<std::uint32_t>(soup.vertices.size());
+            soup.vertices.push_back(positions == Positions::reference ? mesh.reference(v)
+                                                                      : mesh.deformed(v));
+        }
+    return renumbered;
+}
+
+MeshSurface tetrahedral_surface(const Mesh& mesh, const MeshSurfaceOptions& options) {
+    const Positions positions = options.positions;
+    const std::vector<FaceId> boundary = mesh.boundary_faces();
+    const std::vector<bool> cut = cut_boundary_faces(mesh, boundary, options.cut_label);
+    std::vector<bool> used(mesh.vertex_count(), false);
+    for (FaceId f : boundary) {
+        const Simplex face = mesh.face_simplex(f);  // named: vertices() views into it
+        for (VertexId v : face.vertices())
+            used[v] = true;
+    }
+    MeshSurface surface;
+    const std::vector<std::uint32_t> renumbered =
+        add_used_vertices(mesh, used, positions, surface.soup);
+    surface.soup.triangles.reserve(boundary.size());
+    surface.keys.reserve(boundary.size());
+    for (std::size_t index = 0; index < boundary.size(); ++index) {
+        const FaceId f = boundary[index];
+        const auto v = oriented_vertices(mesh.face_simplex(f));
+        surface.soup.triangles.push_back({renumbered[v[0]], renumbered[v[1]], renumbered[v[2]]});
+        const ElementId t = mesh.face_element(f);
+        surface.keys.push_back(
+            {t, normalised_quality(mesh, t, positions), mesh.label(t), cut[index]});
+    }
+    return surface;
+}
+
+MeshSurface triangle_surface(const Mesh& mesh, const MeshSurfaceOptions& options) {
+    const Positions positions = options.positions;
+    // a cut of a triangle mesh is a pair of coinciding boundary edges: flag their triangles
+    const std::vector<FaceId> boundary = mesh.boundary_faces();
+    const std::vector<bool> cut_edge = cut_boundary_faces(mesh, boundary, options.cut_label);
+    std::vector<bool> cut_element(mesh.element_capacity(), false);
+    for (std::size_t index = 0; index < boundary.size(); ++index)
+        if (cut_edge[index])
+            cut_element[mesh.face_element(boundary[index])] = true;
+
+    std::vector<bool> used(mesh.vertex_count(), false);
+    for (ElementId t : elements(mesh))
+        for (VertexId v : mesh.simplex(t).vertices())
+            used[v] = true;
+    MeshSurface surface;
+    const std::vector<std::uint32_t> renumbered =
+        add_used_vertices(mesh, used, positions, surface.soup);
+    surface.soup.triangles.reserve(mesh.element_count());
+    surface.keys.reserve(mesh.element_count());
+    for (ElementId t : elements(mesh)) {
+        const auto v = oriented_vertices(mesh.simplex(t));
+        surface.soup.triangles.push_back({renumbered[v[0]], renumbered[v[1]], renumbered[v[2]]});
+        surface.keys.push_back(
+            {t, normalised_quality(mesh, t, positions), mesh.label(t), cut_element[t]});
+    }
+    return surface;
+}
+
+}  // namespace
+
+std::size_t MeshSurface::cut_count() const {
+    return static_cast<std::size_t>(std::count_if(
+        keys.begin(), keys.end(), [](const SurfaceTriangleKeys& k) { return k.cut; }));
+}
+
+MeshSurface mesh_surface(const Mesh& mesh, const MeshSurfaceOptions& options) {
+    return mesh.topological_dimension() == 3 ? tetrahedral_surface(mesh, options)
+                                             : triangle_surface(mesh, options);
+}
+
+}  // namespace sxk::bezier

@@ -1,0 +1,81 @@
+// A ray-tracing scene over Embree 3: triangular Bézier patches registered as Embree user
+// geometry (Embree's BVH over flatness-subdivided sub-patches replaces Roth's bounding sphere
+// hierarchy, §6.4; each leaf is intersected by Bézier clipping), or plain triangles (Embree's
+// native triangles: meshes, and the tessellated patches `--tessellate` and the benchmark
+// compare with). No Embree type appears here: embree_device.hpp is the only header that
+// includes Embree, and only .cpp files include it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "bezier_clipping.hpp"
+#include "ray.hpp"
+#include "triangular_patch.hpp"
+
+namespace sxk::bezier {
+
+struct Box {
+    Point lower{}, upper{};
+    double diagonal() const;
+};
+
+// A hit in a scene: primitive is the index of the patch (patch scenes) or of the triangle
+// (triangle scenes) in the order given; `at` is barycentric in that primitive; the normal is
+// unit and not turned toward the ray.
+struct SceneHit {
+    double t = 0;
+    std::uint32_t primitive = 0;
+    Barycentric at{};
+    Point normal{};
+};
+
+struct PatchSceneOptions {
+    // Roth's height criterion (§6.4): a patch is split into four until the extent of its control
+    // points along the normal of its corner plane is below flatness x the scene's box diagonal.
+    double flatness = 1e-2;
+    // Bound on the split depth (4^depth sub-patches per patch at most).
+    int max_depth = 8;
+    ClippingOptions clipping{};
+};
+
+struct TriangleSoup {
+    std::vector<Point> vertices;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+class Scene {
+public:
+    static Scene from_patches(std::vector<TriangularPatch> patches,
+                              const PatchSceneOptions& options = {});
+    static Scene from_triangles(TriangleSoup soup);
+    ~Scene();
+    Scene(Scene&&) noexcept;
+    Scene& operator=(Scene&&) noexcept;
+
+    // The nearest hit in [ray.t_near, ray.t_far]; thread-safe (renders call it from TBB).
+    std::optional<SceneHit> intersect(const Ray& ray) const;
+    // Whether anything lies on the ray in [t_near, t_far] (shadow rays).
+    bool occluded(const Ray& ray) const;
+
+    Box bounds() const;
+    std::size_t primitive_count() const;  // patches or triangles
+    std::size_t leaf_count() const;       // Embree primitives: sub-patches or triangles
+
+private:
+    struct Impl;
+    explicit Scene(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m_impl;
+};
+
+// Uniform tessellation: each patch's domain cut into segments^2 triangles, vertices evaluated on
+// the patch (triangle i belongs to patch i / segments^2).
+TriangleSoup tessellate(const std::vector<TriangularPatch>& patches, int segments);
+// The smallest segment count whose tessellation deviates at most max_error from the patches
+// (measured by sampling each small triangle's interior against the flat triangle).
+int segments_for_error(const std::vector<TriangularPatch>& patches, double max_error);
+
+}  // namespace sxk::bezier

@@ -1,0 +1,645 @@
+#include "render_plugin.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <new>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <variant>
+#include <vector>
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "mesh_surface.hpp"
+#include "patch_scene.hpp"
+#include "read_bpt.hpp"
+#include "sxk/io.hpp"
+#include "triangular_patch.hpp"
+
+namespace sxk::bezier {
+
+namespace {
+
+double linear_from_srgb(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+Colour linear(const Colour& srgb) {
+    return {linear_from_srgb(srgb[0]), linear_from_srgb(srgb[1]), linear_from_srgb(srgb[2])};
+}
+
+}  // namespace
+
+Colour quality_colour(double quality) {
+    // red, orange, yellow, green, blue at 0, 1/4, 1/2, 3/4, 1 (sRGB); interpolated in sRGB so
+    // that the steps look even
+    constexpr std::array<Colour, 5> stops{{{0.84, 0.09, 0.11},
+                                           {0.97, 0.55, 0.13},
+                                           {0.95, 0.88, 0.25},
+                                           {0.30, 0.72, 0.30},
+                                           {0.20, 0.45, 0.85}}};
+    const double position = std::clamp(std::isnan(quality) ? 0.0 : quality, 0.0, 1.0) * 4.0;
+    const std::size_t lower = std::min<std::size_t>(3, static_cast<std::size_t>(position));
+    const double w = position - static_cast<double>(lower);
+    Colour srgb{};
+    for (std::size_t c = 0; c < 3; ++c)
+        srgb[c] = (1 - w) * stops[lower][c] + w * stops[lower + 1][c];
+    return linear(srgb);
+}
+
+Colour label_colour(int label) {
+    // Tableau 10 with its pink and purple replaced (too close to the magenta of cuts) and its
+    // grey darkened (too close to the plain grey), sRGB
+    constexpr std::array<Colour, 10> palette{{{0.31, 0.47, 0.65},
+                                              {0.95, 0.56, 0.17},
+                                              {0.88, 0.34, 0.35},
+                                              {0.46, 0.72, 0.70},
+                                              {0.35, 0.63, 0.31},
+                                              {0.93, 0.79, 0.28},
+                                              {0.61, 0.46, 0.37},
+                                              {0.63, 0.63, 0.19},
+                                              {0.17, 0.24, 0.55},
+                                              {0.45, 0.42, 0.40}}};
+    const int size = static_cast<int>(palette.size());
+    return linear(palette[static_cast<std::size_t>((label % size + size) % size)]);
+}
+
+Colour cut_colour() {
+    return linear({0.93, 0.10, 0.93});
+}
+
+Colour plain_colour() {
+    return linear({0.75, 0.75, 0.75});
+}
+
+namespace {
+
+constexpr int max_image_side = 16384;
+constexpr int max_segments = 512;
+constexpr const char* known_inputs = ".bpt .mesh .msh .node .ele .off .obj";
+
+// Default views: patch files and 3D meshes from the front-left and above (z up, as the teapot
+// is), planar meshes from +z with y up.
+constexpr Point default_view{1, -2, 1.2};
+constexpr Point default_up{0, 0, 1};
+constexpr Point planar_view{0, 0, 1};
+constexpr Point planar_up{0, 1, 0};
+
+struct CommandOptions {
+    std::string input;
+    std::string output;
+    std::string size = "640x480";
+    std::string camera;  // empty: frame() the scene's box
+    double fov = 40;
+    bool tessellate = false;
+    int segments = 0;  // when not given: default_segments
+    double flatness = PatchSceneOptions{}.flatness;
+    std::string colour;  // empty: quality for meshes, plain for patches
+    std::optional<int> cut_label;
+    bool json = false;
+    // which of the above were given (the patch-only options refuse meshes)
+    bool segments_given = false, flatness_given = false;
+};
+
+bool parse_number(std::string_view text, double& value) {
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return !text.empty() && error == std::errc() && end == text.data() + text.size() &&
+           std::isfinite(value);
+}
+
+// "WxH" as two whole numbers in [1, max_image_side]; nullopt otherwise.
+std::optional<std::array<int, 2>> parse_size(std::string_view text) {
+    const std::size_t x = text.find('x');
+    if (x == std::string_view::npos)
+        return std::nullopt;
+    std::array<int, 2> size{};
+    const std::array<std::string_view, 2> parts{text.substr(0, x), text.substr(x + 1)};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const std::string_view part = parts[i];
+        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), size[i]);
+        if (part.empty() || error != std::errc() || end != part.data() + part.size() ||
+            size[i] < 1 || size[i] > max_image_side)
+            return std::nullopt;
+    }
+    return size;
+}
+
+Point minus(const Point& a, const Point& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+Point cross(const Point& a, const Point& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+bool is_zero(const Point& a) {
+    return a[0] == 0 && a[1] == 0 && a[2] == 0;
+}
+
+// "ex,ey,ez,tx,ty,tz,ux,uy,uz" as a camera (fov left at its default); the reason otherwise.
+std::variant<Camera, std::string> parse_camera(const std::string& text) {
+    std::vector<double> numbers;
+    for (std::size_t begin = 0;;) {
+        const std::size_t comma = text.find(',', begin);
+        const std::string_view word = std::string_view(text).substr(
+            begin, comma == std::string::npos ? std::string::npos : comma - begin);
+        double value = 0;
+        if (!parse_number(word, value))
+            return "'" + text + "' is not eye,target,up (nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)";
+        numbers.push_back(value);
+        if (comma == std::string::npos)
+            break;
+        begin = comma + 1;
+    }
+    if (numbers.size() != 9)
+        return "'" + text + "' is not eye,target,up (nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)";
+    Camera camera;
+    camera.eye = {numbers[0], numbers[1], numbers[2]};
+    camera.target = {numbers[3], numbers[4], numbers[5]};
+    camera.up = {numbers[6], numbers[7], numbers[8]};
+    if (camera.eye == camera.target)
+        return "'" + text + "': eye and target coincide";
+    if (is_zero(cross(minus(camera.target, camera.eye), camera.up)))
+        return "'" + text + "': up is zero or parallel to the view direction";
+    return camera;
+}
+
+// A CLI11 check: a finite number in the interval from `low` to `high`, each end open or closed;
+// `interval` names it in the message.
+CLI::Validator number_in(double low, bool low_closed, double high, bool high_closed,
+                         const std::string& interval) {
+    return CLI::Validator(
+        [=](std::string& text) {
+            double value = 0;
+            if (!parse_number(text, value))
+                return "'" + text + "' is not a number";
+            if (!(low_closed ? value >= low : value > low) ||
+                !(high_closed ? value <= high : value < high))
+                return "'" + text + "' is not in " + interval;
+            return std::string();
+        },
+        interval);
+}
+
+CLI::Validator whole_number_in(int low, int high) {
+    const std::string interval = std::to_string(low) + ".." + std::to_string(high);
+    return CLI::Validator(
+        [=](std::string& text) {
+            int value = 0;
+            const auto [end, error] =
+                std::from_chars(text.data(), text.data() + text.size(), value);
+            if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
+                value < low || value > high)
+                return "'" + text + "' is not a whole number in " + interval;
+            return std::string();
+        },
+        interval);
+}
+
+// Parses the command's arguments (without INPUT when `with_input` is false: run_on_mesh);
+// nullopt with `code` set when the command is done already (--help: 0; usage error: 2).
+std::optional<CommandOptions> parse(std::span<const std::string> args, bool with_input,
+                                    std::ostream& out, std::ostream& err, int& code) {
+    CommandOptions options;
+    CLI::App app(
+        "Renders triangular Bézier patches (.bpt, Roth's thesis ch. 6: Bézier clipping in an "
+        "Embree BVH) or the boundary of a mesh, coloured by element quality or label, to a "
+        "PNG picture",
+        "sxk render");
+    if (with_input)
+        app.add_option("INPUT", options.input,
+                       "Patch file (.bpt) or mesh file (.mesh .msh .node .ele .off .obj)")
+            ->required();
+    app.add_option("OUT", options.output, "Output picture (.png)")->required();
+    app.add_option("--size", options.size,
+                   "Picture size WxH in pixels, each 1.." + std::to_string(max_image_side))
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return parse_size(text) ? std::string()
+                                        : "'" + text + "' is not WxH (two whole numbers 1.." +
+                                              std::to_string(max_image_side) + ", e.g. 640x480)";
+            },
+            "WxH"))
+        ->capture_default_str();
+    app.add_option("--camera", options.camera,
+                   "Camera eye,target,up as nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz (default: the "
+                   "whole scene framed from direction (1,-2,1.2), z up; planar meshes from +z)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                const auto camera = parse_camera(text);
+                return std::holds_alternative<std::string>(camera) ? std::get<std::string>(camera)
+                                                                   : std::string();
+            },
+            "EYE,TARGET,UP"));
+    app.add_option("--fov", options.fov, "Vertical field of view in degrees, 0 < DEG < 180")
+        ->check(number_in(0, false, 180, false, "(0, 180)"))
+        ->capture_default_str();
+    app.add_flag("--tessellate", options.tessellate,
+                 "Patches only: render a uniform tessellation as Embree triangles instead of "
+                 "clipping the patches");
+    app.add_option("--segments", options.segments,
+                   "Patches with --tessellate: each patch's domain edge cut into N (N^2 triangles "
+                   "per patch); default: the smallest N whose tessellation deviates at most "
+                   "1e-4 x the box diagonal from the patches")
+        ->check(whole_number_in(1, max_segments));
+    app.add_option("--flatness", options.flatness,
+                   "Patches: split into sub-patches until flatter than F x the box diagonal "
+                   "(Roth's height criterion), 0 < F <= 1")
+        ->check(number_in(0, false, 1, true, "(0, 1]"))
+        ->capture_default_str();
+    app.add_option("--colour", options.colour,
+                   "quality (meshes' default: element aspect ratio, red bad -> blue good), label "
+                   "(a palette by element label; patches: by .bpt patch) or plain (grey; patches' "
+                   "default); faces on a cut are magenta")
+        ->check(CLI::IsMember({"quality", "label", "plain"}));
+    int cut_label = 0;
+    app.add_option("--cut-label", cut_label,
+                   "Meshes: boundary faces with this face label are drawn as cut faces too (cut "
+                   "faces are otherwise found as boundary faces that coincide)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                int value = 0;
+                const auto [end, error] =
+                    std::from_chars(text.data(), text.data() + text.size(), value);
+                return !text.empty() && error == std::errc() && end == text.data() + text.size()
+                           ? std::string()
+                           : "'" + text + "' is not a whole number";
+            },
+            "LABEL"));
+    app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
+    try {
+        // CLI11 takes them last-first
+        std::vector<std::string> reversed(args.rbegin(), args.rend());
+        app.parse(reversed);
+    } catch (const CLI::ParseError& error) {
+        if (error.get_exit_code() == 0) {  // --help: print the usage, succeed
+            out << app.help();
+            code = 0;
+            return std::nullopt;
+        }
+        err << "sxk: render: " << error.what()
+            << "\nRun 'sxk render --help' for more information.\n";
+        code = 2;
+        return std::nullopt;
+    }
+    if (app.count("--cut-label") > 0)
+        options.cut_label = cut_label;
+    options.segments_given = app.count("--segments") > 0;
+    options.flatness_given = app.count("--flatness") > 0;
+    return options;
+}
+
+std::string lowercase_extension(const std::string& file) {
+    std::string extension = std::filesystem::path(file).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+// The output is checked before anything is read or rendered: a wrong name is a usage error
+// (exit 2), not a failure after a long render. Only write_png failing later is exit 1.
+bool check_output(const std::string& output, std::ostream& err) {
+    if (lowercase_extension(output) != ".png") {
+        err << "sxk: " << output << ":0: unknown output format (known: .png)\n";
+        return false;
+    }
+    std::filesystem::path folder = std::filesystem::path(output).parent_path();
+    if (folder.empty())
+        folder = ".";
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) {
+        err << "sxk: " << output << ":0: cannot write: no such folder " << folder.string() << '\n';
+        return false;
+    }
+    if (::access(folder.c_str(), W_OK) != 0) {
+        err << "sxk: " << output << ":0: cannot write: folder " << folder.string()
+            << " is not writable\n";
+        return false;
+    }
+    return true;
+}
+
+// What a render draws, with the colour of a hit and the summary's words.
+struct Drawing {
+    Scene scene;
+    std::string scheme;  // the --colour in effect
+    std::function<Colour(const SceneHit&)> colour;
+    nlohmann::ordered_json facts;  // kind-specific JSON keys
+    std::string summary;           // e.g. "64 patches"
+};
+
+using Seconds = std::chrono::duration<double>;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return Seconds(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string plural(std::size_t count, const char* one, const char* many) {
+    return std::to_string(count) + ' ' + (count == 1 ? one : many);
+}
+
+// The box of the patches' control points, which holds the patches (convex hull property).
+Box control_point_box(const std::vector<TriangularPatch>& patches) {
+    Box box{patches.front().control_points().front(), patches.front().control_points().front()};
+    for (const TriangularPatch& patch : patches)
+        for (const Point& p : patch.control_points())
+            for (std::size_t c = 0; c < 3; ++c) {
+                box.lower[c] = std::min(box.lower[c], p[c]);
+                box.upper[c] = std::max(box.upper[c], p[c]);
+            }
+    return box;
+}
+
+// The default --segments: the smallest count whose tessellation deviates at most
+// default_tessellation_error x the box diagonal from the patches. Not the tolerance the clipped
+// hits are checked to (1e-7 x the diagonal, tests/plugins/bezier_mask_test.cpp): the teapot would
+// need about 1600 segments there, 64 x 1600^2 triangles, and segments_for_error minutes to
+// measure them. 1e-4 of the diagonal is a tenth of a pixel in a picture 1000 pixels across that
+// shows the whole scene.
+constexpr double default_tessellation_error = 1e-4;
+
+int default_segments(const std::vector<TriangularPatch>& patches) {
+    const double error = default_tessellation_error * control_point_box(patches).diagonal();
+    return std::min(max_segments, segments_for_error(patches, error));
+}
+
+// The patch file's scene; nullopt when it cannot be read (the message is printed).
+std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream& err) {
+    std::vector<TensorPatch> tensors;
+    try {
+        tensors = read_bpt(options.input);
+    } catch (const InputError& error) {
+        err << "sxk: " << error.what() << '\n';
+        return std::nullopt;
+    }
+    std::vector<TriangularPatch> patches;
+    patches.reserve(2 * tensors.size());
+    for (const TensorPatch& tensor : tensors)
+        for (TriangularPatch& half : to_triangular(tensor))
+            patches.push_back(std::move(half));
+
+    PatchSceneOptions scene_options;
+    scene_options.flatness = options.flatness;
+    const bool by_label = options.colour == "label";
+    nlohmann::ordered_json facts;
+    facts["kind"] = options.tessellate ? "tessellated patches" : "patches";
+    facts["patches"] = patches.size();
+    facts["bpt_patches"] = tensors.size();
+    if (!options.tessellate) {
+        facts["flatness"] = options.flatness;
+        Scene scene = Scene::from_patches(patches, scene_options);
+        // primitives are the triangular patches, two per .bpt patch (to_triangular)
+        auto colour = [by_label](const SceneHit& hit) {
+            return by_label ? label_colour(static_cast<int>(hit.primitive / 2)) : plain_colour();
+        };
+        return Drawing{std::move(scene), options.colour.empty() ? "plain" : options.colour, colour,
+                       facts, plural(patches.size(), "patch", "patches")};
+    }
+    const int segments = options.segments_given ? options.segments : default_segments(patches);
+    facts["segments"] = segments;
+    TriangleSoup soup = tessellate(patches, segments);
+    facts["triangles"] = soup.triangles.size();
+    const std::size_t per_patch =
+        static_cast<std::size_t>(segments) * static_cast<std::size_t>(segments);
+    Scene scene = Scene::from_triangles(std::move(soup));
+    auto colour = [by_label, per_patch](const SceneHit& hit) {
+        return by_label ? label_colour(static_cast<int>(hit.primitive / per_patch / 2))
+                        : plain_colour();
+    };
+    return Drawing{std::move(scene), options.colour.empty() ? "plain" : options.colour, colour,
+                   facts,
+                   plural(patches.size(), "patch", "patches") + " tessellated (" +
+                       std::to_string(segments) + " segments)"};
+}
+
+Drawing mesh_drawing(const Mesh& mesh, const CommandOptions& options) {
+    MeshSurfaceOptions surface_options;
+    surface_options.cut_label = options.cut_label;
+    MeshSurface surface = mesh_surface(mesh, surface_options);
+    nlohmann::ordered_json facts;
+    facts["kind"] = "mesh";
+    facts["element_kind"] = mesh.topological_dimension() == 3 ? "tetrahedron" : "triangle";
+    facts["elements"] = mesh.element_count();
+    facts["triangles"] = surface.soup.triangles.size();
+    facts["cut_triangles"] = surface.cut_count();
+    std::string summary =
+        plural(surface.soup.triangles.size(),
+               mesh.topological_dimension() == 3 ? "boundary triangle" : "triangle",
+               mesh.topological_dimension() == 3 ? "boundary triangles" : "triangles") +
+        " (" + std::to_string(surface.cut_count()) + " on cuts)";
+    const std::string scheme = options.colour.empty() ? "quality" : options.colour;
+    std::vector<SurfaceTriangleKeys> keys = std::move(surface.keys);
+    Scene scene = Scene::from_triangles(std::move(surface.soup));
+    auto colour = [scheme, keys = std::move(keys)](const SceneHit& hit) {
+        const SurfaceTriangleKeys& key = keys[hit.primitive];
+        if (key.cut)
+            return cut_colour();
+        if (scheme == "quality")
+            return quality_colour(key.quality);
+        if (scheme == "label")
+            return label_colour(key.label);
+        return plain_colour();
+    };
+    return Drawing{std::move(scene), scheme, colour, facts, summary};
+}
+
+nlohmann::ordered_json point_json(const Point& p) {
+    return {p[0], p[1], p[2]};
+}
+
+// Renders, writes and reports; the drawing is made. Returns the exit code.
+int draw(const CommandOptions& options, Drawing& drawing, bool planar,
+         double read_and_build_seconds, std::ostream& out, std::ostream& err) {
+    const std::array<int, 2> size = *parse_size(options.size);
+    Camera camera;
+    if (options.camera.empty()) {
+        camera = frame(drawing.scene.bounds(), planar ? planar_view : default_view,
+                       planar ? planar_up : default_up, options.fov);
+    } else {
+        camera = std::get<Camera>(parse_camera(options.camera));
+    }
+    camera.fov_degrees = options.fov;
+
+    Shading shading;
+    shading.colour = drawing.colour;
+    const auto start = std::chrono::steady_clock::now();
+    const Image image = render(drawing.scene, camera, size[0], size[1], shading);
+    const double render_seconds = seconds_since(start);
+    try {
+        write_png(options.output, image);
+    } catch (const std::exception& error) {
+        // write_png says "cannot write FILE: why"; FILE is already in front
+        std::string why = error.what();
+        const std::string named = "cannot write " + options.output + ": ";
+        if (why.rfind(named, 0) == 0)
+            why = "cannot write: " + why.substr(named.size());
+        err << "sxk: " << options.output << ":0: " << why << '\n';
+        return 1;
+    }
+
+    const double total = read_and_build_seconds + render_seconds;
+    if (options.json) {
+        nlohmann::ordered_json json;
+        json["input"] = options.input;
+        json["output"] = options.output;
+        json["width"] = size[0];
+        json["height"] = size[1];
+        for (const auto& [key, value] : drawing.facts.items())
+            json[key] = value;
+        json["primitives"] = drawing.scene.primitive_count();
+        json["leaves"] = drawing.scene.leaf_count();
+        json["colour"] = drawing.scheme;
+        nlohmann::ordered_json camera_json;
+        camera_json["eye"] = point_json(camera.eye);
+        camera_json["target"] = point_json(camera.target);
+        camera_json["up"] = point_json(camera.up);
+        camera_json["fov"] = camera.fov_degrees;
+        json["camera"] = camera_json;
+        nlohmann::ordered_json seconds;
+        seconds["read_and_build"] = read_and_build_seconds;
+        seconds["render"] = render_seconds;
+        seconds["total"] = total;
+        json["seconds"] = seconds;
+        out << json.dump(2) << '\n';
+        return 0;
+    }
+    char time[32];
+    std::snprintf(time, sizeof time, "%.2f s", total);
+    out << options.input << " -> " << options.output << ": " << size[0] << 'x' << size[1] << ", "
+        << drawing.summary << ", " << plural(drawing.scene.leaf_count(), "leaf", "leaves") << ", "
+        << time << '\n';
+    return 0;
+}
+
+// Options that do not fit the input's kind: a usage error, found before anything is read.
+bool refuse_options_for(const CommandOptions& options, bool patches, std::ostream& err) {
+    std::string why;
+    if (patches && options.colour == "quality") {
+        why = "--colour quality needs a mesh; " + options.input + " holds patches";
+    } else if (patches && options.cut_label) {
+        why = "--cut-label needs a mesh; " + options.input + " holds patches";
+    } else if (!patches) {
+        const char* given = options.tessellate       ? "--tessellate"
+                            : options.segments_given ? "--segments"
+                            : options.flatness_given ? "--flatness"
+                                                     : nullptr;
+        if (given)
+            why = std::string(given) + " applies to patch files (.bpt); " + options.input +
+                  " is a mesh";
+    }
+    if (why.empty())
+        return false;
+    err << "sxk: render: " << why << "\nRun 'sxk render --help' for more information.\n";
+    return true;
+}
+
+int render_mesh(const Mesh& mesh, const CommandOptions& options,
+                std::chrono::steady_clock::time_point start, std::ostream& out, std::ostream& err) {
+    if (mesh.element_count() == 0) {
+        err << "sxk: " << options.input << ": the mesh has no elements to draw\n";
+        return 1;
+    }
+    Drawing drawing = mesh_drawing(mesh, options);
+    return draw(options, drawing, mesh.ambient_dimension() == 2, seconds_since(start), out, err);
+}
+
+std::optional<Mesh> load(const std::string& file, std::ostream& err) {
+    try {
+        return read_mesh(file);
+    } catch (const InputError& error) {
+        err << "sxk: " << error.what() << '\n';
+    } catch (const std::bad_alloc&) {
+        err << "sxk: " << file << ":0: out of memory while reading\n";
+    } catch (const std::exception& error) {
+        err << "sxk: " << file << ":0: " << error.what() << '\n';
+    }
+    return std::nullopt;
+}
+
+class RenderCommand final : public PluginCommand {
+public:
+    std::string_view name() const override { return "render"; }
+    std::string_view summary() const override {
+        return "ray-trace Bézier patches (.bpt) or a mesh's boundary to a PNG picture";
+    }
+
+    int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) override {
+        int code = 0;
+        const std::optional<CommandOptions> options = parse(args, true, out, err, code);
+        if (!options)
+            return code;
+        const bool patches = lowercase_extension(options->input) == ".bpt";
+        if (!patches && !format_from_extension(options->input)) {
+            err << "sxk: " << options->input << ":0: unknown input format (known: " << known_inputs
+                << ")\n";
+            return 2;
+        }
+        if (refuse_options_for(*options, patches, err) || !check_output(options->output, err))
+            return 2;
+        const auto start = std::chrono::steady_clock::now();
+        try {
+            if (patches) {
+                std::optional<Drawing> drawing = patch_drawing(*options, err);
+                if (!drawing)
+                    return 2;
+                return draw(*options, *drawing, false, seconds_since(start), out, err);
+            }
+            const std::optional<Mesh> mesh = load(options->input, err);
+            if (!mesh)
+                return 2;
+            return render_mesh(*mesh, *options, start, out, err);
+        } catch (const std::bad_alloc&) {
+            err << "sxk: " << options->input << ": out of memory while rendering\n";
+        } catch (const std::exception& error) {
+            err << "sxk: " << options->input << ": " << error.what() << '\n';
+        }
+        return 1;
+    }
+
+    bool accepts_mesh() const override { return true; }
+    int run_on_mesh(const Mesh& mesh, std::string_view mesh_name, std::span<const std::string> args,
+                    std::ostream& out, std::ostream& err) override {
+        int code = 0;
+        std::optional<CommandOptions> options = parse(args, false, out, err, code);
+        if (!options)
+            return code;
+        options->input = mesh_name;
+        if (refuse_options_for(*options, false, err) || !check_output(options->output, err))
+            return 2;
+        try {
+            return render_mesh(mesh, *options, std::chrono::steady_clock::now(), out, err);
+        } catch (const std::exception& error) {
+            err << "sxk: " << options->input << ": " << error.what() << '\n';
+        }
+        return 1;
+    }
+};
+
+class BezierPlugin final : public Plugin {
+public:
+    std::span<PluginCommand* const> commands() override { return m_commands; }
+
+private:
+    RenderCommand m_render;
+    PluginCommand* m_commands[1] = {&m_render};
+};
+
+}  // namespace
+}  // namespace sxk::bezier
+
+SXK_PLUGIN(bezier, sxk::bezier::BezierPlugin, "0.1.0",
+           "ray tracing of triangular Bézier patches (Roth ch. 6) and meshes; sxk render");
