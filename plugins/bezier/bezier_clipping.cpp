@@ -21,19 +21,13 @@
 #include <vector>
 
 #include "de_casteljau.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
 using Vec = std::array<double, 3>;
 
-Vec minus(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec cross(const Vec& a, const Vec& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
-Vec scaled(const Vec& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 
 // The orthonormal frame (n0, n1, e) of a ray.
 struct RayFrame {
@@ -44,7 +38,7 @@ struct RayFrame {
 RayFrame frame_of(const Ray& ray) {
     RayFrame f;
     f.direction_length = norm(ray.direction);
-    f.e = scaled(ray.direction, 1 / f.direction_length);
+    f.e = scaled(1 / f.direction_length, ray.direction);
     // the axis along which e is smallest is far from parallel to e
     int axis = 0;
     for (int a = 1; a < 3; ++a)
@@ -52,7 +46,7 @@ RayFrame frame_of(const Ray& ray) {
     Vec helper{0, 0, 0};
     helper[axis] = 1;
     const Vec c = cross(f.e, helper);
-    f.n0 = scaled(c, 1 / norm(c));
+    f.n0 = scaled(1 / norm(c), c);
     f.n1 = cross(f.e, f.n0);
     return f;
 }
@@ -226,7 +220,7 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
     w.original.resize(count);
     Vec lower{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
               std::numeric_limits<double>::infinity()};
-    Vec upper = scaled(lower, -1);
+    Vec upper = scaled(-1, lower);
     for (std::size_t p = 0; p < count; ++p) {
         const Point& b = patch.control_points()[p];
         const Vec d = minus(b, ray.origin);

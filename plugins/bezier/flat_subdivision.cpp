@@ -1,5 +1,6 @@
 // Roth's flatness split (flat_subdivision.hpp; thesis §6.4).
 #include "flat_subdivision.hpp"
+#include "vector3.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -12,15 +13,6 @@
 namespace sxk::bezier {
 namespace {
 
-Point difference(const Point& a, const Point& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 Barycentric midpoint(const Barycentric& a, const Barycentric& b) {
     return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
@@ -31,7 +23,7 @@ double box_diagonal(std::span<const Point> points) {
     for (const Point& p : points)
         for (std::size_t q = 0; q < 3; ++q)
             lower[q] = std::min(lower[q], p[q]), upper[q] = std::max(upper[q], p[q]);
-    const Point extent = difference(upper, lower);
+    const Point extent = minus(upper, lower);
     return std::sqrt(dot(extent, extent));
 }
 
@@ -63,7 +55,7 @@ double roth_height(const TriangularPatch& patch) {
     const Point& corner_r = patch.control_point(0, 0);  // b_n00
     const Point& corner_s = patch.control_point(n, 0);  // b_0n0
     const Point& corner_t = patch.control_point(0, n);  // b_00n
-    Point normal = cross(difference(corner_s, corner_r), difference(corner_t, corner_r));
+    Point normal = cross(minus(corner_s, corner_r), minus(corner_t, corner_r));
     double length = std::sqrt(dot(normal, normal));
     const double box = box_diagonal(points);
     // No plane through the corners (coincident or collinear corner points, up to rounding): the
@@ -78,7 +70,7 @@ double roth_height(const TriangularPatch& patch) {
     }
     double highest = 0, lowest = 0;
     for (const Point& p : points) {
-        const double height = dot(normal, difference(p, corner_r)) / length;
+        const double height = dot(normal, minus(p, corner_r)) / length;
         highest = std::max(highest, height);
         lowest = std::min(lowest, height);
     }

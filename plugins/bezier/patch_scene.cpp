@@ -24,23 +24,11 @@
 
 #include "embree_device.hpp"
 #include "flat_subdivision.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
-Point difference(const Point& a, const Point& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Point unit(const Point& a) {
-    const double length = std::sqrt(dot(a, a));
-    return length > 0 ? Point{a[0] / length, a[1] / length, a[2] / length} : Point{0, 0, 0};
-}
 
 void include(Box& box, const Point& p) {
     for (std::size_t q = 0; q < 3; ++q)
@@ -120,12 +108,12 @@ Ray float_ray(RTCRayN* rays, unsigned n, unsigned i) {
 // nothing when the ray is parallel to the triangle's plane.
 std::optional<std::array<double, 3>> ray_triangle(const Ray& ray, const Point& a, const Point& b,
                                                   const Point& c) {
-    const Point e1 = difference(b, a), e2 = difference(c, a);
+    const Point e1 = minus(b, a), e2 = minus(c, a);
     const Point p = cross(ray.direction, e2);
     const double determinant = dot(e1, p);
     if (determinant == 0 || !std::isfinite(determinant))
         return std::nullopt;
-    const Point s = difference(ray.origin, a);
+    const Point s = minus(ray.origin, a);
     const Point q = cross(s, e1);
     return std::array<double, 3>{dot(e2, q) / determinant, dot(s, p) / determinant,
                                  dot(ray.direction, q) / determinant};
@@ -154,7 +142,7 @@ std::optional<double> entry(const Ray& ray, const Box& box) {
 }  // namespace
 
 double Box::diagonal() const {
-    const Point extent = difference(upper, lower);
+    const Point extent = minus(upper, lower);
     return std::sqrt(dot(extent, extent));
 }
 
@@ -383,7 +371,7 @@ std::optional<SceneHit> Scene::intersect(const Ray& ray) const {
     const Point& c = m_impl->soup.vertices[corners[2]];
     SceneHit hit;
     hit.primitive = query.hit.primID;
-    hit.normal = unit(cross(difference(b, a), difference(c, a)));  // right-handed a -> b -> c
+    hit.normal = unit_or_zero(cross(minus(b, a), minus(c, a)));  // right-handed a -> b -> c
     // Embree found the triangle in float; its t and (u, v) again in double
     if (const auto exact = ray_triangle(ray, a, b, c)) {
         const auto [t, u, v] = *exact;

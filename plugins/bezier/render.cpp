@@ -1,6 +1,7 @@
 // Pictures of a Scene (render.hpp): pinhole camera, primary rays in parallel (TBB, one task per
 // block of rows), Lambert + ambient shading, sRGB encoding.
 #include "render.hpp"
+#include "vector3.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -14,21 +15,6 @@
 namespace sxk::bezier {
 namespace {
 
-Point difference(const Point& a, const Point& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Point& a) {
-    return std::sqrt(dot(a, a));
-}
-Point scaled(double s, const Point& a) {
-    return {s * a[0], s * a[1], s * a[2]};
-}
 
 // Unit vector along a; throws naming `what` when a is zero or not finite.
 Point unit(const Point& a, const char* what) {
@@ -61,7 +47,7 @@ CameraFrame camera_frame(const Camera& camera) {
     if (!(camera.fov_degrees > 0 && camera.fov_degrees < 180))
         throw std::invalid_argument("camera: field of view " + std::to_string(camera.fov_degrees) +
                                     " degrees is not in (0, 180)");
-    const Point forward = unit(difference(camera.target, camera.eye), "camera: target - eye");
+    const Point forward = unit(minus(camera.target, camera.eye), "camera: target - eye");
     const Point right =
         unit(cross(forward, camera.up), "camera: the up vector is parallel to the view and");
     return {right, cross(right, forward), forward,

@@ -24,11 +24,13 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "command_line.hpp"
 #include "mesh_surface.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
 #include "sxk/io.hpp"
 #include "triangular_patch.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 
@@ -138,13 +140,6 @@ std::optional<std::array<int, 2>> parse_size(std::string_view text) {
     return size;
 }
 
-Point minus(const Point& a, const Point& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 bool is_zero(const Point& a) {
     return a[0] == 0 && a[1] == 0 && a[2] == 0;
@@ -281,19 +276,8 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
             },
             "LABEL"));
     app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
-    try {
-        // CLI11 takes them last-first
-        std::vector<std::string> reversed(args.rbegin(), args.rend());
-        app.parse(reversed);
-    } catch (const CLI::ParseError& error) {
-        if (error.get_exit_code() == 0) {  // --help: print the usage, succeed
-            out << app.help();
-            code = 0;
-            return std::nullopt;
-        }
-        err << "sxk: render: " << error.what()
-            << "\nRun 'sxk render --help' for more information.\n";
-        code = 2;
+    if (const std::optional<int> done = parse_command_line(app, args, "render", out, err)) {
+        code = *done;
         return std::nullopt;
     }
     if (app.count("--cut-label") > 0)

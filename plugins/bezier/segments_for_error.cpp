@@ -17,14 +17,11 @@
 
 #include "de_casteljau.hpp"
 #include "patch_scene.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
-double distance(const Point& a, const Point& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                     (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 Point average(const Point& a, const Point& b) {
     return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "de_casteljau.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
@@ -16,11 +17,7 @@ Point combination(double a, const Point& p, double b, const Point& q, double c, 
     return {a * p[0] + b * q[0] + c * r[0], a * p[1] + b * q[1] + c * r[1], a * p[2] + b * q[2] + c * r[2]};
 }
 
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
-double norm(const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 std::size_t count(int degree) { return static_cast<std::size_t>((degree + 1) * (degree + 2) / 2); }
 

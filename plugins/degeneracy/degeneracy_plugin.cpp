@@ -14,6 +14,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.hpp"
 #include "sxk/io.hpp"
 
 namespace sxk::degeneracy {
@@ -214,19 +215,8 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
         ->check(number_in(0, 1, true, "[0, 1)"))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of the table");
-    try {
-        // CLI11 takes them last-first
-        std::vector<std::string> reversed(args.rbegin(), args.rend());
-        app.parse(reversed);
-    } catch (const CLI::ParseError& error) {
-        if (error.get_exit_code() == 0) {  // --help: print the usage, succeed
-            out << app.help();
-            code = 0;
-            return std::nullopt;
-        }
-        err << "sxk: degeneracies: " << error.what()
-            << "\nRun 'sxk degeneracies --help' for more information.\n";
-        code = 2;
+    if (const std::optional<int> done = parse_command_line(app, args, "degeneracies", out, err)) {
+        code = *done;
         return std::nullopt;
     }
     options.removal.cut_free = !options.no_cut_free;

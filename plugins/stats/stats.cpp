@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "command_line.hpp"
 #include "sxk/io.hpp"
 #include "sxk/quality.hpp"
 
@@ -136,17 +137,8 @@ std::optional<Options> parse(std::span<const std::string> args, bool with_mesh, 
         ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of text bars");
-    try {
-        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last-first
-        app.parse(reversed);
-    } catch (const CLI::ParseError& error) {
-        if (error.get_exit_code() == 0) {  // --help: print the usage, succeed
-            out << app.help();
-            code = 0;
-            return std::nullopt;
-        }
-        err << "sxk: stats: " << error.what() << "\nRun 'sxk stats --help' for more information.\n";
-        code = 2;
+    if (const std::optional<int> done = parse_command_line(app, args, "stats", out, err)) {
+        code = *done;
         return std::nullopt;
     }
     return options;

@@ -12,13 +12,10 @@
 #include "bezier_clipping.hpp"
 #include "core/fixtures.hpp"
 #include "read_bpt.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
-
-double distance(const Point& a, const Point& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 Point along(const Ray& ray, double t) {
     return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
@@ -35,11 +32,6 @@ double diagonal(const TriangularPatch& patch) {
     return distance(lower, upper);
 }
 
-Point unit(Point v) {
-    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    return {v[0] / length, v[1] / length, v[2] / length};
-}
-
 Barycentric random_point(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u(0, 1);
     double r = u(rng), s = u(rng);
@@ -49,7 +41,7 @@ Barycentric random_point(std::mt19937_64& rng) {
 
 Point random_direction(std::mt19937_64& rng) {
     std::normal_distribution<double> g;
-    return unit({g(rng), g(rng), g(rng)});
+    return unit_or_zero({g(rng), g(rng), g(rng)});
 }
 
 // A wavy patch over the unit triangle: control points on a grid with random heights, so that
@@ -140,7 +132,7 @@ TEST(BezierClipping, ReportsTheNearestOfSeveralCrossings) {
         // a slanted ray through two points of the patch: it crosses at least those
         const Barycentric a = random_point(rng), b = random_point(rng);
         const Point pa = patch.evaluate(a), pb = patch.evaluate(b);
-        const Point d = unit({pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]});
+        const Point d = unit_or_zero({pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]});
         const Ray ray{{pa[0] - 2 * d[0], pa[1] - 2 * d[1], pa[2] - 2 * d[2]}, d};
         const auto hit = intersect(patch, ray);
         ASSERT_TRUE(hit);

@@ -15,19 +15,11 @@
 #include "mesh_surface.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/quality.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
-Point minus(const Point& a, const Point& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 Point centroid(const std::vector<Point>& points) {
     Point sum{0, 0, 0};

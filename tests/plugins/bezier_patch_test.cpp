@@ -17,15 +17,12 @@
 #include "read_bpt.hpp"
 #include "sxk/io.hpp"
 #include "triangular_patch.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
 double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
-
-double distance(const Point& a, const Point& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 TriangularPatch random_patch(int degree, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> coordinate(-1, 1);

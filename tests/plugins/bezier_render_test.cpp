@@ -24,13 +24,11 @@
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
 #include "render.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 double degrees(double radians) {
     return radians * 180 / std::numbers::pi;
 }

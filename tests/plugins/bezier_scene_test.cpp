@@ -21,20 +21,11 @@
 #include "flat_subdivision.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
-double distance(const Point& a, const Point& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                     (a[2] - b[2]) * (a[2] - b[2]));
-}
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 Point along(const Ray& ray, double t) {
     return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
             ray.origin[2] + t * ray.direction[2]};
