@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -73,7 +74,7 @@ struct Workspace {
     // reordering the stack never moves a net
     std::vector<Vec> arena;
     std::vector<Candidate> stack;
-    std::vector<Vec> original, current, clipped, quarter, jet;
+    std::vector<Vec> original, clipped, quarter, jet;
     NetScratch nets;
 };
 
@@ -136,7 +137,7 @@ std::array<std::size_t, 2> row_ends(Side side, int n, int row) {
 }
 
 // Unit normal (a, b) of the line L for one side: the distance of q to L is a q.x + b q.y.
-std::array<double, 2> line_normal(Side side, int n, const std::vector<Vec>& q, double extent) {
+std::array<double, 2> line_normal(Side side, int n, std::span<const Vec> q, double extent) {
     for (int row = 0; row < n; ++row) {
         const auto [from, to] = row_ends(side, n, row);
         const double dx = q[to][0] - q[from][0], dy = q[to][1] - q[from][1];
@@ -146,14 +147,16 @@ std::array<double, 2> line_normal(Side side, int n, const std::vector<Vec>& q, d
     return {1, 0};
 }
 
+double magnitude(double x, double y) { return std::sqrt(x * x + y * y); }  // hypot without its overflow care
+
 struct Minima {
     double r = 0, s = 0, t = 0;
 };
 
 // r_min, s_min, t_min of the net (§6.2.3): for each side, the distances to its line L projected
 // along that side's edges onto the side's parameter, and the hull's first crossing.
-Minima clip(int n, const std::vector<Vec>& q, double extent, double eps) {
-    std::array<double, 64> lo_buffer{}, hi_buffer{};
+Minima clip(int n, std::span<const Vec> q, double extent, double eps) {
+    std::array<double, 64> lo_buffer, hi_buffer;  // filled per side below
     std::vector<double> lo_heap, hi_heap;
     double* lo = lo_buffer.data();
     double* hi = hi_buffer.data();
@@ -251,21 +254,23 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
     while (!w.stack.empty() && iterations++ < options.max_iterations) {
         const Candidate candidate = w.stack.back();
         w.stack.pop_back();
-        w.current.assign(w.arena.begin() + static_cast<std::ptrdiff_t>(candidate.offset),
-                         w.arena.begin() + static_cast<std::ptrdiff_t>(candidate.offset + count));
-        const std::vector<Vec>& net = w.current;
+        // the candidate's net, read in place: valid until the first push below may move the arena
+        const std::span<const Vec> net(w.arena.data() + candidate.offset, count);
 
-        double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
-        Vec net_lower = net[0], net_upper = net[0];
-        for (const Vec& p : net)
-            for (int c = 0; c < 3; ++c) {
-                net_lower[c] = std::min(net_lower[c], p[c]);
-                net_upper[c] = std::max(net_upper[c], p[c]);
-            }
-        z_lo = net_lower[2];
-        z_hi = net_upper[2];
+        // the net's box (in scalars: the compiler keeps them in registers)
+        double x_lo = net[0][0], x_hi = x_lo, y_lo = net[0][1], y_hi = y_lo, z_lo = net[0][2], z_hi = z_lo;
+        for (const Vec& p : net) {
+            x_lo = std::min(x_lo, p[0]);
+            x_hi = std::max(x_hi, p[0]);
+            y_lo = std::min(y_lo, p[1]);
+            y_hi = std::max(y_hi, p[1]);
+            z_lo = std::min(z_lo, p[2]);
+            z_hi = std::max(z_hi, p[2]);
+        }
         if (z_lo > z_far || z_hi < z_near) continue;
-        const double net_extent = std::max({net_upper[0] - net_lower[0], net_upper[1] - net_lower[1], z_hi - z_lo});
+        // the ray's line misses the net's box: no hit (cheaper than the three hulls)
+        if (x_lo > eps || x_hi < -eps || y_lo > eps || y_hi < -eps) continue;
+        const double net_extent = std::max({x_hi - x_lo, y_hi - y_lo, z_hi - z_lo});
 
         Minima m = clip(n, net, extent, eps);
         const double sum = m.r + m.s + m.t;
@@ -297,7 +302,7 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
             Jet j = jet(n, w.original, at, w.jet);
             const double converged = 1e-3 * options.distance_tolerance * extent;
             for (int step_count = 0; step_count < options.newton_steps; ++step_count) {
-                if (std::hypot(j.value[0], j.value[1]) <= converged) break;
+                if (magnitude(j.value[0], j.value[1]) <= converged) break;
                 // J (dr, ds) = -(x, y) with J = [along_r along_s] in the two plane distances, solved
                 // as (J^T J + mu) (dr, ds) = -J^T (x, y): Newton where J is regular, and where an edge
                 // collapsed (J of rank 1 next to it) the least-squares step along the direction
@@ -316,7 +321,7 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
                 // Newton left the neighbourhood clipping proved: keep the clipped point
                 if (std::abs(dr) + std::abs(ds) > 10 * std::max(size, options.parametric_tolerance)) break;
                 const Jet polished = jet(n, w.original, next, w.jet);
-                if (std::hypot(polished.value[0], polished.value[1]) > std::hypot(j.value[0], j.value[1])) break;
+                if (magnitude(polished.value[0], polished.value[1]) > magnitude(j.value[0], j.value[1])) break;
                 at = next;
                 j = polished;
             }
@@ -329,7 +334,7 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
                 for (double& c : at) c /= total;
                 j = jet(n, w.original, at, w.jet);
             }
-            if (std::hypot(j.value[0], j.value[1]) > options.distance_tolerance * extent) {
+            if (magnitude(j.value[0], j.value[1]) > options.distance_tolerance * extent) {
                 // not on the ray yet: a wrong intersection (§6.3: the hulls reached the axis, the
                 // patch does not), or a grazing ray where Newton cannot polish. Clip on, finer.
                 if (candidate.tolerance > 1e-13 && size > 0) {

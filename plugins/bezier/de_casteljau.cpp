@@ -31,7 +31,7 @@ Point evaluate_in_place(int n, Point* net, const Barycentric& x) {
     return net[0];
 }
 
-void move_corner(int n, const std::vector<Point>& net, int corner, const Barycentric& x, std::vector<Point>& out,
+void move_corner(int n, std::span<const Point> net, int corner, const Barycentric& x, std::vector<Point>& out,
                  std::vector<Point>& level) {
     out.resize(net_size(n));
     level.assign(net.begin(), net.end());
@@ -55,7 +55,7 @@ void move_corner(int n, const std::vector<Point>& net, int corner, const Barycen
 
 namespace {
 
-bool subdivide_by_corner_moves(int n, const std::vector<Point>& net, const std::array<Barycentric, 3>& sub,
+bool subdivide_by_corner_moves(int n, std::span<const Point> net, const std::array<Barycentric, 3>& sub,
                                std::vector<Point>& out, NetScratch& scratch) {
     const Barycentric& R = sub[0];
     const Barycentric& S = sub[1];
@@ -81,7 +81,7 @@ bool subdivide_by_corner_moves(int n, const std::vector<Point>& net, const std::
     return true;
 }
 
-void subdivide_by_blossoms(int n, const std::vector<Point>& net, const std::array<Barycentric, 3>& sub,
+void subdivide_by_blossoms(int n, std::span<const Point> net, const std::array<Barycentric, 3>& sub,
                            std::vector<Point>& out, NetScratch& scratch) {
     out.resize(net_size(n));
     std::vector<Point>& by_t = scratch.a;  // the net after k steps with T
@@ -103,7 +103,7 @@ void subdivide_by_blossoms(int n, const std::vector<Point>& net, const std::arra
 
 }  // namespace
 
-void subdivide_net(int n, const std::vector<Point>& net, const std::array<Barycentric, 3>& sub,
+void subdivide_net(int n, std::span<const Point> net, const std::array<Barycentric, 3>& sub,
                    std::vector<Point>& out, NetScratch& scratch) {
     if (!subdivide_by_corner_moves(n, net, sub, out, scratch)) subdivide_by_blossoms(n, net, sub, out, scratch);
 }

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "sxk/mesh.hpp"  // sxk::Point
@@ -31,7 +32,7 @@ Point evaluate_in_place(int n, Point* net, const Barycentric& x);
 // The net over the triangle whose corner `corner` (0: r, 1: s, 2: t) moved to the domain point
 // x, the other two staying: one de Casteljau pyramid at x, O(n^3) (the new net's points are the
 // pyramid's entries with 0 in the moved corner's slot). `level` is scratch space.
-void move_corner(int n, const std::vector<Point>& net, int corner, const Barycentric& x, std::vector<Point>& out,
+void move_corner(int n, std::span<const Point> net, int corner, const Barycentric& x, std::vector<Point>& out,
                  std::vector<Point>& level);
 
 // Scratch space for subdivide_net, kept by callers that subdivide often.
@@ -45,7 +46,7 @@ struct NetScratch {
 // of the triangle so far; true of the candidates Bézier clipping keeps and of three of the four
 // quarters of a split); otherwise by the blossom directly, sharing the steps with T among all
 // c_ijk of one k and the steps with S among those of one (j, k).
-void subdivide_net(int n, const std::vector<Point>& net, const std::array<Barycentric, 3>& sub,
+void subdivide_net(int n, std::span<const Point> net, const std::array<Barycentric, 3>& sub,
                    std::vector<Point>& out, NetScratch& scratch);
 
 }  // namespace sxk::bezier

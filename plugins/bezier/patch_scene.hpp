@@ -36,7 +36,7 @@ struct SceneHit {
 struct PatchSceneOptions {
     // Roth's height criterion (§6.4): a patch is split into four until the extent of its control
     // points along the normal of its corner plane is below flatness x the scene's box diagonal.
-    double flatness = 1e-2;
+    double flatness = 1e-3;
     // Bound on the split depth (4^depth sub-patches per patch at most).
     int max_depth = 8;
     ClippingOptions clipping{};

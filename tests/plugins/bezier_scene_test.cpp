@@ -284,12 +284,12 @@ TEST(PatchScene, EveryHitLiesOnTheOriginalPatch) {
 // centre hit, and their hits lie on the patches.
 TEST(PatchScene, Teapot) {
     const std::vector<TriangularPatch> patches = teapot();
-    const Scene coarse = Scene::from_patches(patches);
+    PatchSceneOptions coarse_options;
+    coarse_options.flatness = 1e-2;
+    const Scene coarse = Scene::from_patches(patches, coarse_options);
     EXPECT_EQ(coarse.primitive_count(), 64u);
     EXPECT_GT(coarse.leaf_count(), 64u);
-    PatchSceneOptions fine_options;
-    fine_options.flatness = 1e-3;
-    const Scene fine = Scene::from_patches(patches, fine_options);
+    const Scene fine = Scene::from_patches(patches);  // the default, 1e-3
     EXPECT_GT(fine.leaf_count(), coarse.leaf_count());
     std::cout << "[ leaves   ] teapot: " << coarse.leaf_count() << " at flatness 1e-2, "
               << fine.leaf_count() << " at 1e-3" << std::endl;
