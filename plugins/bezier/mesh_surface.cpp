@@ -33,13 +33,30 @@ double normalised_quality(const Mesh& mesh, ElementId t, Positions positions) {
 // A boundary face as the set of its reference positions (sorted; unused slots stay zero), so
 // that the two sides of a cut, whose vertices are distinct copies at the same points, compare
 // equal.
+// Compared coordinate by coordinate by hand: g++ 12 warns (-Warray-bounds, falsely) inside
+// the operator<=> that std::array's operator< goes through, and in std::sort over the key.
 using PositionKey = std::array<Point, 3>;
+
+template <typename Array>
+bool lexicographically_less(const Array& a, const Array& b) {
+    for (std::size_t q = 0; q < a.size(); ++q)
+        if (a[q] != b[q]) return a[q] < b[q];
+    return false;
+}
+
+bool key_less(const PositionKey& a, const PositionKey& b) {
+    for (std::size_t corner = 0; corner < 3; ++corner)
+        if (a[corner] != b[corner]) return lexicographically_less(a[corner], b[corner]);
+    return false;
+}
 
 PositionKey position_key(const Mesh& mesh, const Simplex& face) {
     PositionKey key{};
-    for (int j = 0; j < face.count(); ++j)
-        key[static_cast<std::size_t>(j)] = mesh.reference(face.vertex(j));
-    std::sort(key.begin(), key.begin() + face.count());
+    const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(face.count()), key.size());
+    for (std::size_t j = 0; j < count; ++j) key[j] = mesh.reference(face.vertex(static_cast<int>(j)));
+    // insertion sort of at most three points (std::sort on a part of the array trips the warning too)
+    for (std::size_t a = 1; a < count; ++a)
+        for (std::size_t b = a; b > 0 && lexicographically_less(key[b], key[b - 1]); --b) std::swap(key[b], key[b - 1]);
     return key;
 }
 
@@ -51,7 +68,7 @@ std::vector<bool> cut_boundary_faces(const Mesh& mesh, const std::vector<FaceId>
     keyed.reserve(boundary.size());
     for (std::size_t index = 0; index < boundary.size(); ++index)
         keyed.emplace_back(position_key(mesh, mesh.face_simplex(boundary[index])), index);
-    std::sort(keyed.begin(), keyed.end());
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return key_less(a.first, b.first); });
     std::vector<bool> cut(boundary.size(), false);
     for (std::size_t first = 0; first < keyed.size();) {
         std::size_t last = first + 1;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "sxk/io.hpp"
 
@@ -17,9 +18,7 @@ constexpr long max_patches = 1000000;
 
 class Lines {
 public:
-    explicit Lines(const std::filesystem::path& path) : m_file(path.string()), m_in(path) {
-        if (!m_in) throw InputError(m_file, 0, "cannot open");
-    }
+    Lines(std::istream& in, std::string name) : m_file(std::move(name)), m_in(in) {}
     // The next non-empty line as a stream; throws at the end of the file.
     std::istringstream next(const char* what) {
         std::string text;
@@ -41,7 +40,7 @@ public:
 
 private:
     std::string m_file;
-    std::ifstream m_in;
+    std::istream& m_in;
     std::size_t m_line = 0;
 };
 
@@ -60,7 +59,13 @@ std::array<T, count> values(Lines& lines, const char* what) {
 }  // namespace
 
 std::vector<TensorPatch> read_bpt(const std::filesystem::path& path) {
-    Lines lines(path);
+    std::ifstream in(path);
+    if (!in) throw InputError(path.string(), 0, "cannot open");
+    return read_bpt(in, path.string());
+}
+
+std::vector<TensorPatch> read_bpt(std::istream& in, const std::string& name) {
+    Lines lines(in, name);
     const long count = values<long, 1>(lines, "the patch count")[0];
     if (count < 1 || count > max_patches) lines.fail("patch count " + std::to_string(count) + " is not in 1.." + std::to_string(max_patches));
     std::vector<TensorPatch> patches;

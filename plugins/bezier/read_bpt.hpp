@@ -7,6 +7,8 @@
 #pragma once
 
 #include <filesystem>
+#include <istream>
+#include <string>
 #include <vector>
 
 #include "triangular_patch.hpp"
@@ -16,5 +18,7 @@ namespace sxk::bezier {
 // Throws sxk::InputError ("FILE:LINE: reason") for a missing file, a bad count or degree (0 to
 // 20), a malformed or non-finite coordinate, a short file or trailing data.
 std::vector<TensorPatch> read_bpt(const std::filesystem::path& path);
+// The same from a stream; `name` stands for FILE in the messages.
+std::vector<TensorPatch> read_bpt(std::istream& in, const std::string& name);
 
 }  // namespace sxk::bezier
