@@ -307,16 +307,21 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
                 // as (J^T J + mu) (dr, ds) = -J^T (x, y): Newton where J is regular, and where an edge
                 // collapsed (J of rank 1 next to it) the least-squares step along the direction
                 // that still moves the surface
-                const double a11 = j.along_r[0] * j.along_r[0] + j.along_r[1] * j.along_r[1];
-                const double a12 = j.along_r[0] * j.along_s[0] + j.along_r[1] * j.along_s[1];
-                const double a22 = j.along_s[0] * j.along_s[0] + j.along_s[1] * j.along_s[1];
-                const double mu = 1e-14 * (a11 + a22);
+                // (divided by the trace of J^T J, so that its determinant cannot overflow)
+                double a11 = j.along_r[0] * j.along_r[0] + j.along_r[1] * j.along_r[1];
+                double a12 = j.along_r[0] * j.along_s[0] + j.along_r[1] * j.along_s[1];
+                double a22 = j.along_s[0] * j.along_s[0] + j.along_s[1] * j.along_s[1];
+                const double trace = a11 + a22;
+                if (!(trace > 0) || !std::isfinite(trace)) break;
+                a11 /= trace, a12 /= trace, a22 /= trace;
+                constexpr double mu = 1e-14;
                 const double det = (a11 + mu) * (a22 + mu) - a12 * a12;
                 if (!(det > 0)) break;
-                const double g1 = j.along_r[0] * j.value[0] + j.along_r[1] * j.value[1];
-                const double g2 = j.along_s[0] * j.value[0] + j.along_s[1] * j.value[1];
+                const double g1 = (j.along_r[0] * j.value[0] + j.along_r[1] * j.value[1]) / trace;
+                const double g2 = (j.along_s[0] * j.value[0] + j.along_s[1] * j.value[1]) / trace;
                 const double dr = (-(a22 + mu) * g1 + a12 * g2) / det;
                 const double ds = (a12 * g1 - (a11 + mu) * g2) / det;
+                if (!std::isfinite(dr) || !std::isfinite(ds)) break;
                 const Barycentric next{at[0] + dr, at[1] + ds, at[2] - dr - ds};
                 // Newton left the neighbourhood clipping proved: keep the clipped point
                 if (std::abs(dr) + std::abs(ds) > 10 * std::max(size, options.parametric_tolerance)) break;
