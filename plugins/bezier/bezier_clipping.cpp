@@ -27,8 +27,7 @@
 namespace sxk::bezier {
 namespace {
 
-using Vec = std::array<double, 3>;
-
+using Vec = Point;  // a control point in the ray frame
 
 // The orthonormal frame (n0, n1, e) of a ray.
 struct RayFrame {
