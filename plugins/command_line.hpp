@@ -1,9 +1,12 @@
-// What every plug-in command does with its arguments, as the built-in sxk commands do: CLI11
-// parses them; --help prints the usage and succeeds (exit 0); a usage error prints
-// "sxk: NAME: reason" and a pointer to --help (exit 2). Header-only, for the plug-ins in this
+// What every plug-in command does with its arguments and its mesh, as the built-in sxk commands
+// do: CLI11 parses the arguments; --help prints the usage and succeeds (exit 0); a usage error
+// prints "sxk: NAME: reason" and a pointer to --help (exit 2); an unreadable mesh prints
+// "sxk: FILE:LINE: reason". Header-only, for the plug-ins in this
 // folder (sxk_add_plugin puts the folder on their include path).
 #pragma once
 
+#include <exception>
+#include <new>
 #include <optional>
 #include <ostream>
 #include <span>
@@ -11,6 +14,9 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "sxk/io.hpp"
+#include "sxk/mesh.hpp"
 
 namespace sxk {
 
@@ -28,6 +34,21 @@ inline std::optional<int> parse_command_line(CLI::App& app, std::span<const std:
         }
         err << "sxk: " << name << ": " << error.what() << "\nRun 'sxk " << name << " --help' for more information.\n";
         return 2;
+    }
+    return std::nullopt;
+}
+
+// Reads a command's mesh as the built-in commands do (tools/sxk/load_mesh.cpp): on failure the
+// error is printed as "sxk: FILE:LINE: reason" and nothing is returned.
+inline std::optional<Mesh> load_mesh_for_command(const std::string& file, std::ostream& err) {
+    try {
+        return read_mesh(file);
+    } catch (const InputError& error) {
+        err << "sxk: " << error.what() << '\n';
+    } catch (const std::bad_alloc&) {
+        err << "sxk: " << file << ":0: out of memory while reading\n";
+    } catch (const std::exception& error) {
+        err << "sxk: " << file << ":0: " << error.what() << '\n';
     }
     return std::nullopt;
 }

@@ -370,11 +370,7 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
         err << "sxk: " << error.what() << '\n';
         return std::nullopt;
     }
-    std::vector<TriangularPatch> patches;
-    patches.reserve(2 * tensors.size());
-    for (const TensorPatch& tensor : tensors)
-        for (TriangularPatch& half : to_triangular(tensor))
-            patches.push_back(std::move(half));
+    std::vector<TriangularPatch> patches = to_triangular(tensors);
 
     PatchSceneOptions scene_options;
     scene_options.flatness = options.flatness;
@@ -541,19 +537,6 @@ int render_mesh(const Mesh& mesh, const CommandOptions& options,
     return draw(options, drawing, mesh.ambient_dimension() == 2, seconds_since(start), out, err);
 }
 
-std::optional<Mesh> load(const std::string& file, std::ostream& err) {
-    try {
-        return read_mesh(file);
-    } catch (const InputError& error) {
-        err << "sxk: " << error.what() << '\n';
-    } catch (const std::bad_alloc&) {
-        err << "sxk: " << file << ":0: out of memory while reading\n";
-    } catch (const std::exception& error) {
-        err << "sxk: " << file << ":0: " << error.what() << '\n';
-    }
-    return std::nullopt;
-}
-
 class RenderCommand final : public PluginCommand {
 public:
     std::string_view name() const override { return "render"; }
@@ -582,7 +565,7 @@ public:
                     return 2;
                 return draw(*options, *drawing, false, seconds_since(start), out, err);
             }
-            const std::optional<Mesh> mesh = load(options->input, err);
+            const std::optional<Mesh> mesh = load_mesh_for_command(options->input, err);
             if (!mesh)
                 return 2;
             return render_mesh(*mesh, *options, start, out, err);

@@ -174,6 +174,14 @@ Point TensorPatch::evaluate(double u, double v) const {
     return tensor_blossom(*this, us, vs);
 }
 
+std::vector<TriangularPatch> to_triangular(const std::vector<TensorPatch>& patches) {
+    std::vector<TriangularPatch> halves;
+    halves.reserve(2 * patches.size());
+    for (const TensorPatch& patch : patches)
+        for (TriangularPatch& half : to_triangular(patch)) halves.push_back(std::move(half));
+    return halves;
+}
+
 std::array<TriangularPatch, 2> to_triangular(const TensorPatch& patch) {
     if (patch.degree_u < 0 || patch.degree_v < 0 ||
         patch.points.size() != static_cast<std::size_t>((patch.degree_u + 1) * (patch.degree_v + 1)))

@@ -74,5 +74,8 @@ struct TensorPatch {
 // over the domain triangle (0,0), (1,0), (1,1) of (u, v), the second over (0,0), (1,1), (0,1),
 // their barycentric coordinates in that corner order (Goldman–Filip, by blossoms).
 std::array<TriangularPatch, 2> to_triangular(const TensorPatch& patch);
+// Every tensor patch's two halves, in order: patch p becomes triangular patches 2p and 2p + 1
+// (the teapot's 32 bicubic patches its 64 sextic ones).
+std::vector<TriangularPatch> to_triangular(const std::vector<TensorPatch>& patches);
 
 }  // namespace sxk::bezier

@@ -225,20 +225,6 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
     return options;
 }
 
-// Reads like the built-in commands (tools/sxk/load_mesh.cpp): "sxk: FILE:LINE: reason".
-std::optional<Mesh> load(const std::string& file, std::ostream& err) {
-    try {
-        return read_mesh(file);
-    } catch (const InputError& error) {
-        err << "sxk: " << error.what() << '\n';
-    } catch (const std::bad_alloc&) {
-        err << "sxk: " << file << ":0: out of memory while reading\n";
-    } catch (const std::exception& error) {
-        err << "sxk: " << file << ":0: " << error.what() << '\n';
-    }
-    return std::nullopt;
-}
-
 // Writes like the built-in commands (tools/sxk/load_mesh.cpp save_mesh): "sxk: FILE:0: reason".
 bool save(const Mesh& mesh, const std::string& file, std::ostream& err) {
     try {
@@ -284,7 +270,7 @@ public:
                 << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
             return 2;
         }
-        std::optional<Mesh> mesh = load(options->input, err);
+        std::optional<Mesh> mesh = load_mesh_for_command(options->input, err);
         if (!mesh)
             return 2;
 

@@ -176,10 +176,7 @@ TEST(BezierClipping, MissesWhatLiesBesideTheRay) {
 TEST(BezierClipping, HitsTheTeapotKnobWhereAnEdgeCollapses) {
     // the lid's top row collapses to one point: the sextic halves there have a corner where seven
     // control points coincide (Roth Fig. 6.13). Rays straight down near the axis must hit.
-    const std::vector<TensorPatch> teapot = read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt");
-    std::vector<TriangularPatch> patches;
-    for (const TensorPatch& p : teapot)
-        for (const TriangularPatch& half : to_triangular(p)) patches.push_back(half);
+    const std::vector<TriangularPatch> patches = to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt"));
     double top = -1e9;
     for (const TriangularPatch& p : patches)
         for (const Point& b : p.control_points()) top = std::max(top, b[2]);

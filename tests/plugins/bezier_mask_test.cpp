@@ -49,12 +49,7 @@ Point cross(const Point& a, const Point& b) {
 double length(const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 Point unit(const Point& a) { return scaled(1 / length(a), a); }
 
-std::vector<TriangularPatch> teapot() {
-    std::vector<TriangularPatch> patches;
-    for (const TensorPatch& patch : read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt"))
-        for (const TriangularPatch& half : to_triangular(patch)) patches.push_back(half);
-    return patches;
-}
+std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
 
 // The teapot: its patches, the reference over them, and the scene under test.
 struct Teapot {

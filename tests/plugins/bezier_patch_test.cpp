@@ -172,6 +172,15 @@ TEST(TensorPatch, TeapotBecomes64SexticTriangularPatches) {
     }
     EXPECT_EQ(triangular, 64u);
     EXPECT_LT(worst, 1e-12);
+    // the list form: patch p's halves are 2p and 2p + 1
+    const std::vector<TriangularPatch> all = to_triangular(teapot);
+    ASSERT_EQ(all.size(), 64u);
+    for (std::size_t p = 0; p < teapot.size(); ++p) {
+        const auto halves = to_triangular(teapot[p]);
+        for (std::size_t h = 0; h < 2; ++h)
+            EXPECT_TRUE(std::equal(halves[h].control_points().begin(), halves[h].control_points().end(),
+                                   all[2 * p + h].control_points().begin()));
+    }
 }
 
 TEST(ReadBpt, RefusesMalformedFilesNamingTheLine) {

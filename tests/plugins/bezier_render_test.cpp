@@ -42,13 +42,7 @@ Camera above(double height = 4) {
     return Camera{{0, 0, height}, {0, 0, 0}, {0, 1, 0}, degrees(2 * std::atan(0.5))};
 }
 
-std::vector<TriangularPatch> teapot() {
-    std::vector<TriangularPatch> patches;
-    for (const TensorPatch& tensor : read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt"))
-        for (const TriangularPatch& half : to_triangular(tensor))
-            patches.push_back(half);
-    return patches;
-}
+std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
 
 // The sRGB byte of a linear intensity (IEC 61966-2-1), written out here independently.
 int srgb(double linear) {

@@ -39,13 +39,7 @@ Ray downward(double x, double y) {
     return Ray{{x, y, 5}, {0, 0, -1}};
 }
 
-std::vector<TriangularPatch> teapot() {
-    std::vector<TriangularPatch> patches;
-    for (const TensorPatch& tensor : read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt"))
-        for (const TriangularPatch& half : to_triangular(tensor))
-            patches.push_back(half);
-    return patches;
-}
+std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
 
 Barycentric random_point(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> unit(0, 1);

@@ -178,8 +178,7 @@ int main(int argc, char** argv) {
     Setup setup;
     const auto setup_start = std::chrono::steady_clock::now();
     try {
-        for (const bz::TensorPatch& patch : bz::read_bpt(teapot_path))
-            for (const bz::TriangularPatch& half : bz::to_triangular(patch)) setup.patches.push_back(half);
+        setup.patches = bz::to_triangular(bz::read_bpt(teapot_path));
         for (const bz::TriangularPatch& patch : setup.patches) setup.patch_boxes.push_back(control_box(patch));
         setup.clipping = bz::Scene::from_patches(setup.patches);
         setup.tolerance = relative_tolerance * setup.clipping->bounds().diagonal();
