@@ -111,7 +111,9 @@ double hull_minimum(int n, const double* lo, const double* hi, double eps) {
     for (int e = 1; e < size; ++e) {
         const int a = chain[e - 1], b = chain[e];
         const double ya = y(a), yb = y(b);
-        if (yb >= -eps) return (a + (b - a) * (-ya) / (yb - ya)) / n;
+        // b within eps below the axis counts as on it: the crossing is then b itself, not the
+        // extension of a -> b past it
+        if (yb >= -eps) return std::min<double>(b, a + (b - a) * (-ya) / (yb - ya)) / n;
     }
     return std::numeric_limits<double>::infinity();
 }
@@ -378,8 +380,6 @@ std::optional<PatchHit> intersect(const TriangularPatch& patch, const Ray& ray, 
         // stack last, to be visited first (a hit there prunes the others)
         const Barycentric r{1, 0, 0}, s{0, 1, 0}, t{0, 0, 1};
         const Barycentric rs{0.5, 0.5, 0}, st{0, 0.5, 0.5}, rt{0.5, 0, 0.5};
-        // (the middle one listed from rt: each corner has weight in its own slot, as the corner
-        // moves of subdivide_net need)
         const std::array<std::array<Barycentric, 3>, 4> quarters{{{r, rs, rt}, {rs, s, st}, {rt, st, t}, {rt, rs, st}}};
         std::array<double, 4> nearest{};
         const std::size_t first = w.stack.size();

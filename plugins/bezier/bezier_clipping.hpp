@@ -5,7 +5,7 @@
 // projections reach the axis (§6.2.4: upper and lower hulls), and keeps the sub-triangle
 // r >= r_min, s >= s_min, t >= t_min (eq. 6.5); a patch that clipped too little
 // (r_min + s_min + t_min < 0.5) is split into four. It stops when the candidate domain is small,
-// then polishes (r, s, u) with a few Newton steps. Collapsed edges (the teapot's knob) take the
+// then polishes (r, s) with a few Newton steps. Collapsed edges (the teapot's knob) take the
 // line L through the neighbouring control points (§6.4).
 #pragma once
 

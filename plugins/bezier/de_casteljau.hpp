@@ -17,9 +17,14 @@ namespace sxk::bezier {
 
 using Barycentric = std::array<double, 3>;
 
-inline std::size_t net_size(int degree) { return static_cast<std::size_t>((degree + 1) * (degree + 2) / 2); }
+// In std::size_t: a tessellation's grid of 2^32 vertices is indexed like a net.
+inline std::size_t net_size(int degree) {
+    const auto n = static_cast<std::size_t>(degree);
+    return (n + 1) * (n + 2) / 2;
+}
 inline std::size_t net_index(int degree, int j, int k) {
-    return static_cast<std::size_t>(k * (degree + 1) - k * (k - 1) / 2 + j);
+    const auto n = static_cast<std::size_t>(degree), row = static_cast<std::size_t>(k);
+    return row * (n + 1) - row * (row - 1) / 2 + static_cast<std::size_t>(j);  // row 0: 0 * wrap = 0
 }
 
 // One de Casteljau step of the net a (degree m >= 1) with respect to x (a point or a direction)

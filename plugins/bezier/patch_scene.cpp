@@ -167,8 +167,7 @@ struct Scene::Impl {
 };
 
 // The box of a leaf's control points (it contains the leaf: convex hull property), widened by
-// bounds_margin for hits just outside the domain (ClippingOptions::domain_slack) and the float
-// ray's rounding, then rounded outward to float.
+// bounds_margin for the float ray's rounding, then rounded outward to float.
 void Scene::Impl::leaf_bounds(const RTCBoundsFunctionArguments* args) {
     const auto* impl = static_cast<const Impl*>(args->geometryUserPtr);
     const Box box = box_of(impl->leaves[args->primID].surface.control_points());

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -75,7 +76,10 @@ private:
 // the patch (triangle i belongs to patch i / segments^2).
 TriangleSoup tessellate(const std::vector<TriangularPatch>& patches, int segments);
 // The smallest segment count whose tessellation deviates at most max_error from the patches
-// (measured by sampling each small triangle's interior against the flat triangle).
-int segments_for_error(const std::vector<TriangularPatch>& patches, double max_error);
+// (measured by sampling each small triangle's interior against the flat triangle), searching no
+// count above max_segments: that bound is returned when none up to it is fine enough. Throws
+// std::invalid_argument when the count needed exceeds what tessellate can index (2^32 vertices).
+int segments_for_error(const std::vector<TriangularPatch>& patches, double max_error,
+                       int max_segments = std::numeric_limits<int>::max());
 
 }  // namespace sxk::bezier

@@ -358,7 +358,7 @@ constexpr double default_tessellation_error = 1e-4;
 
 int default_segments(const std::vector<TriangularPatch>& patches) {
     const double error = default_tessellation_error * control_point_box(patches).diagonal();
-    return std::min(max_segments, segments_for_error(patches, error));
+    return segments_for_error(patches, error, max_segments);
 }
 
 // The patch file's scene; nullopt when it cannot be read (the message is printed).

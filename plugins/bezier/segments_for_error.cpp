@@ -76,7 +76,7 @@ double tessellation_error(const std::vector<TriangularPatch>& patches, int segme
 
 }  // namespace
 
-int segments_for_error(const std::vector<TriangularPatch>& patches, double max_error) {
+int segments_for_error(const std::vector<TriangularPatch>& patches, double max_error, int max_segments) {
     if (!(max_error > 0) || !std::isfinite(max_error))
         throw std::invalid_argument("segments_for_error: max_error " + std::to_string(max_error) +
                                     " is not a positive finite number");
@@ -86,7 +86,8 @@ int segments_for_error(const std::vector<TriangularPatch>& patches, double max_e
     const double vertices_per_count =
         static_cast<double>(std::numeric_limits<std::uint32_t>::max()) /
         static_cast<double>(patches.size());
-    const int largest = static_cast<int>(std::min(std::sqrt(2 * vertices_per_count) - 2, 1e9));
+    const int indexable = static_cast<int>(std::min(std::sqrt(2 * vertices_per_count) - 2, 1e9));
+    const int largest = std::min(indexable, std::max(1, max_segments));
 
     // Find lo (too coarse, or 0) and hi (fine enough) with hi = lo + 1. The error of a smooth
     // patch falls like segments^-2 once the cells are small, so from a coarse count that fails
@@ -113,6 +114,7 @@ int segments_for_error(const std::vector<TriangularPatch>& patches, double max_e
         } else {
             next = lo + (*hi - lo) / 2;
         }
+        if (next > largest && largest < indexable) return largest;  // the caller's bound
         if (next > largest)
             throw std::invalid_argument("segments_for_error: error " + std::to_string(max_error) +
                                         " needs more than " + std::to_string(largest) +

@@ -17,10 +17,6 @@ Point combination(double a, const Point& p, double b, const Point& q, double c, 
     return {a * p[0] + b * q[0] + c * r[0], a * p[1] + b * q[1] + c * r[1], a * p[2] + b * q[2] + c * r[2]};
 }
 
-
-
-std::size_t count(int degree) { return static_cast<std::size_t>((degree + 1) * (degree + 2) / 2); }
-
 double binomial(int n, int k) {
     double b = 1;
     for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
@@ -31,20 +27,17 @@ double binomial(int n, int k) {
 
 TriangularPatch::TriangularPatch(int degree, std::vector<Point> control_points)
     : m_degree(degree), m_points(std::move(control_points)) {
-    if (degree < 0 || m_points.size() != count(degree))
+    if (degree < 0 || m_points.size() != net_size(degree))
         throw std::invalid_argument("TriangularPatch: degree " + std::to_string(degree) + " needs " +
-                                    std::to_string(degree < 0 ? 0 : count(degree)) + " control points, not " +
+                                    std::to_string(degree < 0 ? 0 : net_size(degree)) + " control points, not " +
                                     std::to_string(m_points.size()));
 }
 
-std::size_t TriangularPatch::index(int degree, int j, int k) {
-    // rows of constant k hold j = 0 .. n - k
-    return static_cast<std::size_t>(k * (degree + 1) - k * (k - 1) / 2 + j);
-}
+std::size_t TriangularPatch::index(int degree, int j, int k) { return net_index(degree, j, k); }
 
 TriangularPatch TriangularPatch::step(const Barycentric& x) const {
     if (m_degree == 0) throw std::invalid_argument("TriangularPatch: a patch of degree 0 has no de Casteljau step");
-    std::vector<Point> next(count(m_degree - 1));
+    std::vector<Point> next(net_size(m_degree - 1));
     de_casteljau_step(m_degree, m_points.data(), x, next.data());
     return TriangularPatch(m_degree - 1, std::move(next));
 }
@@ -93,7 +86,7 @@ TriangularPatch TriangularPatch::subdivided(const Barycentric& r, const Barycent
 
 TriangularPatch TriangularPatch::elevated() const {
     const int n = m_degree + 1;
-    std::vector<Point> points(count(n), Point{0, 0, 0});
+    std::vector<Point> points(net_size(n), Point{0, 0, 0});
     for (int k = 0; k <= n; ++k)
         for (int j = 0; j <= n - k; ++j) {
             const int i = n - j - k;
@@ -140,7 +133,7 @@ Point tensor_blossom(const TensorPatch& patch, std::span<const double> us, std::
 // blossom over the ways to give m of those m + n arguments to u and the rest to v.
 TriangularPatch triangle_of(const TensorPatch& patch, const std::array<std::array<double, 2>, 3>& corners) {
     const int m = patch.degree_u, n = patch.degree_v, degree = m + n;
-    std::vector<Point> points(count(degree));
+    std::vector<Point> points(net_size(degree));
     std::vector<double> us, vs;
     for (int k = 0; k <= degree; ++k)
         for (int j = 0; j <= degree - k; ++j) {

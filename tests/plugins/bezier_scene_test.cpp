@@ -375,6 +375,9 @@ TEST(Tessellate, SegmentsForErrorOfAParabolicPatch) {
     EXPECT_EQ(segments_for_error(parabola, 1.0), 1);
     EXPECT_EQ(segments_for_error(parabola, 1 / (4 * 7.5 * 7.5)), 8);
     EXPECT_EQ(segments_for_error(parabola, 1.0000001e-6), 500);
+    // a caller's bound: returned when nothing up to it is fine enough, else the count itself
+    EXPECT_EQ(segments_for_error(parabola, 1.0000001e-6, 64), 64);
+    EXPECT_EQ(segments_for_error(parabola, 1 / (4 * 7.5 * 7.5), 64), 8);
     // measured independently at random points of the tessellation's triangles
     std::mt19937_64 rng(test::seed_for("Tessellate.SegmentsForErrorOfAParabolicPatch"));
     const TriangleSoup soup = tessellate(parabola, 8);
