@@ -1,6 +1,5 @@
 // Roth's flatness split (flat_subdivision.hpp; thesis §6.4).
 #include "flat_subdivision.hpp"
-#include "vector3.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -10,21 +9,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "patch_scene.hpp"
+#include "vector3.hpp"
+
 namespace sxk::bezier {
 namespace {
 
 
 Barycentric midpoint(const Barycentric& a, const Barycentric& b) {
     return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-}
-
-double box_diagonal(std::span<const Point> points) {
-    Point lower = points[0], upper = points[0];
-    for (const Point& p : points)
-        for (std::size_t q = 0; q < 3; ++q)
-            lower[q] = std::min(lower[q], p[q]), upper[q] = std::max(upper[q], p[q]);
-    const Point extent = minus(upper, lower);
-    return std::sqrt(dot(extent, extent));
 }
 
 // Splits `original` over `corners` until flat, appending the pieces depth first. The pieces are
@@ -57,7 +50,7 @@ double roth_height(const TriangularPatch& patch) {
     const Point& corner_t = patch.control_point(0, n);  // b_00n
     Point normal = cross(minus(corner_s, corner_r), minus(corner_t, corner_r));
     double length = std::sqrt(dot(normal, normal));
-    const double box = box_diagonal(points);
+    const double box = box_of(points).diagonal();
     // No plane through the corners (coincident or collinear corner points, up to rounding): the
     // extent along any unit direction still bounds the patch in a slab, so take the surface's
     // own normal at the centroid (defined next to a collapsed corner too); the box diagonal

@@ -30,14 +30,14 @@ namespace sxk::bezier {
 namespace {
 
 
-void include(Box& box, const Point& p) {
+// How far boxes are widened so that Embree's float rays and boxes never miss what the double
+// ray meets: float carries 24 bits, and 1e-6 of the scene's size and distance from the origin
+// covers their rounding many times.
+double rounding_margin(const Box& box) {
+    double largest_coordinate = 0;
     for (std::size_t q = 0; q < 3; ++q)
-        box.lower[q] = std::min(box.lower[q], p[q]), box.upper[q] = std::max(box.upper[q], p[q]);
-}
-
-Box empty_box() {
-    constexpr double huge = std::numeric_limits<double>::infinity();
-    return {{huge, huge, huge}, {-huge, -huge, -huge}};
+        largest_coordinate = std::max({largest_coordinate, std::abs(box.lower[q]), std::abs(box.upper[q])});
+    return 1e-6 * (box.diagonal() + largest_coordinate);
 }
 
 Box widened(Box box, double margin) {
@@ -46,22 +46,13 @@ Box widened(Box box, double margin) {
     return box;
 }
 
-// The box of the points, or the zero box at the origin when there are none.
-template <typename Points>
-Box box_of(const Points& points) {
-    if (points.empty())
-        return {};
-    Box box = empty_box();
-    for (const Point& p : points)
-        include(box, p);
-    return box;
-}
 
 // The nearest leaf hit found so far for one query, in double.
 struct LeafHit {
     double t = 0;
     std::uint32_t leaf = 0;
     Barycentric at{};  // in the leaf's own coordinates
+    Point normal{};    // the clipping's: the leaf keeps the patch's orientation (flat_subdivision)
 };
 
 // Embree hands this to every callback of one rtcIntersect1/rtcOccluded1 call: the extension of
@@ -119,32 +110,8 @@ std::optional<std::array<double, 3>> ray_triangle(const Ray& ray, const Point& a
                                  dot(ray.direction, q) / determinant};
 }
 
-// Where the ray enters the box within [t_near, t_far] (t_near when it starts inside), or
-// nothing when it misses the box there.
-std::optional<double> entry(const Ray& ray, const Box& box) {
-    double enter = ray.t_near, leave = ray.t_far;
-    for (std::size_t q = 0; q < 3; ++q) {
-        if (ray.direction[q] == 0) {
-            if (ray.origin[q] < box.lower[q] || ray.origin[q] > box.upper[q])
-                return std::nullopt;
-            continue;
-        }
-        const double a = (box.lower[q] - ray.origin[q]) / ray.direction[q];
-        const double b = (box.upper[q] - ray.origin[q]) / ray.direction[q];
-        enter = std::max(enter, std::min(a, b));
-        leave = std::min(leave, std::max(a, b));
-    }
-    if (!(enter <= leave))
-        return std::nullopt;
-    return enter;
-}
 
 }  // namespace
-
-double Box::diagonal() const {
-    const Point extent = minus(upper, lower);
-    return std::sqrt(dot(extent, extent));
-}
 
 struct Scene::Impl {
     embree::Device device;  // first: released last
@@ -198,7 +165,7 @@ void Scene::Impl::intersect_leaf(const RTCIntersectFunctionNArguments* args) {
         if (!hit || hit->t < ray.t_near || hit->t > ray.t_far)
             continue;
         if (exact)
-            context->found = true, context->nearest = LeafHit{hit->t, args->primID, hit->at};
+            context->found = true, context->nearest = LeafHit{hit->t, args->primID, hit->at, hit->normal};
         // Embree's float range must keep every box that could hold a nearer double hit
         RTCRayN_tfar(rays, args->N, i) = float_above(exact ? hit->t - context->shift : hit->t);
         RTCHitN_Ng_x(hits, args->N, i) = static_cast<float>(hit->normal[0]);
@@ -241,18 +208,9 @@ Scene Scene::from_patches(std::vector<TriangularPatch> patches, const PatchScene
     auto impl = std::make_unique<Impl>();
     impl->of_patches = true;
     impl->clipping = options.clipping;
-    std::vector<Point> control_points;
-    for (const TriangularPatch& patch : patches)
-        control_points.insert(control_points.end(), patch.control_points().begin(),
-                              patch.control_points().end());
-    impl->box = box_of(control_points);
+    impl->box = box_of(patches);
     const double diagonal = impl->box.diagonal();
-    double largest_coordinate = 0;
-    for (const Point& p : control_points)
-        for (double x : p)
-            largest_coordinate = std::max(largest_coordinate, std::abs(x));
-    // float carries 24 bits: 1e-6 relative covers the float ray's and boxes' rounding many times
-    impl->bounds_margin = 1e-6 * (diagonal + largest_coordinate);
+    impl->bounds_margin = rounding_margin(impl->box);
     impl->trace_box = widened(impl->box, 2 * impl->bounds_margin);
     impl->leaves = flat_subdivision(patches, options.flatness * diagonal, options.max_depth);
     impl->patches = std::move(patches);
@@ -292,11 +250,7 @@ Scene Scene::from_triangles(TriangleSoup soup) {
             "Scene::from_triangles: too many triangles or vertices for Embree");
     auto impl = std::make_unique<Impl>();
     impl->box = box_of(soup.vertices);
-    double largest_coordinate = 0;
-    for (const Point& p : soup.vertices)
-        for (double x : p)
-            largest_coordinate = std::max(largest_coordinate, std::abs(x));
-    impl->trace_box = widened(impl->box, 1e-6 * (impl->box.diagonal() + largest_coordinate));
+    impl->trace_box = widened(impl->box, rounding_margin(impl->box));
     impl->scene = embree::new_scene(impl->device);
     if (!soup.triangles.empty()) {
         const embree::GeometryHandle geometry =
@@ -359,8 +313,10 @@ std::optional<SceneHit> Scene::intersect(const Ray& ray) const {
         for (std::size_t q = 0; q < 3; ++q)
             hit.at[q] = local[0] * leaf.corners[0][q] + local[1] * leaf.corners[1][q] +
                         local[2] * leaf.corners[2][q];
-        // the original patch's normal: at a collapsed corner a leaf has none of its own
-        hit.normal = m_impl->patches[leaf.patch].normal(hit.at);
+        // the leaf's normal is the patch's; where the leaf has none (flat to a point), the
+        // patch's limit from inside
+        hit.normal = context.nearest.normal;
+        if (hit.normal == Point{0, 0, 0}) hit.normal = m_impl->patches[leaf.patch].normal(hit.at);
         return hit;
     }
 

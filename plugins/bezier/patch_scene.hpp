@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "bezier_clipping.hpp"
@@ -23,6 +24,14 @@ struct Box {
     Point lower{}, upper{};
     double diagonal() const;
 };
+
+// The box of the points (the zero box at the origin when there are none), and the box of all
+// the patches' control points, which holds the patches (convex hull property).
+Box box_of(std::span<const Point> points);
+Box box_of(const std::vector<TriangularPatch>& patches);
+// Where the ray enters the box within [t_near, t_far] (t_near when it starts inside), or
+// nothing when it misses the box there.
+std::optional<double> entry(const Ray& ray, const Box& box);
 
 // A hit in a scene: primitive is the index of the patch (patch scenes) or of the triangle
 // (triangle scenes) in the order given; `at` is barycentric in that primitive; the normal is

@@ -1,7 +1,6 @@
 // Pictures of a Scene (render.hpp): pinhole camera, primary rays in parallel (TBB, one task per
 // block of rows), Lambert + ambient shading, sRGB encoding.
 #include "render.hpp"
-#include "vector3.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -11,6 +10,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {

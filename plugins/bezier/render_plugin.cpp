@@ -336,18 +336,6 @@ std::string plural(std::size_t count, const char* one, const char* many) {
     return std::to_string(count) + ' ' + (count == 1 ? one : many);
 }
 
-// The box of the patches' control points, which holds the patches (convex hull property).
-Box control_point_box(const std::vector<TriangularPatch>& patches) {
-    Box box{patches.front().control_points().front(), patches.front().control_points().front()};
-    for (const TriangularPatch& patch : patches)
-        for (const Point& p : patch.control_points())
-            for (std::size_t c = 0; c < 3; ++c) {
-                box.lower[c] = std::min(box.lower[c], p[c]);
-                box.upper[c] = std::max(box.upper[c], p[c]);
-            }
-    return box;
-}
-
 // The default --segments: the smallest count whose tessellation deviates at most
 // default_tessellation_error x the box diagonal from the patches. Not the tolerance the clipped
 // hits are checked to (1e-7 x the diagonal, tests/plugins/bezier_mask_test.cpp): the teapot would
@@ -357,7 +345,7 @@ Box control_point_box(const std::vector<TriangularPatch>& patches) {
 constexpr double default_tessellation_error = 1e-4;
 
 int default_segments(const std::vector<TriangularPatch>& patches) {
-    const double error = default_tessellation_error * control_point_box(patches).diagonal();
+    const double error = default_tessellation_error * box_of(patches).diagonal();
     return segments_for_error(patches, error, max_segments);
 }
 

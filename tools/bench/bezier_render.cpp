@@ -78,33 +78,6 @@ struct Setup {
     bool capped = false;
 };
 
-bz::Box control_box(const bz::TriangularPatch& patch) {
-    bz::Box box{patch.control_points()[0], patch.control_points()[0]};
-    for (const sxk::Point& p : patch.control_points())
-        for (std::size_t q = 0; q < 3; ++q) {
-            box.lower[q] = std::min(box.lower[q], p[q]);
-            box.upper[q] = std::max(box.upper[q], p[q]);
-        }
-    return box;
-}
-
-bool ray_meets(const bz::Box& box, const bz::Ray& ray) {
-    double low = ray.t_near, high = ray.t_far;
-    for (std::size_t q = 0; q < 3; ++q) {
-        if (ray.direction[q] == 0) {
-            if (ray.origin[q] < box.lower[q] || ray.origin[q] > box.upper[q]) return false;
-            continue;
-        }
-        double a = (box.lower[q] - ray.origin[q]) / ray.direction[q];
-        double b = (box.upper[q] - ray.origin[q]) / ray.direction[q];
-        if (a > b) std::swap(a, b);
-        low = std::max(low, a);
-        high = std::min(high, b);
-        if (low > high) return false;
-    }
-    return true;
-}
-
 // Traces size x size primary rays in parallel (rows as tasks); returns the number of hits.
 std::uint64_t trace(const Setup& setup, int size, const std::function<bool(const bz::Ray&)>& hits) {
     return tbb::parallel_reduce(
@@ -179,7 +152,7 @@ int main(int argc, char** argv) {
     const auto setup_start = std::chrono::steady_clock::now();
     try {
         setup.patches = bz::to_triangular(bz::read_bpt(teapot_path));
-        for (const bz::TriangularPatch& patch : setup.patches) setup.patch_boxes.push_back(control_box(patch));
+        for (const bz::TriangularPatch& patch : setup.patches) setup.patch_boxes.push_back(bz::box_of(patch.control_points()));
         setup.clipping = bz::Scene::from_patches(setup.patches);
         setup.tolerance = relative_tolerance * setup.clipping->bounds().diagonal();
         setup.camera = bz::frame(setup.clipping->bounds(), {1, -2, 1.2}, {0, 0, 1});
@@ -213,7 +186,7 @@ int main(int argc, char** argv) {
         bz::Ray nearest = ray;
         bool hit = false;
         for (std::size_t p = 0; p < s->patches.size(); ++p) {
-            if (!ray_meets(s->patch_boxes[p], nearest)) continue;
+            if (!bz::entry(nearest, s->patch_boxes[p])) continue;
             if (const auto found = bz::intersect(s->patches[p], nearest)) {
                 hit = true;
                 nearest.t_far = found->t;
