@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bezier_clipping.hpp"
+#include "patch_scene.hpp"
 #include "read_bpt.hpp"
 #include "sxk/io.hpp"
 #include "vector3.hpp"
@@ -32,9 +33,7 @@ constexpr int max_converted_degree = 12;
 void check_clipping(const sxk::bezier::TriangularPatch& patch) {
     using namespace sxk::bezier;
     using sxk::Point;
-    Point lower = patch.control_points()[0], upper = lower;
-    for (const Point& p : patch.control_points())
-        for (std::size_t c = 0; c < 3; ++c) lower[c] = std::min(lower[c], p[c]), upper[c] = std::max(upper[c], p[c]);
+    const auto [lower, upper] = box_of(patch.control_points());
     const double size = distance(lower, upper);
     const double scale = std::max({size, std::abs(lower[0]), std::abs(lower[1]), std::abs(lower[2]),
                                    std::abs(upper[0]), std::abs(upper[1]), std::abs(upper[2])});

@@ -10,34 +10,24 @@
 #include <vector>
 
 #include "bezier_clipping.hpp"
+#include "bezier_random.hpp"
 #include "core/fixtures.hpp"
+#include "patch_scene.hpp"
 #include "read_bpt.hpp"
 #include "vector3.hpp"
 
 namespace sxk::bezier {
 namespace {
 
+using test_random::random_patch;
+using test_random::random_point;
+
 Point along(const Ray& ray, double t) {
     return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
             ray.origin[2] + t * ray.direction[2]};
 }
 
-double diagonal(const TriangularPatch& patch) {
-    Point lower = patch.control_points()[0], upper = lower;
-    for (const Point& p : patch.control_points())
-        for (int c = 0; c < 3; ++c) {
-            lower[c] = std::min(lower[c], p[c]);
-            upper[c] = std::max(upper[c], p[c]);
-        }
-    return distance(lower, upper);
-}
-
-Barycentric random_point(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(0, 1);
-    double r = u(rng), s = u(rng);
-    if (r + s > 1) r = 1 - r, s = 1 - s;
-    return {r, s, 1 - r - s};
-}
+double diagonal(const TriangularPatch& patch) { return box_of(patch.control_points()).diagonal(); }
 
 Point random_direction(std::mt19937_64& rng) {
     std::normal_distribution<double> g;
@@ -96,13 +86,10 @@ TEST(BezierClipping, RayThroughTheSharedEdgeHitsAPatch) {
 
 TEST(BezierClipping, RaysAimedAtPointsOfCurvedPatchesHitThem) {
     std::mt19937_64 rng(test::seed_for("BezierClipping.RaysAimedAtPointsOfCurvedPatchesHitThem"));
-    std::uniform_real_distribution<double> coordinate(-1, 1);
     int rays = 0, at_target = 0;
     for (int degree = 1; degree <= 7; ++degree) {
         for (int trial = 0; trial < 10; ++trial) {
-            std::vector<Point> points(static_cast<std::size_t>((degree + 1) * (degree + 2) / 2));
-            for (Point& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
-            const TriangularPatch patch(degree, points);
+            const TriangularPatch patch = random_patch(degree, rng);
             for (int sample = 0; sample < 20; ++sample) {
                 const Barycentric target = random_point(rng);
                 const Point p = patch.evaluate(target);

@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "bezier_random.hpp"
 #include "core/fixtures.hpp"
 #include "read_bpt.hpp"
 #include "sxk/io.hpp"
@@ -22,21 +23,11 @@
 namespace sxk::bezier {
 namespace {
 
+using test_random::random_patch;
+using test_random::random_point;
+
 double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
 
-TriangularPatch random_patch(int degree, std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> coordinate(-1, 1);
-    std::vector<Point> points((degree + 1) * (degree + 2) / 2);
-    for (Point& p : points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
-    return TriangularPatch(degree, points);
-}
-
-Barycentric random_point(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    double r = unit(rng), s = unit(rng);
-    if (r + s > 1) r = 1 - r, s = 1 - s;
-    return {r, s, 1 - r - s};
-}
 
 // The Bernstein sum of the header, term by term.
 Point bernstein(const TriangularPatch& patch, const Barycentric& x) {

@@ -17,6 +17,7 @@
 #include <random>
 #include <vector>
 
+#include "bezier_random.hpp"
 #include "core/fixtures.hpp"
 #include "flat_subdivision.hpp"
 #include "patch_scene.hpp"
@@ -25,6 +26,8 @@
 
 namespace sxk::bezier {
 namespace {
+
+using test_random::random_point;
 
 Point along(const Ray& ray, double t) {
     return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
@@ -40,14 +43,6 @@ Ray downward(double x, double y) {
 }
 
 std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
-
-Barycentric random_point(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> unit(0, 1);
-    double r = unit(rng), s = unit(rng);
-    if (r + s > 1)
-        r = 1 - r, s = 1 - s;
-    return {r, s, 1 - r - s};
-}
 
 // A curved patch of the given degree over the unit triangle: a flat net lifted and jittered,
 // so that it bends but does not fold over itself.
