@@ -212,20 +212,29 @@ std::vector<fs::path> PluginHost::default_folders() {
     return {};
 }
 
-void PluginHost::load_default_folders() {
-    for (const fs::path& folder : default_folders()) {
-        std::error_code error;
-        if (fs::is_directory(folder, error)) load_folder(folder);
-    }
+std::vector<fs::path> PluginHost::search_folders() {
+    std::vector<fs::path> folders = default_folders();
     const char* environment = std::getenv("SXK_PLUGIN_PATH");
-    if (environment == nullptr) return;
+    if (environment == nullptr) return folders;
     std::string_view rest = environment;
     while (true) {
         const std::size_t colon = rest.find(':');
         const std::string_view folder = rest.substr(0, colon);
-        if (!folder.empty()) load_folder(fs::path(folder));
+        if (!folder.empty()) folders.emplace_back(folder);
         if (colon == std::string_view::npos) break;
         rest.remove_prefix(colon + 1);
+    }
+    return folders;
+}
+
+void PluginHost::load_default_folders() {
+    const std::size_t defaults = default_folders().size();
+    const std::vector<fs::path> folders = search_folders();
+    for (std::size_t i = 0; i < folders.size(); ++i) {
+        std::error_code error;
+        // a missing default folder is normal (no plug-ins built); a missing SXK_PLUGIN_PATH
+        // entry is reported by load_folder
+        if (i >= defaults || fs::is_directory(folders[i], error)) load_folder(folders[i]);
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include "mesh_checks.hpp"
 #include "sxk/mesh.hpp"
+#include "sxk/predicates.hpp"
 
 namespace sxk {
 
@@ -16,9 +17,29 @@ std::string element_name(ElementId t, const Simplex& s) {
     return "element " + std::to_string(t) + " " + to_text(s);
 }
 
+// Geometry after connectivity: the reference positions first (the shape the solver's stiffness
+// comes from), then the deformed ones.
+Outcome<Done> check_orientation(const Mesh& mesh, bool flat_is_invalid) {
+    for (const Positions positions : {Positions::reference, Positions::deformed}) {
+        const char* which = positions == Positions::reference ? "reference" : "deformed";
+        for (ElementId t : elements(mesh)) {
+            const Sign sign = element_orientation(mesh, t, positions);
+            if (sign == Sign::negative)
+                return Refusal{"element " + std::to_string(t) + " is inverted in the " + which +
+                                   " positions",
+                               t};
+            if (sign == Sign::zero && flat_is_invalid)
+                return Refusal{"element " + std::to_string(t) + " is flat in the " + which +
+                                   " positions",
+                               t};
+        }
+    }
+    return Done{};
+}
+
 }  // namespace
 
-Outcome<Done> Mesh::validate() const {
+Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
     const int k = m_dimension + 1;
     const std::size_t uk = static_cast<std::size_t>(k);
 
@@ -207,6 +228,8 @@ Outcome<Done> Mesh::validate() const {
                            " elements are reachable from element " + std::to_string(a) +
                            "; the mesh is pinched at this vertex)"};
     }
+    if (options.orientation && m_dimension == m_ambient)
+        return check_orientation(*this, options.flat_is_invalid);
     return Done{};
 }
 

@@ -1,14 +1,14 @@
-// PNG output through libpng's simplified API (render.hpp): 8-bit RGB, no colour management
-// beyond the sRGB bytes render() produces.
+// PNG output through libpng's simplified API (render.hpp): 8-bit RGB, no colour management beyond
+// the sRGB bytes render() produces; encoded in memory and written atomically.
 #include <png.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "render.hpp"
+#include "sxk/atomic_write.hpp"
 
 namespace sxk::bezier {
 
@@ -21,28 +21,27 @@ void write_png(const std::filesystem::path& path, const Image& image) {
                                     std::to_string(image.width) + "x" +
                                     std::to_string(image.height) + " with " +
                                     std::to_string(image.rgb.size()) + " bytes, not 3 per pixel");
-    // opened here, not by libpng, so that the reason (errno) reaches the message
-    std::FILE* file = std::fopen(name.c_str(), "wb");
-    if (file == nullptr)
-        throw std::runtime_error("cannot write " + name + ": " + std::strerror(errno));
+    // encoded in memory, then written atomically: a failed write (full disk) leaves no partial
+    // picture and an existing file as it was
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
     png.width = static_cast<png_uint_32>(image.width);
     png.height = static_cast<png_uint_32>(image.height);
     png.format = PNG_FORMAT_RGB;
-    const int written = png_image_write_to_stdio(&png, file, 0, image.rgb.data(), 0, nullptr);
+    png_alloc_size_t size = 0;
+    std::vector<unsigned char> encoded;
+    // the first call measures, the second encodes
+    int done = png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), 0, nullptr);
+    if (done != 0) {
+        encoded.resize(size);
+        done = png_image_write_to_memory(&png, encoded.data(), &size, 0, image.rgb.data(), 0,
+                                         nullptr);
+    }
     const std::string libpng_message = png.message;
     png_image_free(&png);
-    const bool stream_failed = std::ferror(file) != 0;
-    int failure = errno;
-    // fclose flushes: a full disk shows here
-    const bool closed = std::fclose(file) == 0;
-    if (!closed)
-        failure = errno;
-    if (written == 0)
-        throw std::runtime_error("cannot write " + name + ": libpng: " + libpng_message);
-    if (stream_failed || !closed)
-        throw std::runtime_error("cannot write " + name + ": " + std::strerror(failure));
+    if (done == 0)
+        throw OutputError("cannot write " + name + ": libpng: " + libpng_message);
+    write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), size));
 }
 
 }  // namespace sxk::bezier

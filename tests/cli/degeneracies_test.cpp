@@ -371,6 +371,31 @@ TEST(SxkDegeneracies, WhatCannotCollapseIsCutFree) {
     EXPECT_EQ(summarize_quality(result).degenerate, 0u);
 }
 
+// The spindle of spindle_mesh alone: cutting it free leaves no element at all. A file of no
+// elements is one no command reads, so the result is refused (exit 1) and the output that was
+// there before stays as it was.
+TEST(SxkDegeneracies, AnEmptyResultIsRefusedAndNothingWritten) {
+    DegeneraciesFixture f;
+    const fs::path in = f.input("lone_spindle.mesh", R"(MeshVersionFormatted 2
+Dimension 3
+Vertices
+4
+-1 0 0 0
+1 0 0 0
+0 0 0.004 0
+0 1 0 0
+Tetrahedra
+1
+2 1 3 4 0
+End
+)");
+    write_file(f.out, "precious\n");
+    const ProcessResult run = f.run(in, {"--boundary-tolerance", "0", "--no-flips", "--no-peel"});
+    EXPECT_EQ(run.exit_code, 1) << run.out;
+    EXPECT_EQ(run.err, "sxk: " + f.out.string() + ":0: cannot write: the mesh has no elements\n");
+    EXPECT_EQ(slurp(f.out), "precious\n");
+}
+
 TEST(SxkDegeneracies, WithoutCuttingFreeTheRemainingAreListed) {
     DegeneraciesFixture f;
     const fs::path in = f.input("spindle.mesh", spindle_mesh);

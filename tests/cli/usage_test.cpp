@@ -42,9 +42,14 @@ TEST(SxkUsage, NoCommandIsAUsageError) {
 }
 
 TEST(SxkUsage, UnknownCommandIsAUsageError) {
-    const ProcessResult run = sxk({"frobnicate", "x.mesh"});
+    // the build's plug-in folder first, then SXK_PLUGIN_PATH's folders in order
+    const std::string build_folder = std::string(SXK_BINARY_DIR) + "/lib/simplexkit/plugins";
+    // (folders that exist and hold no plug-ins, so that nothing else is printed)
+    const std::string docs = std::string(SXK_SOURCE_DIR) + "/docs", tools = std::string(SXK_SOURCE_DIR) + "/tools";
+    const ProcessResult run = sxk({"frobnicate", "x.mesh"}, {{"SXK_PLUGIN_PATH", docs + ":" + tools}});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: unknown command 'frobnicate' (see sxk --help and sxk plugins)\n");
+    EXPECT_EQ(run.err, "sxk: unknown command 'frobnicate' (see sxk --help and sxk plugins; plug-ins searched in " +
+                           build_folder + ", " + docs + ", " + tools + ")\n");
 }
 
 TEST(SxkUsage, UnknownOptionNamesTheCommand) {

@@ -48,6 +48,61 @@ TEST(SxkValidate, DuplicatedTetrahedronIsRefusedByTheOtherCommands) {
     EXPECT_EQ(run.err.rfind("sxk: " + mesh.string() + ":", 0), 0u) << run.err;
 }
 
+// One tetrahedron listed in the order that gives it negative volume: the connectivity is fine,
+// the geometry is not. The reader refuses it everywhere else ("element 1 is inverted").
+const char* inverted_tetrahedron_mesh = R"(MeshVersionFormatted 2
+Dimension 3
+Vertices
+4
+0 0 0 0
+1 0 0 0
+0 1 0 0
+0 0 1 0
+Tetrahedra
+1
+1 3 2 4 0
+End
+)";
+
+// A unit tetrahedron and a flat one (its four vertices in the plane z = 0) glued along 1-2-3.
+const char* flat_tetrahedron_mesh = R"(MeshVersionFormatted 2
+Dimension 3
+Vertices
+5
+0 0 0 0
+1 0 0 0
+0 1 0 0
+0 0 1 0
+1 1 0 0
+Tetrahedra
+2
+1 2 3 4 0
+1 3 2 5 0
+End
+)";
+
+TEST(SxkValidate, InvertedElementIsInvalid) {
+    ScratchFolder folder;
+    const fs::path mesh = folder / "inverted.mesh";
+    write_file(mesh, inverted_tetrahedron_mesh);
+    const ProcessResult run = sxk({"validate", mesh.string()});
+    EXPECT_EQ(run.exit_code, 1) << run.err;
+    EXPECT_EQ(run.out, mesh.string() + ": invalid: element 0 is inverted in the reference positions\n");
+    EXPECT_EQ(run.err, "");
+}
+
+TEST(SxkValidate, FlatElementIsReportedAndInvalidWithStrict) {
+    ScratchFolder folder;
+    const fs::path mesh = folder / "flat.mesh";
+    write_file(mesh, flat_tetrahedron_mesh);
+    const ProcessResult run = sxk({"validate", mesh.string()});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out, mesh.string() + ": valid (5 vertices, 2 tetrahedra); 1 flat element, first element 1 (--strict: invalid)\n");
+    const ProcessResult strict = sxk({"validate", mesh.string(), "--strict"});
+    EXPECT_EQ(strict.exit_code, 1) << strict.err;
+    EXPECT_EQ(strict.out, mesh.string() + ": invalid: element 1 is flat in the reference positions\n");
+}
+
 TEST(SxkValidate, UnreadableExitsTwo) {
     ScratchFolder folder;
     const fs::path mesh = folder / "garbage.mesh";

@@ -47,9 +47,10 @@ void add_refine_command(CLI::App& app, Context& context);
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options = {},
                               ReadReport* report = nullptr);
 
-// Writes a mesh under a progress indicator. On failure prints "sxk: FILE:0: reason" to
-// context.err and returns false (the caller exits with exit_refused: the mesh was read, the
-// writer refused it).
+// Writes a mesh under a progress indicator, atomically, and only when it has elements and
+// validates with the orientation check (WriteOptions::refuse_invalid). On failure prints
+// "sxk: FILE:0: reason" to context.err and returns false (the caller exits with exit_refused:
+// the mesh was read, the writer refused it; an existing FILE is left as it was).
 bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options = {});
 
 // "tetrahedron" / "triangle"; element_count_text: "1 tetrahedron", "2 tetrahedra".

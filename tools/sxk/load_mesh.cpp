@@ -25,7 +25,11 @@ std::optional<Mesh> load_mesh(Context& context, const std::string& file, const R
 bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options) {
     try {
         Progress progress("writing " + file);
-        write_mesh(mesh, file, options);
+        // a command's result must be a file every command accepts: refuse an empty or invalid
+        // mesh (exit 1 from the caller, nothing written)
+        WriteOptions checked = options;
+        checked.refuse_invalid = true;
+        write_mesh(mesh, file, checked);
         return true;
     } catch (const std::exception& error) {
         // the writers' messages read "cannot write FILE: why"; FILE is already in front

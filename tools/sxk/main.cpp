@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -95,7 +96,12 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     add_refine_command(app, context);
 
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {
-        err << "sxk: unknown command '" << args[0] << "' (see sxk --help and sxk plugins)\n";
+        // the command may belong to a plug-in that was not found: say where sxk looked
+        std::string searched;
+        for (const std::filesystem::path& folder : PluginHost::search_folders())
+            searched += (searched.empty() ? "" : ", ") + folder.string();
+        err << "sxk: unknown command '" << args[0] << "' (see sxk --help and sxk plugins; plug-ins searched in "
+            << (searched.empty() ? std::string("no folder") : searched) << ")\n";
         return exit_usage;
     }
     try {

@@ -100,11 +100,18 @@ struct WriteOptions {
     int gmsh_version = 41;                      // 22 or 41
     Positions positions = Positions::deformed;  // which coordinates go into the file
     bool quality_cell_data = true;              // .vtu: aspect ratio etc. per element
+    // Refuse (OutputError, nothing written) a mesh that does not pass Mesh::validate with the
+    // orientation check: inverted elements, broken connectivity. The sxk commands set it, so
+    // that a command's result is a file every command accepts, or no file.
+    bool refuse_invalid = false;
 };
 
 // Writes by extension (for TetGen give X.node or X.ele: writes X.node, X.ele and X.face, or
 // X.edge for a triangle mesh). Positions are written in the shortest form that reads back to
-// the same double, so write -> read is exact.
+// the same double, so write -> read is exact. Every file is written atomically
+// (sxk/atomic_write.hpp): a failed write leaves no partial file and an existing target as it
+// was, and a TetGen set is written whole or not at all. A mesh without elements is refused
+// ("the mesh has no elements"): no reader accepts such a file.
 // OFF and OBJ hold triangles: a tetrahedral mesh is written as its boundary surface.
 // Throws OutputError.
 SXK_API void write_mesh(const Mesh& mesh, const std::filesystem::path& path,

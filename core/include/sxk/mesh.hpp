@@ -71,6 +71,12 @@ struct ElementSubstitution {
 // of the face in the mesh or in the file: a label belongs to the vertex set, not to one side.
 using FaceLabels = std::unordered_map<Simplex, int, SimplexHash>;
 
+// What Mesh::validate checks besides the connectivity invariants.
+struct ValidateOptions {
+    bool orientation = false;      // exact orientation in both position sets: inverted is invalid
+    bool flat_is_invalid = false;  // with orientation: a flat element is invalid too
+};
+
 class SXK_API Mesh {
 public:
     // topological_dimension: 2 (triangles) or 3 (tetrahedra); ambient_dimension: 2 or 3, at
@@ -253,7 +259,13 @@ public:
     // Checks invariants 7.1-7.5, that no element or face is represented twice, vertex anchors,
     // and face-connected vertex stars. Returns the first broken invariant in words, e.g.
     // "invariant 7.3 (mate): face 12 of element 4 ...". O(n) expected time.
-    Outcome<Done> validate() const;
+    // With ValidateOptions::orientation also the geometry, after the connectivity: the exact
+    // orientation of every element in the reference and then the deformed positions (where the
+    // topological dimension equals the ambient one; a triangle surface in space has no
+    // orientation to check). An inverted element is invalid ("element 7 is inverted in the
+    // deformed positions"), a flat one (orientation exactly zero) only with flat_is_invalid
+    // ("element 7 is flat in the reference positions"). The refusal's item is the element.
+    Outcome<Done> validate(const ValidateOptions& options = {}) const;
 
     // ---- watchers -----------------------------------------------------------------------------
     // The watcher must outlive its registration; it is initialised at once.

@@ -68,6 +68,10 @@ public:
     // exist). Empty when this library cannot find its own file.
     static std::vector<std::filesystem::path> default_folders();
 
+    // default_folders() followed by the folders of SXK_PLUGIN_PATH: what load_default_folders()
+    // searches, in its order (for messages such as sxk's "unknown command").
+    static std::vector<std::filesystem::path> search_folders();
+
     // Loads every plug-in of the default folders; missing default folders are skipped quietly,
     // a missing SXK_PLUGIN_PATH entry is reported.
     void load_default_folders();

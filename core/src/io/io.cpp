@@ -6,6 +6,7 @@
 #include <istream>
 
 #include "formats.hpp"
+#include "sxk/atomic_write.hpp"
 #include "text.hpp"
 
 namespace sxk {
@@ -160,21 +161,30 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
     if (!format)
         throw OutputError("cannot write " + path.string() + ": unknown mesh file extension '" +
                           path.extension().string() + "'");
+    if (mesh.element_count() == 0)
+        throw OutputError("cannot write " + path.string() + ": the mesh has no elements");
+    if (options.refuse_invalid) {
+        ValidateOptions checks;
+        checks.orientation = true;
+        if (const Outcome<Done> valid = mesh.validate(checks); !valid)
+            throw OutputError("cannot write " + path.string() + ": the mesh is invalid: " +
+                              valid.reason());
+    }
     switch (*format) {
         case Format::medit:
-            io::write_file(path, io::write_medit(mesh, options));
+            write_file_atomically(path, io::write_medit(mesh, options));
             return;
         case Format::gmsh:
-            io::write_file(path, io::write_gmsh(mesh, options));
+            write_file_atomically(path, io::write_gmsh(mesh, options));
             return;
         case Format::off:
-            io::write_file(path, io::write_off(mesh, options));
+            write_file_atomically(path, io::write_off(mesh, options));
             return;
         case Format::obj:
-            io::write_file(path, io::write_obj(mesh, options));
+            write_file_atomically(path, io::write_obj(mesh, options));
             return;
         case Format::vtu:
-            io::write_file(path, io::write_vtu(mesh, options));
+            write_file_atomically(path, io::write_vtu(mesh, options));
             return;
         case Format::tetgen: {
             const io::TetgenFiles files = io::write_tetgen(mesh, options);
@@ -182,9 +192,9 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
             node.replace_extension(".node");
             ele.replace_extension(".ele");
             face.replace_extension(mesh.topological_dimension() == 3 ? ".face" : ".edge");
-            io::write_file(node, files.node);
-            io::write_file(ele, files.ele);
-            io::write_file(face, files.face);
+            // all three or none: a set with a new .node and an old .ele is no mesh
+            const FileContent set[] = {{node, files.node}, {ele, files.ele}, {face, files.face}};
+            write_files_atomically(set);
             return;
         }
     }

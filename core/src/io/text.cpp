@@ -323,17 +323,4 @@ void append_number(std::string& out, std::int64_t value) {
     out.append(buffer, result.ptr);
 }
 
-void write_file(const std::filesystem::path& path, std::string_view data) {
-    const std::string name = path.string();
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "wb"),
-                                                         &std::fclose);
-    if (!file)
-        throw OutputError("cannot write " + name + ": " + std::strerror(errno));
-    if (std::fwrite(data.data(), 1, data.size(), file.get()) != data.size())
-        throw OutputError("cannot write " + name + ": " + std::strerror(errno));
-    // a full disk often shows only when the buffer is flushed
-    if (std::fclose(file.release()) != 0)
-        throw OutputError("cannot write " + name + ": " + std::strerror(errno));
-}
-
 }  // namespace sxk::io

@@ -123,7 +123,4 @@ inline void append_xyz(std::string& out, const std::array<double, 3>& p) {
     append_number(out, p[2]);
 }
 
-// Writes `data` to `path` in one go; OutputError when it cannot (open, write or close fails).
-void write_file(const std::filesystem::path& path, std::string_view data);
-
 }  // namespace sxk::io
