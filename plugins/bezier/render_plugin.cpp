@@ -95,7 +95,8 @@ constexpr int max_image_side = 16384;
 constexpr int max_segments = 512;
 // Bounds on what a small input can ask for (issue 12): a picture of 2^26 pixels (8192x8192) is
 // 201 MB of RGB and about 20 s of the teapot's primary rays on two cores; 2^24 tessellation
-// triangles (the teapot at 512 segments) take about 2 GB with Embree's BVH.
+// triangles (the teapot at 512 segments) about 2.3 GB with Embree's BVH (docs/performance.md:
+// 4.6 GB for 2^25).
 constexpr long long max_pixels = 1LL << 26;
 constexpr long long max_tessellation_triangles = 1LL << 24;
 // and 2^31 de Casteljau point steps to evaluate a tessellation's vertices, about 4 s of CPU:
@@ -362,7 +363,6 @@ int default_segments(const std::vector<TriangularPatch>& patches, int largest) {
     return segments_for_error(patches, error, largest);
 }
 
-// The patch file's scene; nullopt when it cannot be read (the message is printed).
 // A usage error found once the patches are read: the message, the hint, nullopt (exit 2).
 std::nullopt_t refuse(const std::string& why, std::ostream& err) {
     err << "sxk: render: " << why << "\nRun 'sxk render --help' for more information.\n";
