@@ -1,4 +1,5 @@
-// Boxes (patch_scene.hpp): of points, of patches' control points, and where a ray enters one.
+// Boxes (patch_scene.hpp): of points, of patches' control points, where a ray enters one, and
+// the smallest flatness a box's rounding resolves.
 #include "patch_scene.hpp"
 
 #include <algorithm>
@@ -30,6 +31,16 @@ Box box_of(const std::vector<TriangularPatch>& patches) {
             box.lower[q] = std::min(box.lower[q], own.lower[q]), box.upper[q] = std::max(box.upper[q], own.upper[q]);
     }
     return box;
+}
+
+double smallest_flatness(const Box& box) {
+    const double diagonal = box.diagonal();
+    if (!(diagonal > 0))
+        return 0;
+    double largest_coordinate = 0;
+    for (std::size_t q = 0; q < 3; ++q)
+        largest_coordinate = std::max({largest_coordinate, std::abs(box.lower[q]), std::abs(box.upper[q])});
+    return 1e-12 * (diagonal + largest_coordinate) / diagonal;
 }
 
 std::optional<double> entry(const Ray& ray, const Box& box) {

@@ -53,6 +53,47 @@ void move_corner(int n, std::span<const Point> net, int corner, const Barycentri
     }
 }
 
+void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out, NetScratch& scratch) {
+    const auto average = [](const Point& p, const Point& q) {
+        return Point{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2};
+    };
+    out.resize(net_size(n));
+    std::vector<Point>& level = scratch.a;  // the net after k steps with AB, degree m = n - k
+    std::vector<Point>& line = scratch.b;
+    std::vector<Point>& edge = scratch.c;
+    level.assign(net.begin(), net.end());
+    line.resize(static_cast<std::size_t>(n) + 1);
+    const auto size = static_cast<std::size_t>(n) + 1;
+    edge.resize(size * size);
+    for (int k = 0; k <= n; ++k) {
+        const int m = n - k;
+        // edge[j * size + s]: the entry (0, s, m - j - s) of the level after j steps with CA.
+        // Those steps keep s: along the line of index s (entries (r, s, m - s - r), r = 0..m - s)
+        // each averages neighbours, and the entry r = 0 after j of them is the pyramid's edge.
+        for (int s = 0; s <= m; ++s) {
+            const int length = m - s;
+            for (int r = 0; r <= length; ++r)
+                line[static_cast<std::size_t>(r)] = level[net_index(m, s, length - r)];
+            for (int j = 0; j <= length; ++j) {
+                edge[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(s)] = line[0];
+                for (int r = 0; r < length - j; ++r)
+                    line[static_cast<std::size_t>(r)] = average(line[static_cast<std::size_t>(r)], line[static_cast<std::size_t>(r + 1)]);
+            }
+        }
+        // then i = m - j steps with BC, which keep r = 0: the curve (0, s, i - s) at 1/2
+        for (int j = 0; j <= m; ++j) {
+            const int i = m - j;
+            for (int s = 0; s <= i; ++s)
+                line[static_cast<std::size_t>(s)] = edge[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(s)];
+            for (int step = 0; step < i; ++step)
+                for (int s = 0; s < i - step; ++s)
+                    line[static_cast<std::size_t>(s)] = average(line[static_cast<std::size_t>(s)], line[static_cast<std::size_t>(s + 1)]);
+            out[net_index(n, j, k)] = line[0];
+        }
+        if (m > 0) de_casteljau_step(m, level.data(), {0.5, 0.5, 0}, level.data());
+    }
+}
+
 namespace {
 
 bool subdivide_by_corner_moves(int n, std::span<const Point> net, const std::array<Barycentric, 3>& sub,

@@ -40,10 +40,19 @@ Point evaluate_in_place(int n, Point* net, const Barycentric& x);
 void move_corner(int n, std::span<const Point> net, int corner, const Barycentric& x, std::vector<Point>& out,
                  std::vector<Point>& level);
 
-// Scratch space for subdivide_net, kept by callers that subdivide often.
+// Scratch space for subdivide_net and middle_quarter, kept by callers that subdivide often.
 struct NetScratch {
     std::vector<Point> a, b, c;
 };
+
+// The net over the middle quarter (BC, CA, AB) of the domain, B C the midpoint of corners s and
+// t and so on (the middle child of Roth's four-way split, §6.4): c_ijk = b[BC^i CA^j AB^k]. No
+// three convex corner moves reach that triangle, and the general blossom costs O(n^5); but each
+// argument lies on an edge, so its de Casteljau steps act along lines of the net (AB keeps the
+// t index, CA the s index, BC the r index): AB's steps as a pyramid over the net, O(n^3), then
+// per level CA's and BC's as univariate pyramids at 1/2 along lines, O(n^4) in all, every step
+// an average.
+void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out, NetScratch& scratch);
 
 // The net over the sub-triangle (R, S, T) of the domain (eq. 4.33): c_ijk = b[R^i, S^j, T^k],
 // R, S, T anywhere (outside the domain too). By three corner moves of O(n^3) each where every

@@ -4,11 +4,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 
+#include "de_casteljau.hpp"
 #include "patch_scene.hpp"
 #include "vector3.hpp"
 
@@ -20,13 +22,32 @@ Barycentric midpoint(const Barycentric& a, const Barycentric& b) {
     return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
 }
 
-// Splits `original` over `corners` until flat, appending the pieces depth first. The pieces are
-// always cut from the original patch (not from their parent): the corners are dyadic
-// barycentric points, exact in binary, so no rounding accumulates over the levels.
-void split(const TriangularPatch& original, std::uint32_t index,
-           const std::array<Barycentric, 3>& corners, TriangularPatch piece, double max_height,
-           int depth_left, std::vector<SubPatch>& out) {
+// The memory budget shared by all patches' splits (they run in parallel).
+struct Budget {
+    std::size_t max_bytes;
+    std::atomic<std::size_t> used{0};
+    std::atomic<bool> exceeded{false};
+};
+
+// Splits `piece` (the patch over `corners`) until flat, appending the pieces depth first. The
+// children are cut from the piece itself, in its own coordinates: the corner quarters by three
+// convex corner moves, the middle one by middle_quarter (de_casteljau.hpp), O(n^3) and O(n^4)
+// where cutting the middle quarters of the original patch at depth d needed the general blossom,
+// O(n^5), 94% of sxk render's time on degree-40 patches. Every step is a convex combination
+// (mostly an average), so rounding grows by about 3n steps per level, eight levels at most
+// (smallest_flatness allows for it). The corners stay in the original patch's coordinates, exact
+// in binary (dyadic). Returns early, keeping nothing more, once the budget is exceeded (by this
+// split or another).
+void split(std::uint32_t index, const std::array<Barycentric, 3>& corners, TriangularPatch piece,
+           double max_height, int depth_left, Budget& budget, std::vector<SubPatch>& out) {
+    if (budget.exceeded.load(std::memory_order_relaxed))
+        return;
     if (depth_left == 0 || roth_height(piece) <= max_height) {
+        const std::size_t bytes = leaf_bytes(piece.degree());
+        if (budget.used.fetch_add(bytes, std::memory_order_relaxed) + bytes > budget.max_bytes) {
+            budget.exceeded.store(true, std::memory_order_relaxed);
+            return;
+        }
         out.push_back(SubPatch{std::move(piece), index, corners});
         return;
     }
@@ -35,12 +56,32 @@ void split(const TriangularPatch& original, std::uint32_t index,
     // counterclockwise like a, b, c (drawing in the header), so orientation is kept
     const std::array<std::array<Barycentric, 3>, 4> children{
         {{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {bc, ca, ab}}};
-    for (const auto& child : children)
-        split(original, index, child, original.subdivided(child[0], child[1], child[2]), max_height,
-              depth_left - 1, out);
+    // the same four in the piece's own coordinates
+    constexpr Barycentric r{1, 0, 0}, s{0, 1, 0}, t{0, 0, 1}, rs{0.5, 0.5, 0}, st{0, 0.5, 0.5},
+        tr{0.5, 0, 0.5};
+    constexpr std::array<std::array<Barycentric, 3>, 3> local{{{r, rs, tr}, {rs, s, st}, {tr, st, t}}};
+    for (std::size_t child = 0; child < 3; ++child)
+        split(index, children[child],
+              piece.subdivided(local[child][0], local[child][1], local[child][2]), max_height,
+              depth_left - 1, budget, out);
+    std::vector<Point> middle;
+    NetScratch scratch;
+    middle_quarter(piece.degree(), piece.control_points(), middle, scratch);
+    split(index, children[3], TriangularPatch(piece.degree(), std::move(middle)), max_height,
+          depth_left - 1, budget, out);
 }
 
 }  // namespace
+
+std::size_t leaf_bytes(int degree) {
+    return net_size(degree) * sizeof(Point) + 256;
+}
+
+SubdivisionTooLarge::SubdivisionTooLarge(std::size_t max_bytes, std::size_t pieces)
+    : std::length_error("flat_subdivision: the pieces would take more than " +
+                        std::to_string(max_bytes) + " bytes (" + std::to_string(pieces) +
+                        " made when it stopped)"),
+      m_max_bytes(max_bytes), m_pieces(pieces) {}
 
 double roth_height(const TriangularPatch& patch) {
     const int n = patch.degree();
@@ -71,7 +112,7 @@ double roth_height(const TriangularPatch& patch) {
 }
 
 std::vector<SubPatch> flat_subdivision(const std::vector<TriangularPatch>& patches,
-                                       double max_height, int max_depth) {
+                                       double max_height, int max_depth, std::size_t max_bytes) {
     if (max_depth < 0)
         throw std::invalid_argument("flat_subdivision: max_depth " + std::to_string(max_depth) +
                                     " < 0");
@@ -80,14 +121,17 @@ std::vector<SubPatch> flat_subdivision(const std::vector<TriangularPatch>& patch
                                     " is negative or NaN");
     // patches are independent: split them in parallel, then concatenate in patch order
     std::vector<std::vector<SubPatch>> pieces(patches.size());
+    Budget budget{max_bytes};
     tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t i) {
         const std::array<Barycentric, 3> domain{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-        split(patches[i], static_cast<std::uint32_t>(i), domain, patches[i], max_height, max_depth,
+        split(static_cast<std::uint32_t>(i), domain, patches[i], max_height, max_depth, budget,
               pieces[i]);
     });
     std::size_t total = 0;
     for (const auto& list : pieces)
         total += list.size();
+    if (budget.exceeded)
+        throw SubdivisionTooLarge(max_bytes, total);
     std::vector<SubPatch> all;
     all.reserve(total);
     for (auto& list : pieces)

@@ -12,7 +12,10 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "triangular_patch.hpp"
@@ -37,10 +40,31 @@ struct SubPatch {
 // the control points' bounding box, an upper bound of any extent.
 double roth_height(const TriangularPatch& patch);
 
+// The memory a piece of degree n is counted with against flat_subdivision's max_bytes: its
+// (n+1)(n+2)/2 control points of 24 bytes and 256 bytes for the SubPatch itself and its share
+// of Embree's BVH.
+std::size_t leaf_bytes(int degree);
+
+// flat_subdivision stopped because the pieces would take more than max_bytes: a small input can
+// ask for 4^max_depth pieces per patch (a tiny max_height, or patches too wiggly to become flat
+// soon), which is more memory than the machine has. `pieces` were made when it stopped.
+class SubdivisionTooLarge : public std::length_error {
+public:
+    SubdivisionTooLarge(std::size_t max_bytes, std::size_t pieces);
+    std::size_t max_bytes() const { return m_max_bytes; }
+    std::size_t pieces() const { return m_pieces; }
+
+private:
+    std::size_t m_max_bytes, m_pieces;
+};
+
 // Every patch split into four, recursively, until roth_height <= max_height or `max_depth`
 // splits were made; the pieces in patch order, each patch's pieces in depth-first order.
-// Throws std::invalid_argument for max_depth < 0 or a negative or NaN max_height.
+// Throws std::invalid_argument for max_depth < 0 or a negative or NaN max_height, and
+// SubdivisionTooLarge as soon as the pieces made would take more than max_bytes (leaf_bytes
+// each): then every patch's split stops, so the memory held stays near max_bytes.
 std::vector<SubPatch> flat_subdivision(const std::vector<TriangularPatch>& patches,
-                                       double max_height, int max_depth);
+                                       double max_height, int max_depth,
+                                       std::size_t max_bytes = std::numeric_limits<std::size_t>::max());
 
 }  // namespace sxk::bezier

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -210,9 +211,18 @@ Scene Scene::from_patches(std::vector<TriangularPatch> patches, const PatchScene
     impl->clipping = options.clipping;
     impl->box = box_of(patches);
     const double diagonal = impl->box.diagonal();
+    if (options.flatness < smallest_flatness(impl->box)) {
+        char message[160];
+        std::snprintf(message, sizeof message,
+                      "Scene::from_patches: flatness %g is below the smallest the scene's rounding "
+                      "resolves, %.3g",
+                      options.flatness, smallest_flatness(impl->box));
+        throw std::invalid_argument(message);
+    }
     impl->bounds_margin = rounding_margin(impl->box);
     impl->trace_box = widened(impl->box, 2 * impl->bounds_margin);
-    impl->leaves = flat_subdivision(patches, options.flatness * diagonal, options.max_depth);
+    impl->leaves =
+        flat_subdivision(patches, options.flatness * diagonal, options.max_depth, options.max_bytes);
     impl->patches = std::move(patches);
 
     impl->scene = embree::new_scene(impl->device);

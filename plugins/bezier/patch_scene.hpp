@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -49,8 +50,20 @@ struct PatchSceneOptions {
     double flatness = 1e-3;
     // Bound on the split depth (4^depth sub-patches per patch at most).
     int max_depth = 8;
+    // Bound on the sub-patches' memory (leaf_bytes each, flat_subdivision.hpp): 1 GiB, about
+    // 1.1 million sextic or 51,000 degree-40 sub-patches; the teapot takes 8.4 MB at 1e-3.
+    std::size_t max_bytes = std::size_t{1} << 30;
     ClippingOptions clipping{};
 };
+
+// The smallest flatness whose height double rounding can still tell apart in a scene with this
+// box: 1e-12 x (diagonal + largest |coordinate|) / diagonal (0 for a box of one point). A
+// sub-patch's control points carry the rounding of the de Casteljau steps that cut it, about
+// 3n steps of 2^-53 x the largest coordinate per level at degree n, 1.1e-13 at n = 40 (read_bpt's
+// highest) after the 8 levels of max_depth, and its height the rounding of the products
+// measuring it: heights below 1e-12 of that scale are rounding, and splitting toward them only
+// ends at max_depth.
+double smallest_flatness(const Box& box);
 
 struct TriangleSoup {
     std::vector<Point> vertices;
@@ -59,6 +72,8 @@ struct TriangleSoup {
 
 class Scene {
 public:
+    // Throws std::invalid_argument for a flatness below smallest_flatness(box_of(patches)) and
+    // SubdivisionTooLarge (flat_subdivision.hpp) when the sub-patches exceed options.max_bytes.
     static Scene from_patches(std::vector<TriangularPatch> patches,
                               const PatchSceneOptions& options = {});
     static Scene from_triangles(TriangleSoup soup);

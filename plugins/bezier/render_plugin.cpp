@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command_line.hpp"
+#include "flat_subdivision.hpp"
 #include "mesh_surface.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
@@ -92,6 +93,17 @@ namespace {
 
 constexpr int max_image_side = 16384;
 constexpr int max_segments = 512;
+// Bounds on what a small input can ask for (issue 12): a picture of 2^26 pixels (8192x8192) is
+// 201 MB of RGB and about 20 s of the teapot's primary rays on two cores; 2^24 tessellation
+// triangles (the teapot at 512 segments) about 2.3 GB with Embree's BVH (docs/performance.md:
+// 4.6 GB for 2^25).
+constexpr long long max_pixels = 1LL << 26;
+constexpr long long max_tessellation_triangles = 1LL << 24;
+// and 2^31 de Casteljau point steps to evaluate a tessellation's vertices, about 4 s of CPU:
+// the teapot at 512 segments takes 4.7e8, 400 degree-40 patches allow 29 segments. The default
+// count's search measures several tessellations with 2.5 segments^2 more points each, so it
+// searches only counts whose tessellation takes a sixteenth of that.
+constexpr long long max_tessellation_steps = 1LL << 31;
 constexpr const char* known_inputs = ".bpt .mesh .msh .node .ele .off .obj";
 
 // Default views: patch files and 3D meshes from the front-left and above (z up, as the teapot
@@ -344,12 +356,38 @@ std::string plural(std::size_t count, const char* one, const char* many) {
 // shows the whole scene.
 constexpr double default_tessellation_error = 1e-4;
 
-int default_segments(const std::vector<TriangularPatch>& patches) {
+int default_segments(const std::vector<TriangularPatch>& patches, int largest) {
     const double error = default_tessellation_error * box_of(patches).diagonal();
-    return segments_for_error(patches, error, max_segments);
+    if (!(error > 0))
+        return 1;  // all control points coincide
+    return segments_for_error(patches, error, largest);
 }
 
-// The patch file's scene; nullopt when it cannot be read (the message is printed).
+// A usage error found once the patches are read: the message, the hint, nullopt (exit 2).
+std::nullopt_t refuse(const std::string& why, std::ostream& err) {
+    err << "sxk: render: " << why << "\nRun 'sxk render --help' for more information.\n";
+    return std::nullopt;
+}
+
+std::string number_text(double value, const char* format = "%g") {
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// The smallest --flatness the patches' scene accepts (smallest_flatness) rounded up to three
+// digits, as text and as the number that text reads back to (which is what is compared, so the
+// value the message names is accepted).
+std::pair<std::string, double> smallest_accepted_flatness(const Box& box) {
+    const double smallest = smallest_flatness(box);
+    std::string text = number_text(smallest, "%.2e");
+    if (std::stod(text) < smallest)
+        text = number_text(smallest * 1.005, "%.2e");
+    return {text, std::stod(text)};
+}
+
+// The patch file's scene; nullopt when it cannot be read or the options ask for more than it
+// can do (the message is printed).
 std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream& err) {
     std::vector<TensorPatch> tensors;
     try {
@@ -369,7 +407,25 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
     facts["bpt_patches"] = tensors.size();
     if (!options.tessellate) {
         facts["flatness"] = options.flatness;
-        Scene scene = Scene::from_patches(patches, scene_options);
+        const std::string flatness = "--flatness " + number_text(options.flatness) +
+                                     (options.flatness_given ? "" : " (the default)");
+        const auto [smallest_text, smallest] = smallest_accepted_flatness(box_of(patches));
+        if (options.flatness < smallest)
+            return refuse(flatness + " is below what double rounding resolves in " + options.input +
+                              "; the smallest accepted is " + smallest_text,
+                          err);
+        std::optional<Scene> built;
+        try {
+            built = Scene::from_patches(patches, scene_options);
+        } catch (const SubdivisionTooLarge& too_large) {
+            return refuse(flatness + " splits the patches of " + options.input +
+                              " into more sub-patches than fit in " +
+                              std::to_string(too_large.max_bytes() >> 20) + " MiB (" +
+                              std::to_string(too_large.pieces()) +
+                              " made when it stopped); use a larger --flatness",
+                          err);
+        }
+        Scene scene = std::move(*built);
         // primitives are the triangular patches, two per .bpt patch (to_triangular)
         auto colour = [by_label](const SceneHit& hit) {
             return by_label ? label_colour(static_cast<int>(hit.primitive / 2)) : plain_colour();
@@ -377,7 +433,42 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
         return Drawing{std::move(scene), options.colour.empty() ? "plain" : options.colour, colour,
                        facts, plural(patches.size(), "patch", "patches")};
     }
-    const int segments = options.segments_given ? options.segments : default_segments(patches);
+    // the largest count within max_tessellation_triangles, and within max_tessellation_steps:
+    // a vertex costs one de Casteljau evaluation at the highest degree, n(n+1)(n+2)/6 steps
+    const auto count = static_cast<long long>(patches.size());
+    const auto fitting = static_cast<int>(std::sqrt(static_cast<double>(max_tessellation_triangles) /
+                                                    static_cast<double>(count)));
+    int degree = 0;
+    for (const TriangularPatch& patch : patches)
+        degree = std::max(degree, patch.degree());
+    const long long steps = static_cast<long long>(degree) * (degree + 1) * (degree + 2) / 6;
+    const auto work = [&](int n) { return count * (n + 1) * (n + 2) / 2 * steps; };
+    int affordable = max_segments;
+    while (affordable > 1 && work(affordable) > max_tessellation_steps)
+        --affordable;
+    if (options.segments_given && options.segments > fitting) {
+        const long long triangles = count * options.segments * options.segments;
+        return refuse("--segments " + std::to_string(options.segments) + " gives " +
+                          std::to_string(count) + " patches x " + std::to_string(options.segments) +
+                          "^2 = " + std::to_string(triangles) + " triangles, more than the " +
+                          std::to_string(max_tessellation_triangles) + " allowed; use --segments " +
+                          std::to_string(fitting) + " or fewer",
+                      err);
+    }
+    if (options.segments_given && options.segments > affordable) {
+        const int n = options.segments;
+        return refuse("--segments " + std::to_string(n) + " evaluates " + std::to_string(count) +
+                          " patches x " + std::to_string((n + 1) * (n + 2) / 2) + " points x " +
+                          std::to_string(steps) + " de Casteljau steps (degree " +
+                          std::to_string(degree) + ") = " + std::to_string(work(n)) +
+                          ", more than the " + std::to_string(max_tessellation_steps) +
+                          " allowed; use --segments " + std::to_string(affordable) + " or fewer",
+                      err);
+    }
+    int searched = std::min(fitting, affordable);
+    while (searched > 1 && 16 * work(searched) > max_tessellation_steps)
+        --searched;
+    const int segments = options.segments_given ? options.segments : default_segments(patches, searched);
     facts["segments"] = segments;
     TriangleSoup soup = tessellate(patches, segments);
     facts["triangles"] = soup.triangles.size();
@@ -493,10 +584,16 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
     return 0;
 }
 
-// Options that do not fit the input's kind: a usage error, found before anything is read.
+// Options that do not fit the input's kind, or a picture beyond max_pixels: a usage error, found
+// before anything is read.
 bool refuse_options_for(const CommandOptions& options, bool patches, std::ostream& err) {
     std::string why;
-    if (patches && options.colour == "quality") {
+    const std::array<int, 2> size = *parse_size(options.size);
+    if (static_cast<long long>(size[0]) * size[1] > max_pixels) {
+        why = "--size " + options.size + " has " +
+              std::to_string(static_cast<long long>(size[0]) * size[1]) + " pixels, more than the " +
+              std::to_string(max_pixels) + " allowed (8192x8192)";
+    } else if (patches && options.colour == "quality") {
         why = "--colour quality needs a mesh; " + options.input + " holds patches";
     } else if (patches && options.cut_label) {
         why = "--cut-label needs a mesh; " + options.input + " holds patches";

@@ -17,12 +17,6 @@ Point combination(double a, const Point& p, double b, const Point& q, double c, 
     return {a * p[0] + b * q[0] + c * r[0], a * p[1] + b * q[1] + c * r[1], a * p[2] + b * q[2] + c * r[2]};
 }
 
-double binomial(int n, int k) {
-    double b = 1;
-    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-    return b;
-}
-
 }  // namespace
 
 TriangularPatch::TriangularPatch(int degree, std::vector<Point> control_points)
@@ -128,34 +122,57 @@ Point tensor_blossom(const TensorPatch& patch, std::span<const double> us, std::
     return column[0];
 }
 
-// Q(x) = P(A x_r + B x_s + C x_t) has total degree m + n; its blossom at i copies of A, j of
-// B and k of C (the control point c_ijk over the triangle A B C) is the average of the tensor
-// blossom over the ways to give m of those m + n arguments to u and the rest to v.
-TriangularPatch triangle_of(const TensorPatch& patch, const std::array<std::array<double, 2>, 3>& corners) {
+// Pascal's triangle up to row `rows`: binomial(a, b) = table[a * (rows + 1) + b]. Exact in
+// double up to row 56 (C(56, 28) < 2^53); read_bpt's degrees need row 40.
+std::vector<double> pascal(int rows) {
+    const auto size = static_cast<std::size_t>(rows + 1);
+    std::vector<double> table(size * size, 0.0);
+    for (std::size_t a = 0; a < size; ++a) {
+        table[a * size] = 1;
+        for (std::size_t b = 1; b <= a; ++b) table[a * size + b] = table[(a - 1) * size + b - 1] + table[(a - 1) * size + b];
+    }
+    return table;
+}
+
+// Q(x) = P(u(x), v(x)) over a triangle whose corners have u and v in {0, 1} (the two halves of
+// the unit square). Goldman–Filip by products of Bernstein polynomials: with x the barycentric
+// coordinates of the triangle,
+//   P(x) = sum_b B_b^n(v(x)) Q_b(x),   Q_b(x) = sum_a B_a^m(u(x)) P_ab.
+// Q_b, a curve in the affine function u(x), has the triangular Bernstein coefficients
+// q_beta = (its blossom at beta_0 copies of u(A), beta_1 of u(B), beta_2 of u(C)) =
+// P_(beta . u_corners) b, as the blossom of a Bézier curve at p zeros and q ones is its control
+// point q; likewise B_b^n(v(x)) has the coefficient 1 at the alpha with alpha . v_corners = b
+// and 0 elsewhere. The product rule B_alpha^n B_beta^m = [M(n,alpha) M(m,beta) / M(m+n,
+// alpha+beta)] B_(alpha+beta)^(m+n) (M: multinomials) then gives, for gamma = alpha + beta,
+//   c_gamma = sum_(alpha + beta = gamma) C(gamma_0,beta_0) C(gamma_1,beta_1) C(gamma_2,beta_2)
+//             / C(m+n, m) * P_(beta . u_corners)(alpha . v_corners),
+// a convex combination (Vandermonde: the weights of one gamma sum to 1). It is the blossom
+// formula (c_gamma the average of the tensor blossom over the ways to give m of gamma's m + n
+// corner arguments to u) with each blossom at corner arguments read off as a control point
+// instead of evaluated by de Casteljau: (m+1)(m+2)/2 x (n+1)(n+2)/2 terms, 53,361 for 20 x 20,
+// where one blossom per term cost O(m n (m + n)) more.
+TriangularPatch triangle_of(const TensorPatch& patch, const std::array<std::array<int, 2>, 3>& corners) {
     const int m = patch.degree_u, n = patch.degree_v, degree = m + n;
-    std::vector<Point> points(net_size(degree));
-    std::vector<double> us, vs;
-    for (int k = 0; k <= degree; ++k)
-        for (int j = 0; j <= degree - k; ++j) {
-            const int i = degree - j - k;
-            const std::array<int, 3> copies{i, j, k};
-            Point sum{0, 0, 0};
-            for (int a = 0; a <= std::min(i, m); ++a)
-                for (int b = 0; b <= std::min(j, m - a); ++b) {
-                    const int c = m - a - b;
-                    if (c > k) continue;
-                    const std::array<int, 3> to_u{a, b, c};
-                    const double weight = binomial(i, a) * binomial(j, b) * binomial(k, c) / binomial(degree, m);
-                    us.clear();
-                    vs.clear();
-                    for (std::size_t corner = 0; corner < 3; ++corner) {
-                        us.insert(us.end(), static_cast<std::size_t>(to_u[corner]), corners[corner][0]);
-                        vs.insert(vs.end(), static_cast<std::size_t>(copies[corner] - to_u[corner]), corners[corner][1]);
-                    }
-                    const Point f = tensor_blossom(patch, us, vs);
-                    for (std::size_t q = 0; q < 3; ++q) sum[q] += weight * f[q];
+    const std::vector<double> binomials = pascal(degree);
+    const auto binomial = [&](int a, int b) {
+        return binomials[static_cast<std::size_t>(a) * static_cast<std::size_t>(degree + 1) + static_cast<std::size_t>(b)];
+    };
+    const double total = binomial(degree, m);
+    std::vector<Point> points(net_size(degree), Point{0, 0, 0});
+    for (int b2 = 0; b2 <= m; ++b2)
+        for (int b1 = 0; b1 <= m - b2; ++b1) {
+            const std::array<int, 3> beta{m - b1 - b2, b1, b2};
+            const int a_index = beta[0] * corners[0][0] + beta[1] * corners[1][0] + beta[2] * corners[2][0];
+            for (int a2 = 0; a2 <= n; ++a2)
+                for (int a1 = 0; a1 <= n - a2; ++a1) {
+                    const std::array<int, 3> alpha{n - a1 - a2, a1, a2};
+                    const int b_index = alpha[0] * corners[0][1] + alpha[1] * corners[1][1] + alpha[2] * corners[2][1];
+                    const double weight = binomial(alpha[0] + beta[0], beta[0]) * binomial(alpha[1] + beta[1], beta[1]) *
+                                          binomial(alpha[2] + beta[2], beta[2]) / total;
+                    const Point& p = patch.points[static_cast<std::size_t>(a_index * (n + 1) + b_index)];
+                    Point& c = points[net_index(degree, a1 + b1, a2 + b2)];
+                    for (std::size_t q = 0; q < 3; ++q) c[q] += weight * p[q];
                 }
-            points[TriangularPatch::index(degree, j, k)] = sum;
         }
     return TriangularPatch(degree, std::move(points));
 }

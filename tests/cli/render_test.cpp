@@ -4,7 +4,10 @@
 // exact message and exit code 2, and an output that cannot be written after the render (exit 1).
 #include <gtest/gtest.h>
 
+#include <array>
+#include <chrono>
 #include <cstdint>
+#include <iostream>
 #include <regex>
 #include <sstream>
 
@@ -321,6 +324,129 @@ TEST(SxkRender, BadOutputs) {
     EXPECT_EQ(run.err.rfind("sxk: " + folder_named_png.string() + ":0: cannot write: ", 0), 0u)
         << run.err;
     EXPECT_EQ(run.out, "");
+}
+
+// The teapot's 32 bicubic patches (tests/data/teapot.bpt), each degree-elevated to `degree` x
+// `degree` (the same surfaces: c'_k = sum_j C(3,j) C(d-3,k-j) / C(d,k) c_j in u, then in v), in
+// `copies` teapots side by side along x: a .bpt file of 32 x copies patches of high degree,
+// smooth enough for the default flatness.
+std::string elevated_teapots(int degree, int copies) {
+    std::istringstream in(slurp(teapot));
+    int count = 0;
+    in >> count;
+    std::vector<std::vector<std::array<double, 3>>> bicubic(static_cast<std::size_t>(count));
+    for (auto& points : bicubic) {
+        int m = 0, n = 0;
+        in >> m >> n;
+        points.resize(16);
+        for (auto& p : points)
+            in >> p[0] >> p[1] >> p[2];
+    }
+    auto binomial = [](int a, int b) {
+        double c = 1;
+        for (int i = 1; i <= b; ++i)
+            c = c * (a - b + i) / i;
+        return b < 0 || b > a ? 0.0 : c;
+    };
+    const auto d = static_cast<std::size_t>(degree);
+    std::ostringstream out;
+    out.precision(17);
+    out << count * copies << '\n';
+    for (int copy = 0; copy < copies; ++copy)
+        for (const auto& points : bicubic) {
+            // elevate along u (index a of P_ab = points[4a + b]), then along v
+            std::vector<std::array<double, 3>> in_u((d + 1) * 4, {0, 0, 0}), in_uv((d + 1) * (d + 1), {0, 0, 0});
+            for (int k = 0; k <= degree; ++k)
+                for (int j = 0; j <= 3; ++j) {
+                    const double w = binomial(3, j) * binomial(degree - 3, k - j) / binomial(degree, k);
+                    for (std::size_t b = 0; b < 4; ++b)
+                        for (std::size_t q = 0; q < 3; ++q)
+                            in_u[static_cast<std::size_t>(k) * 4 + b][q] += w * points[static_cast<std::size_t>(j) * 4 + b][q];
+                }
+            for (std::size_t a = 0; a <= d; ++a)
+                for (int k = 0; k <= degree; ++k)
+                    for (int j = 0; j <= 3; ++j) {
+                        const double w = binomial(3, j) * binomial(degree - 3, k - j) / binomial(degree, k);
+                        for (std::size_t q = 0; q < 3; ++q)
+                            in_uv[a * (d + 1) + static_cast<std::size_t>(k)][q] += w * in_u[a * 4 + static_cast<std::size_t>(j)][q];
+                    }
+            out << degree << ' ' << degree << '\n';
+            for (const auto& p : in_uv)
+                out << p[0] + 8.0 * copy << ' ' << p[1] << ' ' << p[2] << '\n';
+        }
+    return out.str();
+}
+
+// Issue 12: 200 tensor patches of degree 20 x 20 (400 triangular patches of degree 40, a 5 MB
+// file) convert and render in seconds; the time is printed (docs/performance.md), not asserted.
+TEST(SxkRender, ManyHighDegreePatchesRenderInSeconds) {
+    RenderFixture f;
+    const std::string text = elevated_teapots(20, 7);
+    // 7 teapots are 224 patches; keep the first 200
+    std::istringstream lines(text);
+    std::ostringstream first;
+    std::string line;
+    std::getline(lines, line);
+    first << "200\n";
+    for (int patch = 0; patch < 200; ++patch)
+        for (int row = 0; row < 1 + 21 * 21 && std::getline(lines, line); ++row)
+            first << line << '\n';
+    const fs::path in = f.input("teapots20.bpt", first.str());
+    const auto start = std::chrono::steady_clock::now();
+    const ProcessResult run = f.run(in.string(), {"--size", "320x240", "--json"});
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["bpt_patches"], 200);
+    EXPECT_EQ(json["patches"], 400);
+    EXPECT_EQ(png_size(f.out), std::make_pair(320u, 240u));
+    std::cout << "[ time     ] " << fs::file_size(in) << " bytes, 200 patches 20x20: " << json["leaves"]
+              << " leaves, sxk render " << seconds << " s (read and build "
+              << json["seconds"]["read_and_build"] << " s, render " << json["seconds"]["render"]
+              << " s)\n";
+}
+
+// Issue 12: what a small input can make huge is refused, exit 2, naming what to change.
+TEST(SxkRender, RefusesWhatCannotBeDoneInReasonableTimeAndMemory) {
+    RenderFixture f;
+    // 8192x8192 is the largest picture (2^26 pixels)
+    f.expect_error(teapot, {"--size", "16384x8192"},
+                   "sxk: render: --size 16384x8192 has 134217728 pixels, more than the 67108864 "
+                   "allowed (8192x8192)\n" +
+                       hint);
+    // a flatness below the teapot's rounding: 1e-12 x (diagonal + largest coordinate) / diagonal
+    f.expect_error(teapot, {"--flatness", "1e-13"},
+                   "sxk: render: --flatness 1e-13 is below what double rounding resolves in " +
+                       teapot + "; the smallest accepted is 1.43e-12\n" + hint);
+    // 2^30 bytes of sextic sub-patches (928 bytes each) are 1157049; the teapot needs more at
+    // 1e-9 (and at 1e-6)
+    f.expect_error(teapot, {"--flatness", "1e-9"},
+                   "sxk: render: --flatness 1e-09 splits the patches of " + teapot +
+                       " into more sub-patches than fit in 1024 MiB (1157049 made when it "
+                       "stopped); use a larger --flatness\n" +
+                       hint);
+    // 200 bilinear patches are 400 triangular ones: 2^24 triangles allow 204 segments
+    std::string bilinear = "200\n";
+    for (int p = 0; p < 200; ++p)
+        bilinear += "1 1\n" + std::to_string(p) + " 0 0\n" + std::to_string(p) + " 1 0\n" +
+                    std::to_string(p + 1) + " 0 0\n" + std::to_string(p + 1) + " 1 1\n";
+    const fs::path many = f.input("bilinear.bpt", bilinear);
+    f.expect_error(many.string(), {"--tessellate", "--segments", "205"},
+                   "sxk: render: --segments 205 gives 400 patches x 205^2 = 16810000 triangles, "
+                   "more than the 16777216 allowed; use --segments 204 or fewer\n" +
+                       hint);
+    // one flat 20 x 20 patch is two of degree 40: 11480 de Casteljau steps per vertex, 2^31
+    // steps allow 431 segments
+    std::string flat = "1\n20 20\n";
+    for (int a = 0; a <= 20; ++a)
+        for (int b = 0; b <= 20; ++b)
+            flat += std::to_string(a) + " " + std::to_string(b) + " 0\n";
+    const fs::path high = f.input("flat20.bpt", flat);
+    f.expect_error(high.string(), {"--tessellate", "--segments", "432"},
+                   "sxk: render: --segments 432 evaluates 2 patches x 93961 points x 11480 de "
+                   "Casteljau steps (degree 40) = 2157344560, more than the 2147483648 allowed; "
+                   "use --segments 431 or fewer\n" +
+                       hint);
 }
 
 // An application renders a mesh it holds (run_on_mesh: the arguments without INPUT).

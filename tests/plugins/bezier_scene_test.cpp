@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "bezier_random.hpp"
@@ -116,6 +117,46 @@ TEST(FlatSubdivision, StopsAtTheDepthBound) {
     EXPECT_EQ(flat_subdivision({curved_patch(3, rng)}, 0, 3).size(), 64u);
     EXPECT_EQ(flat_subdivision({curved_patch(3, rng)}, 0, 0).size(), 1u);
     EXPECT_THROW(flat_subdivision({flat_patch()}, 0.1, -1), std::invalid_argument);
+}
+
+// Issue 12: the split stops as soon as its pieces would take more than max_bytes (leaf_bytes
+// each), in every patch, and says how many it made; pieces of one degree make that count exact.
+TEST(FlatSubdivision, StopsAtItsMemoryBound) {
+    std::mt19937_64 rng(test::seed_for("FlatSubdivision.StopsAtItsMemoryBound"));
+    const std::vector<TriangularPatch> patches{curved_patch(3, rng), curved_patch(3, rng)};
+    EXPECT_EQ(leaf_bytes(3), 10 * sizeof(Point) + 256);
+    // depth 3 at height 0: 64 pieces per patch
+    EXPECT_EQ(flat_subdivision(patches, 0, 3, 128 * leaf_bytes(3)).size(), 128u);
+    try {
+        (void)flat_subdivision(patches, 0, 3, 40 * leaf_bytes(3) + 100);
+        ADD_FAILURE() << "no SubdivisionTooLarge";
+    } catch (const SubdivisionTooLarge& error) {
+        EXPECT_EQ(error.max_bytes(), 40 * leaf_bytes(3) + 100);
+        EXPECT_EQ(error.pieces(), 40u);
+        EXPECT_EQ(std::string(error.what()),
+                  "flat_subdivision: the pieces would take more than 19940 bytes (40 made when it "
+                  "stopped)");
+    }
+}
+
+// Issue 12: a flatness below what the scene's rounding resolves is refused (smallest_flatness:
+// 1e-12 x (diagonal + largest coordinate) / diagonal), before anything is split.
+TEST(PatchScene, RefusesAFlatnessBelowRounding) {
+    const Box box = box_of(flat_patch().control_points());  // (0,0,0) to (1,1,0)
+    EXPECT_DOUBLE_EQ(smallest_flatness(box), 1e-12 * (std::sqrt(2.0) + 1) / std::sqrt(2.0));
+    EXPECT_EQ(smallest_flatness(Box{{2, 2, 2}, {2, 2, 2}}), 0);
+    PatchSceneOptions options;
+    options.flatness = 1e-13;
+    try {
+        (void)Scene::from_patches({flat_patch()}, options);
+        ADD_FAILURE() << "no refusal";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "Scene::from_patches: flatness 1e-13 is below the smallest the scene's rounding "
+                  "resolves, 1.71e-12");
+    }
+    options.flatness = smallest_flatness(box);
+    EXPECT_EQ(Scene::from_patches({flat_patch()}, options).leaf_count(), 1u);
 }
 
 TEST(PatchScene, FlatPatchHitsAndMisses) {
