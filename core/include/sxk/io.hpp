@@ -96,6 +96,15 @@ SXK_API Mesh read_tetgen(std::istream& node, const std::string& node_name, std::
                          const std::string& ele_name, const ReadOptions& options = {},
                          ReadReport* report = nullptr);
 
+// Reads a text file as the mesh readers read theirs, for the side inputs of commands (the face
+// list of `sxk dissect --faces`, .bpt patch files): a regular file or a FIFO, at most 1 GiB; a
+// directory, a device (/dev/zero), a socket or an unreadable file is refused; a byte that cannot
+// be text is refused ("binary data (byte 0x00)" on its line); a UTF-8 byte order mark is
+// dropped. An empty file gives an empty text. Throws InputError (docs/formats.md "Reading files").
+SXK_API std::string read_text_file(const std::filesystem::path& path);
+// The same from a stream; `name` stands for the file in the messages.
+SXK_API std::string read_text_stream(std::istream& in, const std::string& name);
+
 struct WriteOptions {
     int gmsh_version = 41;                      // 22 or 41
     Positions positions = Positions::deformed;  // which coordinates go into the file

@@ -6,6 +6,7 @@
 #include <istream>
 
 #include "formats.hpp"
+#include "load_file.hpp"
 #include "text.hpp"
 
 namespace sxk {
