@@ -105,12 +105,12 @@ std::string checked_text(std::string data, const std::string& name) {
 
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path) {
-    return checked_text(io::load_file(path), path.string());
+std::string read_text_file(const std::filesystem::path& path, std::size_t limit) {
+    return checked_text(io::load_file(path, limit), path.string());
 }
 
-std::string read_text_stream(std::istream& in, const std::string& name) {
-    return checked_text(io::load_stream(in, name), name);
+std::string read_text_stream(std::istream& in, const std::string& name, std::size_t limit) {
+    return checked_text(io::load_stream(in, name, limit), name);
 }
 
 }  // namespace sxk

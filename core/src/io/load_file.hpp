@@ -8,12 +8,9 @@
 #include <iosfwd>
 #include <string>
 
-namespace sxk::io {
+#include "sxk/io.hpp"  // max_input_bytes
 
-// The most bytes read from one input: 1 GiB, a hundred times the femur's ~10 MB of text. A
-// FIFO or a stream has no size to check beforehand; without a bound `sxk info` on an endless
-// pipe would read until memory ran out.
-inline constexpr std::size_t max_input_bytes = std::size_t{1} << 30;
+namespace sxk::io {
 
 // The file's bytes. Regular files and FIFOs (a shell's <(...)) are read, at most `limit` bytes;
 // a directory, a character or block device (/dev/zero), a socket, a file that cannot be opened
