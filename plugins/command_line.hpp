@@ -92,8 +92,9 @@ inline CLI::Validator number_in(double low, bool low_closed, double high, bool h
         interval);
 }
 
-// A whole number (decimal digits, an optional '-') that fits an int: "'seven' is not a whole number".
-inline CLI::Validator whole_number() {
+// A whole number (decimal digits, an optional '-') that fits an int: "'seven' is not a whole number";
+// `name` is what the help calls it.
+inline CLI::Validator whole_number(const std::string& name) {
     return CLI::Validator(
         [](std::string& text) {
             int value = 0;
@@ -102,7 +103,7 @@ inline CLI::Validator whole_number() {
                 return "'" + text + "' is not a whole number";
             return std::string();
         },
-        "INTEGER");
+        name);
 }
 
 // A whole number (decimal digits, an optional '-') in [low, high]:

@@ -218,7 +218,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
     app.add_option("--cut-label", cut_label,
                    "Meshes: boundary faces with this face label are drawn as cut faces too (cut "
                    "faces are otherwise found as boundary faces that coincide)")
-        ->check(whole_number());
+        ->check(whole_number("LABEL"));
     app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
     if (const std::optional<int> done = parse_command_line(app, args, "render", out, err)) {
         code = *done;
