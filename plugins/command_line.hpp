@@ -3,14 +3,24 @@
 // prints "sxk: NAME: reason" and a pointer to --help (exit 2); an unreadable mesh prints
 // "sxk: FILE:LINE: reason". Header-only, for the plug-ins in this
 // folder (sxk_add_plugin puts the folder on their include path).
+//
+// The checks of numeric options below are shared with the built-in commands too
+// (tools/sxk/cli.hpp includes this header): one reading of a number for every command, so that
+// `nan` or `inf` cannot slip through one command's option while another's refuses it.
 #pragma once
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <exception>
 #include <new>
 #include <optional>
 #include <ostream>
 #include <span>
 #include <string>
+#include <string_view>
+#include <system_error>
+#include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -19,6 +29,98 @@
 #include "sxk/mesh.hpp"
 
 namespace sxk {
+
+// ---- numbers in options ----------------------------------------------------------------------
+// Every numeric option of every sxk command is checked by one of these before CLI11 converts it.
+// A number is read as the mesh readers read theirs (std::from_chars: locale-independent, the
+// whole text, an optional leading '+') and must be finite: "nan", "inf", and a value a double
+// cannot hold (1e400, 1e-400) are refused with "expected a finite number, found 'TEXT'".
+// CLI11 puts the option's name in front: "--aspect: expected a finite number, found 'nan'".
+
+inline std::optional<double> parse_finite_number(std::string_view text) {
+    if (text.size() > 1 && text[0] == '+' && text[1] != '-')
+        text.remove_prefix(1);
+    double value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+        return std::nullopt;
+    return value;
+}
+
+inline std::string not_a_finite_number(std::string_view text) {
+    return "expected a finite number, found '" + std::string(text) + "'";
+}
+
+// The comma-separated numbers of `text` ("X,Y,Z"), or the message for the first one that is not
+// a finite number: "expected a finite number, found 'nan' in '1,nan'".
+inline std::variant<std::vector<double>, std::string> parse_number_list(std::string_view text) {
+    std::vector<double> numbers;
+    for (std::size_t begin = 0;;) {
+        const std::size_t comma = text.find(',', begin);
+        const std::string_view word =
+            text.substr(begin, comma == std::string_view::npos ? std::string_view::npos : comma - begin);
+        const std::optional<double> value = parse_finite_number(word);
+        if (!value)
+            return not_a_finite_number(word) + " in '" + std::string(text) + "'";
+        numbers.push_back(*value);
+        if (comma == std::string_view::npos)
+            return numbers;
+        begin = comma + 1;
+    }
+}
+
+// Any finite number.
+inline CLI::Validator finite_number() {
+    return CLI::Validator(
+        [](std::string& text) { return parse_finite_number(text) ? std::string() : not_a_finite_number(text); },
+        "NUMBER");
+}
+
+// A finite number in the interval from `low` to `high`, each end open or closed; `interval` names
+// it in the message ("'2' is not in (0, 1)") and in the help.
+inline CLI::Validator number_in(double low, bool low_closed, double high, bool high_closed,
+                                const std::string& interval) {
+    return CLI::Validator(
+        [=](std::string& text) {
+            const std::optional<double> value = parse_finite_number(text);
+            if (!value)
+                return not_a_finite_number(text);
+            if (!(low_closed ? *value >= low : *value > low) || !(high_closed ? *value <= high : *value < high))
+                return "'" + text + "' is not in " + interval;
+            return std::string();
+        },
+        interval);
+}
+
+// A whole number (decimal digits, an optional '-') that fits an int: "'seven' is not a whole number";
+// `name` is what the help calls it.
+inline CLI::Validator whole_number(const std::string& name) {
+    return CLI::Validator(
+        [](std::string& text) {
+            int value = 0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (text.empty() || error != std::errc() || end != text.data() + text.size())
+                return "'" + text + "' is not a whole number";
+            return std::string();
+        },
+        name);
+}
+
+// A whole number (decimal digits, an optional '-') in [low, high]:
+// "'0' is not a whole number in 1..512".
+inline CLI::Validator whole_number_in(std::int64_t low, std::int64_t high) {
+    const std::string interval = std::to_string(low) + ".." + std::to_string(high);
+    return CLI::Validator(
+        [=](std::string& text) {
+            std::int64_t value = 0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < low ||
+                value > high)
+                return "'" + text + "' is not a whole number in " + interval;
+            return std::string();
+        },
+        interval);
+}
 
 // nullopt when the arguments parsed and the command should run; otherwise the exit code the
 // command ends with (the usage or the error already printed).

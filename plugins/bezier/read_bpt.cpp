@@ -3,7 +3,6 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -56,15 +55,10 @@ std::array<T, count> values(Lines& lines, const char* what) {
     return result;
 }
 
-}  // namespace
-
-std::vector<TensorPatch> read_bpt(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path.string(), 0, "cannot open");
-    return read_bpt(in, path.string());
-}
-
-std::vector<TensorPatch> read_bpt(std::istream& in, const std::string& name) {
+// The patches of the text of a .bpt file (read_text_file or read_text_stream: binary data
+// refused, a byte order mark dropped).
+std::vector<TensorPatch> read_bpt_text(const std::string& text, const std::string& name) {
+    std::istringstream in(text);
     Lines lines(in, name);
     const long count = values<long, 1>(lines, "the patch count")[0];
     if (count < 1 || count > max_patches) lines.fail("patch count " + std::to_string(count) + " is not in 1.." + std::to_string(max_patches));
@@ -83,6 +77,16 @@ std::vector<TensorPatch> read_bpt(std::istream& in, const std::string& name) {
     }
     if (lines.more()) lines.fail("trailing data after " + std::to_string(count) + " patches");
     return patches;
+}
+
+}  // namespace
+
+std::vector<TensorPatch> read_bpt(const std::filesystem::path& path) {
+    return read_bpt_text(read_text_file(path), path.string());
+}
+
+std::vector<TensorPatch> read_bpt(std::istream& in, const std::string& name) {
+    return read_bpt_text(read_text_stream(in, name), name);
 }
 
 }  // namespace sxk::bezier

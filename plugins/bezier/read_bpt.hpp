@@ -15,8 +15,10 @@
 
 namespace sxk::bezier {
 
-// Throws sxk::InputError ("FILE:LINE: reason") for a missing file, a bad count or degree (0 to
-// 20), a malformed or non-finite coordinate, a short file or trailing data.
+// Throws sxk::InputError ("FILE:LINE: reason") for a file that cannot be read as text (missing,
+// a directory or a device, binary data: sxk::read_text_file, as mesh files are read; a UTF-8
+// byte order mark is dropped), a bad count or degree (0 to 20), a malformed or non-finite
+// coordinate, a short file or trailing data.
 std::vector<TensorPatch> read_bpt(const std::filesystem::path& path);
 // The same from a stream; `name` stands for FILE in the messages.
 std::vector<TensorPatch> read_bpt(std::istream& in, const std::string& name);

@@ -129,12 +129,6 @@ struct CommandOptions {
     bool segments_given = false, flatness_given = false;
 };
 
-bool parse_number(std::string_view text, double& value) {
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return !text.empty() && error == std::errc() && end == text.data() + text.size() &&
-           std::isfinite(value);
-}
-
 // "WxH" as two whole numbers in [1, max_image_side]; nullopt otherwise.
 std::optional<std::array<int, 2>> parse_size(std::string_view text) {
     const std::size_t x = text.find('x');
@@ -159,19 +153,10 @@ bool is_zero(const Point& a) {
 
 // "ex,ey,ez,tx,ty,tz,ux,uy,uz" as a camera (fov left at its default); the reason otherwise.
 std::variant<Camera, std::string> parse_camera(const std::string& text) {
-    std::vector<double> numbers;
-    for (std::size_t begin = 0;;) {
-        const std::size_t comma = text.find(',', begin);
-        const std::string_view word = std::string_view(text).substr(
-            begin, comma == std::string::npos ? std::string::npos : comma - begin);
-        double value = 0;
-        if (!parse_number(word, value))
-            return "'" + text + "' is not eye,target,up (nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)";
-        numbers.push_back(value);
-        if (comma == std::string::npos)
-            break;
-        begin = comma + 1;
-    }
+    const auto list = parse_number_list(text);
+    if (const std::string* error = std::get_if<std::string>(&list))
+        return *error + " (eye,target,up: nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)";
+    const std::vector<double>& numbers = std::get<std::vector<double>>(list);
     if (numbers.size() != 9)
         return "'" + text + "' is not eye,target,up (nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)";
     Camera camera;
@@ -183,38 +168,6 @@ std::variant<Camera, std::string> parse_camera(const std::string& text) {
     if (is_zero(cross(minus(camera.target, camera.eye), camera.up)))
         return "'" + text + "': up is zero or parallel to the view direction";
     return camera;
-}
-
-// A CLI11 check: a finite number in the interval from `low` to `high`, each end open or closed;
-// `interval` names it in the message.
-CLI::Validator number_in(double low, bool low_closed, double high, bool high_closed,
-                         const std::string& interval) {
-    return CLI::Validator(
-        [=](std::string& text) {
-            double value = 0;
-            if (!parse_number(text, value))
-                return "'" + text + "' is not a number";
-            if (!(low_closed ? value >= low : value > low) ||
-                !(high_closed ? value <= high : value < high))
-                return "'" + text + "' is not in " + interval;
-            return std::string();
-        },
-        interval);
-}
-
-CLI::Validator whole_number_in(int low, int high) {
-    const std::string interval = std::to_string(low) + ".." + std::to_string(high);
-    return CLI::Validator(
-        [=](std::string& text) {
-            int value = 0;
-            const auto [end, error] =
-                std::from_chars(text.data(), text.data() + text.size(), value);
-            if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
-                value < low || value > high)
-                return "'" + text + "' is not a whole number in " + interval;
-            return std::string();
-        },
-        interval);
 }
 
 // Parses the command's arguments (without INPUT when `with_input` is false: run_on_mesh);
@@ -277,16 +230,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
     app.add_option("--cut-label", cut_label,
                    "Meshes: boundary faces with this face label are drawn as cut faces too (cut "
                    "faces are otherwise found as boundary faces that coincide)")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                int value = 0;
-                const auto [end, error] =
-                    std::from_chars(text.data(), text.data() + text.size(), value);
-                return !text.empty() && error == std::errc() && end == text.data() + text.size()
-                           ? std::string()
-                           : "'" + text + "' is not a whole number";
-            },
-            "LABEL"));
+        ->check(whole_number("LABEL"));
     app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
     if (const std::optional<int> done = parse_command_line(app, args, "render", out, err)) {
         code = *done;

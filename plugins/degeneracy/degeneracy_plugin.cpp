@@ -1,7 +1,6 @@
 #include "degeneracy_plugin.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -162,24 +161,6 @@ struct CommandOptions {
     bool json = false;
 };
 
-// A CLI11 check: the text is a finite number in the interval (low, high), or [low, high) when
-// `low_closed`; `interval` names it in the message.
-CLI::Validator number_in(double low, double high, bool low_closed, const std::string& interval) {
-    return CLI::Validator(
-        [=](std::string& text) {
-            double value = 0;
-            const auto [end, error] =
-                std::from_chars(text.data(), text.data() + text.size(), value);
-            if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
-                !std::isfinite(value))
-                return "'" + text + "' is not a number";
-            if (!(low_closed ? value >= low : value > low) || !(value < high))
-                return "'" + text + "' is not in " + interval;
-            return std::string();
-        },
-        interval);
-}
-
 // Parses the command's arguments; nullopt with `code` set when the command is done already
 // (--help printed: 0; usage error reported: 2).
 std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostream& out,
@@ -194,13 +175,13 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
         ->required();
     app.add_option("--aspect", options.removal.aspect_ratio,
                    "Aspect ratio threshold A, 0 < A < 1: below it an element is degenerate")
-        ->check(number_in(0, 1, false, "(0, 1)"))
+        ->check(number_in(0, false, 1, false, "(0, 1)"))
         ->capture_default_str();
     app.add_option(
            "--angle", options.removal.large_angle,
            "Large angle threshold in radians, pi/2 < x < pi (default 0.99 pi): the number of "
            "dihedral angles above it gives the class")
-        ->check(number_in(pi / 2, pi, false, "(pi/2, pi)"));
+        ->check(number_in(pi / 2, false, pi, false, "(pi/2, pi)"));
     app.add_flag(
         "--no-cut-free", options.no_cut_free,
         "Do not cut free what no collapse, flip or peel removed; it is reported as remaining");
@@ -212,7 +193,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
            "--boundary-tolerance", options.removal.boundary_tolerance,
            "How far, relative to its longest edge, a boundary face may leave its plane when a "
            "collapse moves its vertex, 0 <= T < 1")
-        ->check(number_in(0, 1, true, "[0, 1)"))
+        ->check(number_in(0, true, 1, false, "[0, 1)"))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of the table");
     if (const std::optional<int> done = parse_command_line(app, args, "degeneracies", out, err)) {

@@ -134,7 +134,7 @@ std::optional<Options> parse(std::span<const std::string> args, bool with_mesh, 
     CLI::App app("Histograms of aspect ratio, radius ratio and dihedral angles (triangles: angles)", "sxk stats");
     if (with_mesh) app.add_option("MESH", options.mesh, "Mesh file")->required();
     app.add_option("--bins", options.bins, "Number of histogram bins")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
+        ->check(whole_number_in(1, 1000))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of text bars");
     if (const std::optional<int> done = parse_command_line(app, args, "stats", out, err)) {

@@ -153,7 +153,7 @@ TEST(SxkDegeneracies, AspectOutOfRangeIsAUsageError) {
     EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: '0' is not in (0, 1)\n" + hint);
     run = f.run(in, {"--aspect", "small"});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: 'small' is not a number\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: expected a finite number, found 'small'\n" + hint);
     EXPECT_FALSE(fs::exists(f.out));
 }
 
@@ -169,6 +169,19 @@ TEST(SxkDegeneracies, AngleAndToleranceOutOfRange) {
     run = f.run(in, {"--boundary-tolerance", "-0.1"});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err, "sxk: degeneracies: --boundary-tolerance: '-0.1' is not in [0, 1)\n" + hint);
+    EXPECT_FALSE(fs::exists(f.out));
+}
+
+TEST(SxkDegeneracies, NanAndInfiniteThresholdsAreRefused) {
+    DegeneraciesFixture f;
+    const fs::path in = f.input("cap.mesh", cap_mesh);
+    for (const char* option : {"--aspect", "--angle", "--boundary-tolerance"})
+        for (const char* value : {"nan", "inf", "-inf"}) {
+            const ProcessResult run = f.run(in, {option, value});
+            EXPECT_EQ(run.exit_code, 2) << option << ' ' << value;
+            EXPECT_EQ(run.err, "sxk: degeneracies: " + std::string(option) + ": expected a finite number, found '" +
+                                   value + "'\n" + hint);
+        }
     EXPECT_FALSE(fs::exists(f.out));
 }
 

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fifo_writer.hpp"
 #include "run_sxk.hpp"
 
 namespace sxk::test {
@@ -73,7 +74,56 @@ TEST(SxkDissect, MissingFaceFile) {
     DissectFixture f;
     const ProcessResult run = sxk({"dissect", f.mesh.string(), f.out.string(), "--faces", (f.folder / "none.txt").string()});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: " + (f.folder / "none.txt").string() + ":0: cannot open\n");
+    EXPECT_EQ(run.err, "sxk: " + (f.folder / "none.txt").string() + ":0: no such file\n");
+}
+
+// The face list is read as mesh files are: what is not a file of text is an input error, never
+// an empty list that cuts nothing (a directory and /dev/null used to dissect along no faces).
+TEST(SxkDissect, FaceFilesThatAreNoFilesAreRefused) {
+    DissectFixture f;
+    fs::create_directory(f.folder / "faces");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {(f.folder / "faces").string(), "is a directory"},
+        {"/dev/zero", "is a character device, not a file"},
+        {"/dev/null", "is a character device, not a file"},
+        // a regular file of size 0 whose first page cannot be read (EIO)
+        {"/proc/self/mem", "cannot read: Input/output error"},
+    };
+    for (const auto& [faces, reason] : cases) {
+        const ProcessResult run = sxk({"dissect", f.mesh.string(), f.out.string(), "--faces", faces});
+        EXPECT_EQ(run.exit_code, 2) << faces;
+        EXPECT_EQ(run.err, "sxk: " + faces + ":0: " + reason + "\n");
+        EXPECT_EQ(run.out, "");
+        EXPECT_FALSE(fs::exists(f.out));
+    }
+}
+
+TEST(SxkDissect, BinaryFaceFileIsRefused) {
+    DissectFixture f;
+    const ProcessResult run = f.run(std::string("1 2 3\n1 2\0 4\n", 12));
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: " + f.faces.string() + ":2: binary data (byte 0x00)\n");
+    EXPECT_FALSE(fs::exists(f.out));
+}
+
+TEST(SxkDissect, FaceFileWithAByteOrderMark) {
+    DissectFixture f;
+    const ProcessResult run = f.run("\xEF\xBB\xBF" "1 2 3\n");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 components\n");
+}
+
+// A FIFO (a shell's --faces <(...)) is read, up to the bound every input has (max_input_bytes).
+TEST(SxkDissect, FaceListFromAFifo) {
+    DissectFixture f;
+    const fs::path fifo = f.folder / "faces.fifo";
+    ProcessResult run;
+    {
+        FifoWriter writer(fifo, "# from a pipe\n1 2 3\n");
+        run = sxk({"dissect", f.mesh.string(), f.out.string(), "--faces", fifo.string()});
+    }
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 components\n");
 }
 
 TEST(SxkDissect, FacesOptionIsRequired) {

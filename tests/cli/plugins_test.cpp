@@ -159,7 +159,12 @@ TEST(SxkStats, UsageAndInputErrors) {
     EXPECT_EQ(missing.exit_code, 2);
     EXPECT_EQ(missing.err.rfind("sxk: " + (folder / "missing.mesh").string() + ":0: ", 0), 0u) << missing.err;
     write_file(folder / "two.mesh", two_tetrahedra_mesh);
-    EXPECT_EQ(sxk({"stats", (folder / "two.mesh").string(), "--bins", "0"}).exit_code, 2);
+    const std::string hint = "\nRun 'sxk stats --help' for more information.\n";
+    for (const char* bins : {"0", "1001", "nan", "2.5"}) {
+        const ProcessResult run = sxk({"stats", (folder / "two.mesh").string(), "--bins", bins});
+        EXPECT_EQ(run.exit_code, 2) << bins;
+        EXPECT_EQ(run.err, "sxk: stats: --bins: '" + std::string(bins) + "' is not a whole number in 1..1000" + hint);
+    }
 }
 
 }  // namespace

@@ -81,9 +81,36 @@ TEST(SxkQuality, RefusesThresholdsOutOfRange) {
     ScratchFolder folder;
     const fs::path mesh = folder / "two.mesh";
     write_file(mesh, two_tetrahedra_mesh);
-    EXPECT_EQ(sxk({"quality", mesh.string(), "--aspect", "2"}).exit_code, 2);
-    EXPECT_EQ(sxk({"quality", mesh.string(), "--angle", "4"}).exit_code, 2);
-    EXPECT_EQ(sxk({"quality", mesh.string(), "--angle", "wide"}).exit_code, 2);
+    const std::string hint = "\nRun 'sxk quality --help' for more information.\n";
+    ProcessResult run = sxk({"quality", mesh.string(), "--aspect", "2"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: --aspect: '2' is not in [0, 1]" + hint);
+    run = sxk({"quality", mesh.string(), "--angle", "4"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: --angle: '4' is not in [0, pi]" + hint);
+    run = sxk({"quality", mesh.string(), "--angle", "wide"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: --angle: expected a finite number, found 'wide'" + hint);
+}
+
+// NaN passed every range check (a comparison with NaN is false): the degenerate count was 0
+// while the classes counted both elements as needles. Every numeric option now refuses it.
+TEST(SxkQuality, RefusesNanAndInfiniteThresholds) {
+    ScratchFolder folder;
+    const fs::path mesh = folder / "two.mesh";
+    write_file(mesh, two_tetrahedra_mesh);
+    const std::string hint = "\nRun 'sxk quality --help' for more information.\n";
+    for (const char* option : {"--aspect", "--angle"})
+        for (const char* value : {"nan", "NaN", "-nan", "inf", "-inf", "infinity", "1e400"}) {
+            const ProcessResult run = sxk({"quality", mesh.string(), "--json", option, value});
+            EXPECT_EQ(run.exit_code, 2) << option << ' ' << value;
+            EXPECT_EQ(run.err, "sxk: " + std::string(option) + ": expected a finite number, found '" + value + "'" + hint);
+            EXPECT_EQ(run.out, "");
+        }
+    // a leading '+' is a number, as in the mesh files
+    const ProcessResult run = sxk({"quality", mesh.string(), "--json", "--aspect", "+0.5"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["thresholds"]["aspect_ratio"], 0.5);
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ TEST(SxkRefine, MalformedPoint) {
     ProcessResult run = f.run({"--around", "1,x", "--size", "0.5"});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err,
-              "sxk: --around: 'x' in '1,x' is not a number (expected X,Y or X,Y,Z)\n"
+              "sxk: --around: expected a finite number, found 'x' in '1,x' (expected X,Y or X,Y,Z)\n"
               "Run 'sxk refine --help' for more information.\n");
     run = f.run({"--around", "1", "--size", "0.5"});
     EXPECT_EQ(run.exit_code, 2);
@@ -101,7 +101,32 @@ TEST(SxkRefine, SizeMustBeAPositiveNumber) {
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(
         run.err,
-        "sxk: --size: 'small' is not a number\nRun 'sxk refine --help' for more information.\n");
+        "sxk: --size: expected a finite number, found 'small'\nRun 'sxk refine --help' for more information.\n");
+    EXPECT_FALSE(fs::exists(f.out));
+}
+
+TEST(SxkRefine, NanAndInfiniteNumbersAreRefused) {
+    RefineFixture f;
+    const std::string hint = "\nRun 'sxk refine --help' for more information.\n";
+    ProcessResult run = f.run({"--around", "0.5,0.5", "--size", "inf"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: --size: expected a finite number, found 'inf'" + hint);
+    run = f.run({"--around", "0.5,0.5", "--size", "nan"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: --size: expected a finite number, found 'nan'" + hint);
+    run = f.run({"--around", "0.5,nan", "--size", "0.5"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err,
+              "sxk: --around: expected a finite number, found 'nan' in '0.5,nan' (expected X,Y or X,Y,Z)" + hint);
+    run = f.run({"--around", "0.5,0.5,-inf", "--size", "0.5"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err,
+              "sxk: --around: expected a finite number, found '-inf' in '0.5,0.5,-inf' (expected X,Y or X,Y,Z)" +
+                  hint);
+    run = f.run({"--around", "0.5,,0.5", "--size", "0.5"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err,
+              "sxk: --around: expected a finite number, found '' in '0.5,,0.5' (expected X,Y or X,Y,Z)" + hint);
     EXPECT_FALSE(fs::exists(f.out));
 }
 

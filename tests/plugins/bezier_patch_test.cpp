@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <random>
 #include <vector>
@@ -297,6 +298,32 @@ TEST(ReadBpt, RefusesMalformedFilesNamingTheLine) {
     expect_error("1\n0 0\n0 0 0 4\n", "3: unexpected '4' after a point x y z");
     expect_error("1\n0 0\n0 0 0\n7\n", "4: trailing data after 1 patches");
     expect_error("1\n21 0\n", "2: degrees 21 0 are not in 0..20");
+    expect_error(std::string("1\n0 0\n0 0\0 0\n", 12), "3: binary data (byte 0x00)");
+    std::filesystem::remove_all(dir);
+}
+
+// A .bpt file is read as mesh files are (sxk::read_text_file): a byte order mark is dropped, and
+// what is not a file is refused instead of being read as an empty one.
+TEST(ReadBpt, ReadsLikeAMeshFile) {
+    const auto dir = std::filesystem::temp_directory_path() / ("sxk-bpt-bom-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir / "folder.bpt");
+    std::ofstream(dir / "bom.bpt") << "\xEF\xBB\xBF" "1\n0 0\n1 2 3\n";
+    const std::vector<TensorPatch> patches = read_bpt(dir / "bom.bpt");
+    ASSERT_EQ(patches.size(), 1u);
+    EXPECT_EQ(patches[0].points, (std::vector<Point>{{1, 2, 3}}));
+    std::istringstream stream("\xEF\xBB\xBF" "1\n0 0\n4 5 6\n");
+    EXPECT_EQ(read_bpt(stream, "s.bpt")[0].points, (std::vector<Point>{{4, 5, 6}}));
+    for (const auto& [file, reason] : std::vector<std::pair<std::string, std::string>>{
+             {(dir / "folder.bpt").string(), "is a directory"},
+             {"/dev/zero", "is a character device, not a file"},
+             {(dir / "none.bpt").string(), "no such file"}}) {
+        try {
+            (void)read_bpt(file);
+            ADD_FAILURE() << file << " was read";
+        } catch (const InputError& error) {
+            EXPECT_EQ(std::string(error.what()), file + ":0: " + reason);
+        }
+    }
     std::filesystem::remove_all(dir);
 }
 

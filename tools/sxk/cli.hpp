@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.hpp"  // plugins/: number_in and the other checks of numeric options
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/plugin_host.hpp"

@@ -3,10 +3,10 @@
 //
 // FILE lists one face per line as whitespace-separated vertex ids, 0-based in the mesh's own
 // numbering (a Medit or Gmsh file numbers from 1: file vertex k is id k-1), in either
-// orientation. '#' starts a comment; blank lines are skipped. A bad line gives
-// "sxk: FILE:LINE: reason" and exit code 2, like any other input error.
+// orientation. '#' starts a comment; blank lines are skipped. FILE is read as mesh files are
+// (read_text_file): a directory, a device, binary data or a read error is refused. A bad line
+// gives "sxk: FILE:LINE: reason" and exit code 2, like any other input error.
 #include <charconv>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -29,13 +29,18 @@ struct FaceList {
     std::vector<std::size_t> lines;  // line number of each face, for messages
 };
 
-// Reads the face list; on a bad line prints the error and returns nullopt.
+// Reads the face list; on an unreadable file or a bad line prints the error and returns nullopt.
 std::optional<FaceList> read_faces(Context& context, const std::string& file, const Mesh& mesh) {
-    std::ifstream in(file);
-    if (!in) {
-        context.err << "sxk: " << file << ":0: cannot open\n";
+    // as a mesh file is read (a directory, a device or a read error is an input error, a byte
+    // order mark is dropped), not an ifstream that takes a directory for an empty list
+    std::string text;
+    try {
+        text = read_text_file(file);
+    } catch (const InputError& error) {
+        context.err << "sxk: " << error.what() << '\n';
         return std::nullopt;
     }
+    std::istringstream in(text);
     const std::size_t wanted = static_cast<std::size_t>(mesh.topological_dimension());
     FaceList list;
     std::string line;

@@ -116,11 +116,11 @@ void add_quality_command(CLI::App& app, Context& context) {
     command->add_flag("--json", options->json, "Print one JSON object instead of text");
     command->add_option("--aspect", options->thresholds.aspect_ratio,
                         "Aspect ratio below which an element is degenerate")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(number_in(0, true, 1, true, "[0, 1]"))
         ->capture_default_str();
     command->add_option("--angle", options->thresholds.large_angle,
                         "Dihedral angle (radians) above which an angle counts as large when classifying")
-        ->check(CLI::Range(0.0, pi))
+        ->check(number_in(0, true, pi, true, "[0, pi]"))
         ->capture_default_str();
     command->callback([&context, options] { context.exit_code = run_quality(context, *options); });
 }

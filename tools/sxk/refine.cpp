@@ -2,8 +2,7 @@
 // edge bisection until the element containing the point has edges no longer than H (thesis
 // §6.5 refine-around; sxk/ops/refine_around.hpp for triangle meshes,
 // sxk/ops/refine_around_tetrahedra.hpp and sxk/ops/tet_bisection.hpp for tetrahedra).
-#include <charconv>
-#include <cmath>
+#include <algorithm>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -26,28 +25,18 @@ struct RefineOptions {
     bool json = false;
 };
 
-// "X,Y" or "X,Y,Z" (Z defaults to 0); an error message for anything else.
+// "X,Y" or "X,Y,Z" (Z defaults to 0), each a finite number; an error message for anything else.
 std::string parse_point(const std::string& text, Point& point) {
     point = {0, 0, 0};
-    std::size_t count = 0, begin = 0;
-    for (;;) {
-        const std::size_t comma = text.find(',', begin);
-        const std::string word =
-            text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
-        if (count == 3)
-            return "'" + text + "' has more than three coordinates (expected X,Y or X,Y,Z)";
-        double value = 0;
-        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-        if (word.empty() || error != std::errc() || end != word.data() + word.size() ||
-            !std::isfinite(value))
-            return "'" + word + "' in '" + text + "' is not a number (expected X,Y or X,Y,Z)";
-        point[count++] = value;
-        if (comma == std::string::npos)
-            break;
-        begin = comma + 1;
-    }
-    if (count < 2)
+    auto numbers = parse_number_list(text);
+    if (const std::string* error = std::get_if<std::string>(&numbers))
+        return *error + " (expected X,Y or X,Y,Z)";
+    const std::vector<double>& coordinates = std::get<std::vector<double>>(numbers);
+    if (coordinates.size() > 3)
+        return "'" + text + "' has more than three coordinates (expected X,Y or X,Y,Z)";
+    if (coordinates.size() < 2)
         return "'" + text + "' has one coordinate (expected X,Y or X,Y,Z)";
+    std::copy(coordinates.begin(), coordinates.end(), point.begin());
     return {};
 }
 
@@ -136,12 +125,10 @@ void add_refine_command(CLI::App& app, Context& context) {
         ->required()
         ->check(CLI::Validator(
             [](std::string& text) {
-                double value = 0;
-                const auto [end, error] =
-                    std::from_chars(text.data(), text.data() + text.size(), value);
-                if (error != std::errc() || end != text.data() + text.size())
-                    return "'" + text + "' is not a number";
-                if (!(value > 0) || !std::isfinite(value))
+                const std::optional<double> value = parse_finite_number(text);
+                if (!value)
+                    return not_a_finite_number(text);
+                if (!(*value > 0))
                     return "'" + text + "' is not a positive number";
                 return std::string();
             },

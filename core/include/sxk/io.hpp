@@ -96,6 +96,23 @@ SXK_API Mesh read_tetgen(std::istream& node, const std::string& node_name, std::
                          const std::string& ele_name, const ReadOptions& options = {},
                          ReadReport* report = nullptr);
 
+// The most bytes read from one input (mesh files and side inputs alike): 1 GiB, a hundred times
+// the femur's ~10 MB of text. A FIFO or a stream has no size to check beforehand; without a
+// bound an endless pipe would be read until memory ran out.
+inline constexpr std::size_t max_input_bytes = std::size_t{1} << 30;
+
+// Reads a text file as the mesh readers read theirs, for the side inputs of commands (the face
+// list of `sxk dissect --faces`, .bpt patch files): a regular file or a FIFO, at most `limit`
+// bytes; a directory, a device (/dev/zero), a socket or an unreadable file is refused; a byte
+// that cannot be text is refused ("binary data (byte 0x00)" on its line); a UTF-8 byte order
+// mark is dropped. An empty file gives an empty text. Throws InputError (docs/formats.md
+// "Reading files").
+SXK_API std::string read_text_file(const std::filesystem::path& path,
+                                   std::size_t limit = max_input_bytes);
+// The same from a stream; `name` stands for the file in the messages.
+SXK_API std::string read_text_stream(std::istream& in, const std::string& name,
+                                     std::size_t limit = max_input_bytes);
+
 struct WriteOptions {
     int gmsh_version = 41;                      // 22 or 41
     Positions positions = Positions::deformed;  // which coordinates go into the file

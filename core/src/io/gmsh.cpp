@@ -19,8 +19,9 @@
 // positive numbers, in any order. Gmsh always stores x y z: a triangle mesh whose z are all 0 is
 // planar (ambient dimension 2).
 //
-// Sections that carry no connectivity ($PhysicalNames, $Comments, $NodeData, ...) are skipped;
-// an unknown section is an error, so a misspelt $Elemnts does not go unnoticed.
+// Sections that carry no connectivity ($Comments, $NodeData, ...) are skipped; an unknown section
+// is an error, so a misspelt $Elemnts does not go unnoticed. $PhysicalNames is read for its count
+// and entries (dimension 0..3, tag, quoted name), which are checked, and then dropped.
 #include <algorithm>
 #include <array>
 #include <climits>
@@ -35,11 +36,11 @@ namespace sxk::io {
 
 namespace {
 
-constexpr std::array<std::string_view, 11> skipped_sections{
-    "$PhysicalNames",       "$Comments",         "$NodeData",
-    "$ElementData",         "$ElementNodeData",  "$Periodic",
-    "$GhostElements",       "$Parametrizations", "$InterpolationScheme",
-    "$PartitionedEntities", "$NodeGroups"};
+constexpr std::array<std::string_view, 10> skipped_sections{
+    "$Comments",         "$NodeData",           "$ElementData",
+    "$ElementNodeData",  "$Periodic",           "$GhostElements",
+    "$Parametrizations", "$InterpolationScheme", "$PartitionedEntities",
+    "$NodeGroups"};
 
 // Vertices per element for the types a simplicial mesh can hold; 0 for the others.
 int type_size(std::int64_t type) {
@@ -144,6 +145,8 @@ public:
                     m_in.fail("section $Elements appears twice");
                 m_have_elements = true;
                 m_version == 2 ? read_elements_2() : read_elements_4();
+            } else if (section == "$PhysicalNames") {
+                read_physical_names();
             } else if (section == "$Entities" && m_version == 4) {
                 if (m_have_entities)
                     m_in.fail("section $Entities appears twice");
@@ -211,6 +214,43 @@ private:
         m_raw.points.push_back(p);
         if (m_version == 2)
             m_raw.point_numbers.push_back(tag);
+    }
+
+    // "$PhysicalNames / count / dimension tag "name" (one per line) / $EndPhysicalNames". The
+    // names label nothing the kernel keeps, but the count is checked like every other count
+    // (docs/formats.md): one entry per line because a quoted name may hold blanks.
+    void read_physical_names() {
+        m_section = "$PhysicalNames";
+        if (!m_in.next_line())
+            m_in.fail("truncated file: expected number of physical names");
+        const std::int64_t count =
+            m_in.to_integer(m_in.need_in_line("number of physical names"), "number of physical names", 0,
+                            INT64_MAX);
+        if (!m_in.line_done())
+            m_in.fail("unexpected " + quote(m_in.next_in_line()) + " after the number of physical names");
+        for (std::int64_t i = 0; i < count; ++i) {
+            if (!m_in.next_line())
+                m_in.fail("truncated file: expected $EndPhysicalNames");
+            const std::string_view first = m_in.need_in_line("physical dimension");
+            if (first[0] == '$')
+                m_in.fail("section $PhysicalNames declares " + std::to_string(count) + " names but has " +
+                          std::to_string(i));
+            m_in.to_integer(first, "physical dimension", 0, 3);
+            m_in.to_integer(m_in.need_in_line("physical tag"), "physical tag", INT64_MIN, INT64_MAX);
+            // "name", possibly several tokens: from a token starting with a quote to one ending with one
+            std::string_view word = m_in.need_in_line("physical name");
+            if (word[0] != '"')
+                m_in.fail("expected a quoted physical name, found " + quote(word));
+            word.remove_prefix(1);
+            while (word.empty() || word.back() != '"') {
+                word = m_in.next_in_line();
+                if (word.empty())
+                    m_in.fail("physical name without its closing '\"'");
+            }
+            if (!m_in.line_done())
+                m_in.fail("unexpected " + quote(m_in.next_in_line()) + " after the physical name");
+        }
+        end_section("$EndPhysicalNames", "names", count);
     }
 
     void read_nodes_2() {

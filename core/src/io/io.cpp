@@ -7,6 +7,7 @@
 
 #include "formats.hpp"
 #include "sxk/atomic_write.hpp"
+#include "load_file.hpp"
 #include "text.hpp"
 
 namespace sxk {

@@ -3,7 +3,7 @@
 //   OFF                     (or COFF, NOFF, CNOFF: vertices may carry colours/normals)
 //   nv nf ne                (may stand on the OFF line; ne is ignored)
 //   x y z                   nv lines
-//   3 a b c [colour]        nf lines, 0-based vertex indices
+//   3 a b c [colour]        nf lines, 0-based vertex indices; colour: an index or RGB[A]
 //
 // Faces with more than three vertices are refused (the mesh is simplicial). OFF holds no labels.
 // Always x y z: a mesh whose z are all 0 is planar (ambient dimension 2), and then the
@@ -39,8 +39,8 @@ Mesh read_off(std::string_view text, const std::string& name, const ReadOptions&
                       static_cast<std::int64_t>(invalid_id) - 1);
     const std::int64_t nf = in.to_integer(in.need_in_line("number of faces"), "number of faces", 0,
                                           static_cast<std::int64_t>(invalid_id) - 1);
-    if (!in.line_done())
-        in.to_integer(in.next_in_line(), "number of edges");
+    if (!in.line_done())  // ignored, but a count all the same
+        in.to_integer(in.next_in_line(), "number of edges", 0, INT64_MAX);
     if (!in.line_done())
         in.fail("unexpected value " + quote(in.next_in_line()) + " after the counts");
 
@@ -85,16 +85,25 @@ Mesh read_off(std::string_view text, const std::string& name, const ReadOptions&
             in.fail(face + " has " + std::to_string(size) + " vertices: a face needs 3");
         cells.lines.push_back(in.line());
         for (int j = 0; j < 3; ++j) {
+            if (in.line_done())
+                in.fail(face + " declares 3 vertices but has " + std::to_string(j));
             const std::int64_t index =
-                in.to_integer(in.need_in_line("vertex index"), "vertex index");
+                in.to_integer(in.next_in_line(), "vertex index");
             if (index < 0 || index >= nv)
                 in.fail("vertex index " + std::to_string(index) + " out of range (0.." +
                         std::to_string(nv - 1) + ")");
             cells.vertices.push_back(static_cast<VertexId>(index));
         }
-        // a colour may follow (index or RGB[A])
-        while (!in.line_done())
+        // a colour may follow: a colour map index or RGB[A], so 1, 3 or 4 values; any other
+        // number of values is a face with more vertices than it declares, or a broken colour
+        int colour = 0;
+        while (!in.line_done()) {
             in.to_double(in.next_in_line(), "colour component");
+            ++colour;
+        }
+        if (colour == 2 || colour > 4)
+            in.fail(face + " has " + std::to_string(colour) +
+                    " values after its 3 vertices (a colour is 1, 3 or 4 values)");
         cells.labels.push_back(0);
     }
     if (in.next_line())

@@ -13,42 +13,6 @@
 
 namespace sxk::io {
 
-std::string load_file(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status))
-        throw InputError(name, 0, "no such file");
-    if (std::filesystem::is_directory(status))
-        throw InputError(name, 0, "is a directory");
-    // stdio rather than ifstream: one fread into a buffer of the file's size, and errno for
-    // the reason when it fails (permissions, I/O error).
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(name.c_str(), "rb"),
-                                                         &std::fclose);
-    if (!file)
-        throw InputError(name, 0, std::string("cannot open: ") + std::strerror(errno));
-    std::string data;
-    const auto size = std::filesystem::file_size(path, error);
-    if (!error)
-        data.resize(static_cast<std::size_t>(size));
-    std::size_t got = std::fread(data.data(), 1, data.size(), file.get());
-    data.resize(got);
-    // pipes and files that grew meanwhile: read whatever is left
-    char chunk[65536];
-    while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0)
-        data.append(chunk, got);
-    if (std::ferror(file.get()))
-        throw InputError(name, 0, std::string("cannot read: ") + std::strerror(errno));
-    return data;
-}
-
-std::string load_stream(std::istream& in, const std::string& name) {
-    std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad())
-        throw InputError(name, 0, "cannot read the stream");
-    return data;
-}
-
 namespace {
 
 bool is_blank(char c) {

@@ -27,9 +27,7 @@
 
 namespace sxk::io {
 
-// The file's bytes. Throws InputError(path, 0, ...) when it cannot be read.
-std::string load_file(const std::filesystem::path& path);
-std::string load_stream(std::istream& in, const std::string& name);
+// Loading a file's bytes: load_file / load_stream in load_file.hpp.
 
 // Throws InputError(name, line, "binary data (byte 0xNN)") at the first byte that cannot be
 // text: a control character other than \t \n \v \f \r, DEL, or a malformed UTF-8 sequence
