@@ -123,6 +123,38 @@ End
     EXPECT_NE(run.out.find("face labels: 1\n"), std::string::npos) << run.out;
 }
 
+// CGAL Mesh_3 output (tests/data/io/README.md): two pinched vertices, each boundary triangle
+// listed twice with the same reference.
+TEST(SxkPinched, CgalMeshThroughInfoConvertAndValidate) {
+    const fs::path cgal = fs::path(SXK_TEST_DATA_DIR) / "io" / "cgal_anchor_pinched.mesh";
+    const ProcessResult info = sxk({"info", cgal.string(), "--json"});
+    EXPECT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_EQ(info.err, split_warning(cgal, "2 pinched vertices into 4"));
+    const nlohmann::json json = nlohmann::json::parse(info.out);
+    EXPECT_EQ(json["vertices"], 258);
+    EXPECT_EQ(json["elements"], 684);
+    EXPECT_EQ(json["boundary_faces"], 524);
+
+    const ProcessResult raw = sxk({"validate", cgal.string()});
+    EXPECT_EQ(raw.exit_code, 1);
+    EXPECT_EQ(raw.out, cgal.string() +
+                           ": invalid: star connectivity: the star of vertex 29 is not "
+                           "face-connected (2 of its 8 elements are reachable from element 136; "
+                           "the mesh is pinched at this vertex)\n");
+
+    ScratchFolder folder;
+    for (const char* name : {"anchor.msh", "anchor.mesh"}) {
+        const fs::path out = folder / name;
+        const ProcessResult convert = sxk({"convert", cgal.string(), out.string()});
+        EXPECT_EQ(convert.exit_code, 0) << convert.err;
+        EXPECT_EQ(convert.err, split_warning(cgal, "2 pinched vertices into 4"));
+        const ProcessResult valid = sxk({"validate", out.string()});
+        EXPECT_EQ(valid.exit_code, 0) << valid.out;
+        EXPECT_EQ(valid.out, out.string() + ": valid (258 vertices, 684 tetrahedra)\n");
+        EXPECT_EQ(valid.err, "");
+    }
+}
+
 #if SXK_HAVE_STATS
 TEST(SxkPinched, PluginCommandsSplitAndTakeStrict) {
     const ProcessResult split = sxk({"stats", pinched.string(), "--json"});

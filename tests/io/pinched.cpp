@@ -153,6 +153,28 @@ TEST(PinchedVertices, SplitMeshRoundTripsThroughEveryWriter) {
     }
 }
 
+// A CGAL Mesh_3 output with pinched vertices and every boundary triangle listed twice
+// (tests/data/io/README.md says how it was made).
+TEST(PinchedVertices, CgalMesh3OutputLoadsAndValidatesAfterTheSplit) {
+    ReadReport report;
+    const Mesh mesh = read_mesh(data_file("io/cgal_anchor_pinched.mesh"), {}, &report);
+    EXPECT_EQ(report.pinched_vertices, 2u);
+    EXPECT_EQ(report.vertex_copies, (Copies{{29, 256}, {100, 257}}));
+    EXPECT_EQ(report.label_conflicts, 0u);
+    EXPECT_EQ(mesh.vertex_count(), 258u);
+    EXPECT_EQ(mesh.element_count(), 684u);
+    EXPECT_EQ(mesh.boundary_face_count(), 524u);
+    EXPECT_EQ(mesh.face_labels().size(), 524u);
+    for (const auto& [original, copy] : report.vertex_copies)
+        EXPECT_EQ(mesh.reference(copy), mesh.reference(original));
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+    for (const char* name : {"cgal.mesh", "cgal.msh", "cgal.node"}) {
+        const auto path = scratch_dir() / name;
+        write_mesh(mesh, path);
+        expect_same_mesh(mesh, read_mesh(path));
+    }
+}
+
 // ---- Medit faces listed more than once -------------------------------------------------------
 
 const char* repeated_triangles = R"(MeshVersionFormatted 2
