@@ -116,6 +116,7 @@ constexpr Point planar_up{0, 1, 0};
 struct CommandOptions {
     std::string input;
     std::string output;
+    ReadOptions reading;  // --strict (meshes)
     std::string size = "640x480";
     std::string camera;  // empty: frame() the scene's box
     double fov = 40;
@@ -232,6 +233,8 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
                    "faces are otherwise found as boundary faces that coincide)")
         ->check(whole_number("LABEL"));
     app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
+    if (with_input)
+        add_read_options(app, options.reading);
     if (const std::optional<int> done = parse_command_line(app, args, "render", out, err)) {
         code = *done;
         return std::nullopt;
@@ -594,7 +597,7 @@ public:
                     return 2;
                 return draw(*options, *drawing, false, seconds_since(start), out, err);
             }
-            const std::optional<Mesh> mesh = load_mesh_for_command(options->input, err);
+            const std::optional<Mesh> mesh = load_mesh_for_command(options->input, err, options->reading);
             if (!mesh)
                 return 2;
             return render_mesh(*mesh, *options, start, out, err);

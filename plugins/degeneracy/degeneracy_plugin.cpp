@@ -154,6 +154,7 @@ namespace {
 struct CommandOptions {
     std::string input;
     std::string output;
+    ReadOptions reading;  // --strict
     Options removal;
     bool no_cut_free = false;
     bool no_flips = false;
@@ -196,6 +197,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
         ->check(number_in(0, true, 1, false, "[0, 1)"))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of the table");
+    add_read_options(app, options.reading);
     if (const std::optional<int> done = parse_command_line(app, args, "degeneracies", out, err)) {
         code = *done;
         return std::nullopt;
@@ -255,7 +257,7 @@ public:
                 << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
             return 2;
         }
-        std::optional<Mesh> mesh = load_mesh_for_command(options->input, err);
+        std::optional<Mesh> mesh = load_mesh_for_command(options->input, err, options->reading);
         if (!mesh)
             return 2;
 

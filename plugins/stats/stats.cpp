@@ -57,6 +57,7 @@ constexpr std::size_t bar_width = 40;
 
 struct Options {
     std::string mesh;
+    ReadOptions reading;  // --strict
     std::size_t bins = default_bins;
     bool json = false;
 };
@@ -137,6 +138,7 @@ std::optional<Options> parse(std::span<const std::string> args, bool with_mesh, 
         ->check(whole_number_in(1, 1000))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of text bars");
+    if (with_mesh) add_read_options(app, options.reading);
     if (const std::optional<int> done = parse_command_line(app, args, "stats", out, err)) {
         code = *done;
         return std::nullopt;
@@ -155,13 +157,9 @@ public:
         int code = 0;
         const std::optional<Options> options = parse(args, true, out, err, code);
         if (!options) return code;
-        try {
-            const Mesh mesh = read_mesh(options->mesh);
-            print(out, *options, mesh, quality_histograms(mesh, options->bins));
-        } catch (const InputError& error) {
-            err << "sxk: " << error.what() << '\n';
-            return 2;
-        }
+        const std::optional<Mesh> mesh = load_mesh_for_command(options->mesh, err, options->reading);
+        if (!mesh) return 2;
+        print(out, *options, *mesh, quality_histograms(*mesh, options->bins));
         return 0;
     }
 

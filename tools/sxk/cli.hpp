@@ -31,6 +31,9 @@ struct Context {
     const PluginHost* host = nullptr;
     // Plug-in commands sxk accepts (those not clashing with a built-in name).
     std::vector<FoundCommand> plugin_commands = {};
+    // --strict, which main.cpp gives every command that reads a mesh: load_mesh refuses pinched
+    // vertices instead of splitting them (ReadOptions::split_pinched).
+    bool strict = false;
 };
 
 void add_info_command(CLI::App& app, Context& context);
@@ -44,7 +47,10 @@ void add_delaunay_flip_command(CLI::App& app, Context& context);
 void add_refine_command(CLI::App& app, Context& context);
 
 // Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
-// context.err, sets context.exit_code to 2 and returns nullopt.
+// context.err, sets context.exit_code to 2 and returns nullopt. What the reader repaired is said
+// on context.err ("sxk: warning: FILE: split 2 pinched vertices into 4 (--strict refuses
+// them)", Medit faces listed again with another reference); context.strict refuses pinched
+// vertices instead.
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options = {},
                               ReadReport* report = nullptr);
 

@@ -8,8 +8,27 @@ namespace sxk::cli {
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options,
                               ReadReport* report) {
     try {
-        Progress progress("reading " + file);
-        return read_mesh(file, options, report);
+        ReadOptions chosen = options;
+        if (context.strict) chosen.split_pinched = false;
+        ReadReport own;
+        if (!report) report = &own;
+        std::optional<Mesh> mesh;
+        {
+            Progress progress("reading " + file);
+            mesh = read_mesh(file, chosen, report);
+        }
+        // docs/cli.md "Reading meshes" (the same lines as plugins/command_line.hpp)
+        if (report->pinched_vertices > 0) {
+            const std::size_t n = report->pinched_vertices;
+            context.err << "sxk: warning: " << file << ": split " << n << " pinched vert" << (n == 1 ? "ex" : "ices")
+                        << " into " << n + report->vertex_copies.size() << " (--strict refuses them)\n";
+        }
+        if (report->label_conflicts > 0) {
+            context.err << "sxk: warning: " << report->first_label_conflict << "; the first reference is kept";
+            if (report->label_conflicts > 1) context.err << " (" << report->label_conflicts << " faces like this)";
+            context.err << '\n';
+        }
+        return mesh;
     } catch (const InputError& error) {
         context.err << "sxk: " << error.what() << '\n';
     } catch (const std::bad_alloc&) {

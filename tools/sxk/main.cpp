@@ -94,6 +94,14 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     add_dissect_command(app, context);
     add_delaunay_flip_command(app, context);
     add_refine_command(app, context);
+    // One --strict for every command that reads a mesh (all but plugins): load_mesh reads it.
+    // validate judges the file as it is (never splits) and has a --strict of its own: flat
+    // elements are invalid.
+    for (CLI::App* command : app.get_subcommands({}))
+        if (command->get_name() != "plugins" && command->get_name() != "validate")
+            command->add_flag("--strict", context.strict,
+                              "Refuse a mesh with pinched vertices (elements meeting only at a vertex) instead of "
+                              "splitting them");
 
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {
         // the command may belong to a plug-in that was not found: say where sxk looked

@@ -8,7 +8,9 @@
 // Inverted elements (negative exact orientation when topological == ambient dimension) are an
 // error unless ReadOptions::reorient is set, which flips them and counts them. Flat elements
 // (orientation exactly zero) are read as they are. A vertex whose elements do not connect
-// through faces (two tetrahedra touching at a corner) is refused: the kernel cannot hold it.
+// through faces (two tetrahedra touching at a corner: a pinched vertex) cannot be held by the
+// kernel; by default it is split, one vertex per face-connected piece of its star (thesis §7.3,
+// the (v,{})-components of dissection), see ReadOptions::split_pinched.
 //
 // Dimensions. The topological dimension is that of the largest cells in the file (tetrahedra,
 // else triangles; a file with neither is refused). The ambient dimension is what the file says
@@ -26,6 +28,12 @@
 // faces outward), never invented ones; TetGen without face labels writes the plain boundary
 // without markers.
 //
+// Medit lists a face more than once where its writer gives each side of a face its own line
+// (CGAL's output_to_medit writes every boundary triangle twice, once per orientation, and an
+// interface triangle with the subdomain of either side): the repeats are one labelled face. When
+// the references differ, the first listed is kept and ReadReport::label_conflicts says so. Other
+// formats refuse a repeated face.
+//
 // Error messages number elements as the file does (Gmsh element tags, TetGen element numbers),
 // else 1, 2, ... in file order; vertices likewise (OFF from 0, Medit and OBJ from 1).
 #pragma once
@@ -37,6 +45,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "sxk/config.hpp"
 #include "sxk/mesh.hpp"
@@ -77,10 +87,27 @@ struct ReadOptions {
     // oriented elements are kept (and inverted ones are not refused) so that validate() can
     // name the broken invariant. `sxk validate` reads this way; nothing else should.
     bool lenient = false;
+    // A pinched vertex (its star falls into several pieces that only touch at it) is split into
+    // one vertex per face-connected piece: the piece holding the first element in file order
+    // keeps the vertex, every other piece gets a new vertex appended after the file's own (for
+    // each pinched vertex in file order, its pieces in order of their first element), with the
+    // position of its original. Elements keep their order and labels; a labelled face around
+    // the vertex goes to the copy its element got. false refuses the file as before ("vertex N
+    // is non-manifold: ..."). A lenient read never splits (validate() names the vertex).
+    bool split_pinched = true;
 };
 
 struct ReadReport {
     std::size_t reoriented = 0;  // elements flipped because of ReadOptions::reorient
+    // ReadOptions::split_pinched: how many of the file's vertices were split, and each new
+    // vertex with the vertex it copies, (original, copy) in order of creation (copies are
+    // numbered from the file's vertex count on; originals are 0-based ids in file order).
+    std::size_t pinched_vertices = 0;
+    std::vector<std::pair<VertexId, VertexId>> vertex_copies;
+    // Medit faces listed again with a different reference (the first one is kept), and the
+    // first of them as "FILE:LINE: triangle 2 repeats triangle 1 with reference 2, not 1".
+    std::size_t label_conflicts = 0;
+    std::string first_label_conflict;
 };
 
 // Reads a mesh file; for TetGen give either X.node or X.ele (the other, and X.face if present,

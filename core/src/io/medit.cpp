@@ -10,7 +10,8 @@
 //
 // The top-dimensional cells are the elements and their ref is the element label; the cells one
 // dimension lower (Triangles of a tetrahedral mesh, Edges of a triangle mesh) are labelled faces
-// (Mesh::face_labels). Vertex refs are ignored, and so are sections that only annotate
+// (Mesh::face_labels); a face listed more than once is one labelled face, its first ref kept
+// (ReadReport::label_conflicts counts repeats with another ref). Vertex refs are ignored, and so are sections that only annotate
 // (Corners, Ridges, Normals, ...). Non-simplicial cells are refused.
 #include <array>
 #include <cctype>
@@ -138,6 +139,9 @@ Mesh read_medit(std::string_view text, const std::string& name, const ReadOption
     RawMesh raw;
     raw.vertex_file = raw.edges.file = raw.triangles.file = raw.tetrahedra.file = name;
     raw.vertex_base = 1;
+    // CGAL's output_to_medit lists every boundary triangle twice, once per orientation, each
+    // with the subdomain on that side (the same one on the outer boundary): one labelled face
+    raw.edges.repeats_are_one_face = raw.triangles.repeats_are_one_face = true;
     const char* const text_end = text.data() + text.size();
     auto bytes_left = [&] { return static_cast<std::size_t>(text_end - in.peek().data()); };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 #include <unordered_map>
+#include <utility>
 
 #include "sxk/predicates.hpp"
 
@@ -178,12 +179,158 @@ void check_vertex_stars(const RawMesh& raw, std::span<const Simplex> simplexes, 
     }
 }
 
+// Splits every pinched vertex of the element list (thesis §7.3: the (v,C)-components of
+// dissection with C empty, i.e. the pieces of star(v) that are joined through faces containing
+// v). Runs only after assign_elements refused a star, so the face matching it repeats costs
+// nothing on files without pinched vertices. The piece holding the element that comes first in
+// the file keeps v; the others get new vertices, appended after the file's own in order of v and
+// then of each piece's first element, copying v's position, line and number (so that messages
+// still name the file's vertex). Elements keep their order, orientation and labels; a labelled
+// face containing v takes the copy of the element it is a face of (a face containing v lies in
+// one piece: its elements are joined through it). Returns the (original, copy) pairs.
+std::vector<std::pair<VertexId, VertexId>> split_pinched_vertices(RawMesh& raw, CellList& cells,
+                                                                  CellList& faces,
+                                                                  std::vector<Simplex>& simplexes) {
+    const std::size_t k = static_cast<std::size_t>(cells.size);
+    const std::size_t n = simplexes.size();
+    const std::size_t total = n * k;  // (element, slot) incidences
+    const std::size_t vertex_count = raw.points.size();
+
+    // Every face of every element, keyed by its sorted vertices (a simplex is canonical, so
+    // dropping one slot keeps the rest sorted); equal keys are the two sides of one face.
+    struct FaceEntry {
+        std::array<VertexId, 3> key;
+        std::uint32_t incidence;  // element * k + the slot opposite the face
+    };
+    std::vector<FaceEntry> entries(total);
+    for (std::size_t t = 0; t < n; ++t)
+        for (std::size_t j = 0; j < k; ++j) {
+            FaceEntry& e = entries[t * k + j];
+            e.key = {invalid_id, invalid_id, invalid_id};
+            for (std::size_t i = 0, r = 0; i < k; ++i)
+                if (i != j)
+                    e.key[r++] = simplexes[t].vertex(static_cast<int>(i));
+            e.incidence = static_cast<std::uint32_t>(t * k + j);
+        }
+    std::sort(entries.begin(), entries.end(), [](const FaceEntry& a, const FaceEntry& b) {
+        return a.key != b.key ? a.key < b.key : a.incidence < b.incidence;
+    });
+
+    // Union-find over the incidences: two elements sharing a face join, for each vertex of the
+    // face, that vertex's incidences in both.
+    std::vector<std::uint32_t> parent(total);
+    for (std::size_t s = 0; s < total; ++s)
+        parent[s] = static_cast<std::uint32_t>(s);
+    auto find = [&parent](std::uint32_t s) {
+        while (parent[s] != s)
+            s = parent[s] = parent[parent[s]];
+        return s;
+    };
+    auto slot_of = [&](std::size_t t, VertexId w) {
+        std::size_t i = 0;
+        while (simplexes[t].vertex(static_cast<int>(i)) != w)
+            ++i;
+        return i;
+    };
+    for (std::size_t a = 0, b = 1; b < total; ++b) {
+        if (entries[b].key != entries[a].key) {
+            a = b;
+            continue;
+        }
+        const std::size_t t = entries[a].incidence / k, u = entries[b].incidence / k;
+        for (std::size_t r = 0; r + 1 < k; ++r) {
+            const VertexId w = entries[a].key[r];
+            const std::uint32_t x = find(static_cast<std::uint32_t>(t * k + slot_of(t, w)));
+            const std::uint32_t y = find(static_cast<std::uint32_t>(u * k + slot_of(u, w)));
+            if (x != y)
+                parent[std::max(x, y)] = std::min(x, y);
+        }
+    }
+
+    // Number the pieces of each star in order of their first incidence (element order).
+    constexpr std::uint32_t unnumbered = ~std::uint32_t{0};
+    std::vector<std::uint32_t> piece_of_root(total, unnumbered);
+    std::vector<std::uint32_t> pieces(vertex_count, 0);
+    for (std::size_t s = 0; s < total; ++s) {
+        const std::uint32_t r = find(static_cast<std::uint32_t>(s));
+        if (piece_of_root[r] == unnumbered)
+            piece_of_root[r] = pieces[simplexes[s / k].vertex(static_cast<int>(s % k))]++;
+    }
+    std::vector<std::pair<VertexId, VertexId>> copies;
+    std::vector<VertexId> first_copy(vertex_count, invalid_id);
+    if (raw.point_numbers.empty()) {
+        raw.point_numbers.resize(vertex_count);
+        for (std::size_t v = 0; v < vertex_count; ++v)
+            raw.point_numbers[v] = raw.vertex_number(static_cast<VertexId>(v));
+    }
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+        if (pieces[v] <= 1)
+            continue;
+        if (raw.points.size() + pieces[v] - 1 >= invalid_id)
+            fail(raw.vertex_file, raw.point_lines[v], "too many vertices after splitting");
+        first_copy[v] = static_cast<VertexId>(raw.points.size());
+        for (std::uint32_t p = 1; p < pieces[v]; ++p) {
+            copies.emplace_back(static_cast<VertexId>(v), static_cast<VertexId>(raw.points.size()));
+            raw.points.push_back(raw.points[v]);
+            raw.point_lines.push_back(raw.point_lines[v]);
+            raw.point_numbers.push_back(raw.point_numbers[v]);
+        }
+    }
+    auto renamed = [&](std::size_t s) {
+        const VertexId v = simplexes[s / k].vertex(static_cast<int>(s % k));
+        const std::uint32_t p = piece_of_root[find(static_cast<std::uint32_t>(s))];
+        return p == 0 ? v : first_copy[v] + p - 1;
+    };
+
+    // Labelled faces first, while the elements still hold the original ids.
+    const std::size_t m = k - 1;
+    for (std::size_t i = 0; i < faces.count(); ++i) {
+        VertexId* vertices = faces.vertices.data() + i * m;
+        if (std::none_of(vertices, vertices + m, [&](VertexId w) { return pieces[w] > 1; }))
+            continue;
+        FaceEntry probe{{invalid_id, invalid_id, invalid_id}, 0};
+        std::copy(vertices, vertices + m, probe.key.begin());
+        // m <= 3 keys sorted by compare-and-swap (std::sort here trips g++ 12's -Warray-bounds)
+        for (std::size_t a = 0; a + 1 < m; ++a)
+            for (std::size_t b = a + 1; b < m; ++b)
+                if (probe.key[b] < probe.key[a])
+                    std::swap(probe.key[a], probe.key[b]);
+        const auto at = std::lower_bound(entries.begin(), entries.end(), probe,
+                                         [](const FaceEntry& a, const FaceEntry& b) {
+                                             return a.key < b.key;
+                                         });
+        if (at == entries.end() || at->key != probe.key)
+            continue;  // not a face of any element: add_face_labels says so
+        const std::size_t t = at->incidence / k;
+        for (std::size_t r = 0; r < m; ++r)
+            if (pieces[vertices[r]] > 1)
+                vertices[r] = renamed(t * k + slot_of(t, vertices[r]));
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+        std::array<VertexId, 4> now{};
+        bool changed = false;
+        for (std::size_t j = 0; j < k; ++j) {
+            now[j] = renamed(t * k + j);
+            changed = changed || now[j] != simplexes[t].vertex(static_cast<int>(j));
+        }
+        if (!changed)
+            continue;
+        // the file's order too, so that every list speaks of the same vertices
+        VertexId* listed = cells.vertices.data() + t * k;
+        for (std::size_t j = 0; j < k; ++j)
+            listed[j] = now[slot_of(t, listed[j])];
+        // the canonical order with the new ids in place: same orientation, re-sorted
+        simplexes[t] = Simplex(simplexes[t].sign(), std::span<const VertexId>(now.data(), k));
+    }
+    return copies;
+}
+
 Simplex unoriented_key(std::span<const VertexId> vertices) {
     const Simplex s(+1, vertices);
     return s.sign() > 0 ? s : s.mate();
 }
 
-void add_face_labels(const CellList& faces, Mesh& mesh) {
+void add_face_labels(const CellList& faces, Mesh& mesh, ReadReport* report) {
     const int d = mesh.topological_dimension();
     const char* kind = cell_name(faces.size);
     FaceLabels& labels = mesh.face_labels();
@@ -198,14 +345,27 @@ void add_face_labels(const CellList& faces, Mesh& mesh) {
                  std::string(kind) + " " + std::to_string(faces.number(i)) +
                      " has a repeated vertex");
         if (const auto [at, fresh] = labels.emplace(key, faces.labels[i]); !fresh) {
-            // listed before: find where (error path only, so a scan rather than a second map)
+            if (faces.repeats_are_one_face && at->second == faces.labels[i])
+                continue;
+            // listed before: find where (rare, so a scan rather than a second map)
             std::size_t first = 0;
             while (unoriented_key({faces.vertices.data() + first * static_cast<std::size_t>(d),
                                    static_cast<std::size_t>(d)}) != key)
                 ++first;
-            fail(faces.file, faces.lines[i],
-                 std::string(kind) + " " + std::to_string(faces.number(i)) + " repeats " + kind +
-                     " " + std::to_string(faces.number(first)));
+            const std::string repeat = std::string(kind) + " " + std::to_string(faces.number(i)) +
+                                       " repeats " + kind + " " +
+                                       std::to_string(faces.number(first));
+            if (!faces.repeats_are_one_face)
+                fail(faces.file, faces.lines[i], repeat);
+            // the same face with another reference (CGAL: the subdomains on its two sides):
+            // the first listed is kept, and the caller hears of it
+            if (report && report->label_conflicts++ == 0)
+                report->first_label_conflict =
+                    InputError(faces.file, faces.lines[i],
+                               repeat + " with reference " + std::to_string(faces.labels[i]) +
+                                   ", not " + std::to_string(at->second))
+                        .what();
+            continue;
         }
         if (mesh.find_boundary_face(key) == invalid_id &&
             mesh.find_boundary_face(key.mate()) == invalid_id)
@@ -235,7 +395,7 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
     if (d == 0)
         fail(fallback_file, 0, "no triangles or tetrahedra");
     CellList& cells = d == 3 ? raw.tetrahedra : raw.triangles;
-    const CellList& faces = d == 3 ? raw.triangles : raw.edges;
+    CellList& faces = d == 3 ? raw.triangles : raw.edges;
     const std::size_t k = static_cast<std::size_t>(d + 1);
     const std::size_t n = cells.count();
 
@@ -287,7 +447,23 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
             fail(cells.file, item < n ? cells.lines[item] : 0, built.reason());
         }
     } else {
-        if (auto built = mesh.assign_elements(simplexes, cells.labels); !built) {
+        Outcome<Done> built = mesh.assign_elements(simplexes, cells.labels);
+        const bool pinched = !built && built.reason().rfind("star connectivity", 0) == 0;
+        if (pinched && options.split_pinched) {
+            const std::size_t file_vertices = raw.points.size();
+            std::vector<std::pair<VertexId, VertexId>> copies =
+                split_pinched_vertices(raw, cells, faces, simplexes);
+            for (std::size_t v = file_vertices; v < raw.points.size(); ++v)
+                mesh.add_vertex(raw.points[v]);
+            built = mesh.assign_elements(simplexes, cells.labels);
+            if (report) {
+                for (std::size_t c = 0; c < copies.size(); ++c)
+                    if (c == 0 || copies[c].first != copies[c - 1].first)
+                        ++report->pinched_vertices;
+                report->vertex_copies = std::move(copies);
+            }
+        }
+        if (!built) {
             // a pinched vertex is best named on the vertex's own line
             if (built.reason().rfind("star connectivity", 0) == 0)
                 check_vertex_stars(raw, simplexes, static_cast<int>(k));
@@ -297,7 +473,7 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
             explain_refusal(raw, cells, simplexes, item, built.reason());
         }
     }
-    add_face_labels(faces, mesh);
+    add_face_labels(faces, mesh, report);
     if (report)
         report->reoriented = reoriented;
     return mesh;

@@ -16,9 +16,12 @@
 //   5. Mesh::assign_elements: duplicates, faces shared by three or more elements, neighbours
 //      with inconsistent orientation; its refusal names an element index, mapped back to the
 //      element's number and line
-//   6. vertex stars connected through faces (the kernel's invariant, which assign_elements does
-//      not check: two tetrahedra touching only at a vertex)
-//   7. labelled faces: no repeated vertex, listed once, and a face of some element
+//   6. vertex stars connected through faces (the kernel's invariant: two tetrahedra touching
+//      only at a vertex). When assign_elements refuses a pinched vertex and
+//      ReadOptions::split_pinched is set, split_pinched_vertices (a step of its own, run only on
+//      that path) splits every pinched vertex and the elements are assigned again
+//   7. labelled faces: no repeated vertex, listed once (CellList::repeats_are_one_face: a
+//      repeat is the same face, the first label kept), and a face of some element
 #pragma once
 
 #include <array>
@@ -42,6 +45,9 @@ struct CellList {
     std::vector<std::int64_t>
         numbers;       // the file's numbers (Gmsh tags, TetGen ids); empty: 1, 2, ...
     std::string file;  // where the cells were read
+    // Labelled faces only: a face listed again is the same face (Medit writers list each side
+    // of a face); otherwise it is refused as a repeat.
+    bool repeats_are_one_face = false;
 
     std::size_t count() const { return lines.size(); }
     std::int64_t number(std::size_t i) const {
