@@ -42,9 +42,9 @@ struct Format {
     const char* file;  // NAME + this
     int gmsh_version;
 };
-constexpr Format formats[] = {{"tetgen", ".1.ele", 0}, {"medit", ".mesh", 0},
+constexpr Format formats[] = {{"tetgen", ".1.ele", 0},   {"medit", ".mesh", 0},
                               {"gmsh22", "-22.msh", 22}, {"gmsh41", "-41.msh", 41},
-                              {"off", ".off", 0},       {"obj", ".obj", 0}};
+                              {"off", ".off", 0},        {"obj", ".obj", 0}};
 
 struct Input {
     std::string name;
@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
     }
     for (const Format& format : formats) {
         benchmark::RegisterBenchmark(
-            (std::string("read/") + format.name + "/" + input.name).c_str(), read_file, &input, &format)
+            (std::string("read/") + format.name + "/" + input.name).c_str(), read_file, &input,
+            &format)
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(
             (std::string("write/") + format.name + "/" + input.name).c_str(), write_file, &input,
