@@ -336,6 +336,7 @@ void add_face_labels(const CellList& faces, Mesh& mesh, ReadReport* report) {
     FaceLabels& labels = mesh.face_labels();
     labels.reserve(faces.count());
     std::unordered_map<Simplex, std::size_t, SimplexHash> interior;  // not on the boundary
+    bool listed_first = true;  // try the face as listed before its mate
     for (std::size_t i = 0; i < faces.count(); ++i) {
         const std::span<const VertexId> vertices(
             faces.vertices.data() + i * static_cast<std::size_t>(d), static_cast<std::size_t>(d));
@@ -367,9 +368,17 @@ void add_face_labels(const CellList& faces, Mesh& mesh, ReadReport* report) {
                         .what();
             continue;
         }
-        if (mesh.find_boundary_face(key) == invalid_id &&
-            mesh.find_boundary_face(key.mate()) == invalid_id)
-            interior.emplace(key, i);
+        // Files list their boundary faces oriented one way (all outward, or all inward): ask
+        // first for the orientation found last, one boundary-map lookup per face instead of
+        // 1.5 (each costs cache misses into the face and element pools; docs/performance.md, "io")
+        const Simplex listed(+1, vertices);
+        const Simplex first = listed_first ? listed : listed.mate();
+        if (mesh.find_boundary_face(first) == invalid_id) {
+            if (mesh.find_boundary_face(first.mate()) == invalid_id)
+                interior.emplace(key, i);
+            else
+                listed_first = !listed_first;
+        }
     }
     if (interior.empty())
         return;
