@@ -70,7 +70,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (patches.empty()) finding("no patches and no error");
     for (const TensorPatch& patch : patches) {
         for (const Point& p : patch.points)
-            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) finding("non-finite point read");
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+                finding("non-finite point read");
         const auto halves = to_triangular(patch);
         // the corners: (0,0), (1,0), (1,1) and (0,0), (1,1), (0,1) of the rectangle; inside, both
         // sides round like convex combinations of the control points, so relative to their size
@@ -85,8 +86,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (!agrees(halves[0], {1, 0, 0}, 0, 0) || !agrees(halves[0], {0, 1, 0}, 1, 0) ||
             !agrees(halves[0], {0, 0, 1}, 1, 1) || !agrees(halves[1], {0, 0, 1}, 0, 1))
             finding("a triangular half does not meet the tensor patch at a corner");
-        // (1/2, 1/2) is on the diagonal both halves share: (r, s, t) = (1/2, 0, 1/2) and (1/2, 1/2, 0)
-        if (!agrees(halves[0], {0.5, 0, 0.5}, 0.5, 0.5) || !agrees(halves[1], {0.5, 0.5, 0}, 0.5, 0.5))
+        // (1/2, 1/2) lies on the diagonal both halves share: (r, s, t) = (1/2, 0, 1/2) in the first,
+        // (1/2, 1/2, 0) in the second
+        if (!agrees(halves[0], {0.5, 0, 0.5}, 0.5, 0.5) ||
+            !agrees(halves[1], {0.5, 0.5, 0}, 0.5, 0.5))
             finding("a triangular half does not meet the tensor patch at the centre");
         for (const TriangularPatch& half : halves) check_clipping(half);
     }

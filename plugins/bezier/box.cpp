@@ -39,7 +39,8 @@ double smallest_flatness(const Box& box) {
         return 0;
     double largest_coordinate = 0;
     for (std::size_t q = 0; q < 3; ++q)
-        largest_coordinate = std::max({largest_coordinate, std::abs(box.lower[q]), std::abs(box.upper[q])});
+        largest_coordinate =
+            std::max({largest_coordinate, std::abs(box.lower[q]), std::abs(box.upper[q])});
     return 1e-12 * (diagonal + largest_coordinate) / diagonal;
 }
 

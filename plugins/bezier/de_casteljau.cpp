@@ -53,7 +53,8 @@ void move_corner(int n, std::span<const Point> net, int corner, const Barycentri
     }
 }
 
-void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out, NetScratch& scratch) {
+void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out,
+                    NetScratch& scratch) {
     const auto average = [](const Point& p, const Point& q) {
         return Point{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2};
     };
@@ -77,20 +78,24 @@ void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out, 
             for (int j = 0; j <= length; ++j) {
                 edge[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(s)] = line[0];
                 for (int r = 0; r < length - j; ++r)
-                    line[static_cast<std::size_t>(r)] = average(line[static_cast<std::size_t>(r)], line[static_cast<std::size_t>(r + 1)]);
+                    line[static_cast<std::size_t>(r)] = average(
+                        line[static_cast<std::size_t>(r)], line[static_cast<std::size_t>(r + 1)]);
             }
         }
         // then i = m - j steps with BC, which keep r = 0: the curve (0, s, i - s) at 1/2
         for (int j = 0; j <= m; ++j) {
             const int i = m - j;
             for (int s = 0; s <= i; ++s)
-                line[static_cast<std::size_t>(s)] = edge[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(s)];
+                line[static_cast<std::size_t>(s)] =
+                    edge[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(s)];
             for (int step = 0; step < i; ++step)
                 for (int s = 0; s < i - step; ++s)
-                    line[static_cast<std::size_t>(s)] = average(line[static_cast<std::size_t>(s)], line[static_cast<std::size_t>(s + 1)]);
+                    line[static_cast<std::size_t>(s)] = average(
+                        line[static_cast<std::size_t>(s)], line[static_cast<std::size_t>(s + 1)]);
             out[net_index(n, j, k)] = line[0];
         }
-        if (m > 0) de_casteljau_step(m, level.data(), {0.5, 0.5, 0}, level.data());
+        if (m > 0)
+            de_casteljau_step(m, level.data(), {0.5, 0.5, 0}, level.data());
     }
 }
 

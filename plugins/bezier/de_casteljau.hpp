@@ -52,7 +52,8 @@ struct NetScratch {
 // t index, CA the s index, BC the r index): AB's steps as a pyramid over the net, O(n^3), then
 // per level CA's and BC's as univariate pyramids at 1/2 along lines, O(n^4) in all, every step
 // an average.
-void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out, NetScratch& scratch);
+void middle_quarter(int n, std::span<const Point> net, std::vector<Point>& out,
+                    NetScratch& scratch);
 
 // The net over the sub-triangle (R, S, T) of the domain (eq. 4.33): c_ijk = b[R^i, S^j, T^k],
 // R, S, T anywhere (outside the domain too). By three corner moves of O(n^3) each where every

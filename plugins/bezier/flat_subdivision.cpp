@@ -59,7 +59,8 @@ void split(std::uint32_t index, const std::array<Barycentric, 3>& corners, Trian
     // the same four in the piece's own coordinates
     constexpr Barycentric r{1, 0, 0}, s{0, 1, 0}, t{0, 0, 1}, rs{0.5, 0.5, 0}, st{0, 0.5, 0.5},
         tr{0.5, 0, 0.5};
-    constexpr std::array<std::array<Barycentric, 3>, 3> local{{{r, rs, tr}, {rs, s, st}, {tr, st, t}}};
+    constexpr std::array<std::array<Barycentric, 3>, 3> local{
+        {{r, rs, tr}, {rs, s, st}, {tr, st, t}}};
     for (std::size_t child = 0; child < 3; ++child)
         split(index, children[child],
               piece.subdivided(local[child][0], local[child][1], local[child][2]), max_height,
@@ -81,7 +82,8 @@ SubdivisionTooLarge::SubdivisionTooLarge(std::size_t max_bytes, std::size_t piec
     : std::length_error("flat_subdivision: the pieces would take more than " +
                         std::to_string(max_bytes) + " bytes (" + std::to_string(pieces) +
                         " made when it stopped)"),
-      m_max_bytes(max_bytes), m_pieces(pieces) {}
+      m_max_bytes(max_bytes),
+      m_pieces(pieces) {}
 
 double roth_height(const TriangularPatch& patch) {
     const int n = patch.degree();

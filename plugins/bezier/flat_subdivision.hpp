@@ -63,8 +63,8 @@ private:
 // Throws std::invalid_argument for max_depth < 0 or a negative or NaN max_height, and
 // SubdivisionTooLarge as soon as the pieces made would take more than max_bytes (leaf_bytes
 // each): then every patch's split stops, so the memory held stays near max_bytes.
-std::vector<SubPatch> flat_subdivision(const std::vector<TriangularPatch>& patches,
-                                       double max_height, int max_depth,
-                                       std::size_t max_bytes = std::numeric_limits<std::size_t>::max());
+std::vector<SubPatch> flat_subdivision(
+    const std::vector<TriangularPatch>& patches, double max_height, int max_depth,
+    std::size_t max_bytes = std::numeric_limits<std::size_t>::max());
 
 }  // namespace sxk::bezier

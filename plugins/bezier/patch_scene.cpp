@@ -221,8 +221,8 @@ Scene Scene::from_patches(std::vector<TriangularPatch> patches, const PatchScene
     }
     impl->bounds_margin = rounding_margin(impl->box);
     impl->trace_box = widened(impl->box, 2 * impl->bounds_margin);
-    impl->leaves =
-        flat_subdivision(patches, options.flatness * diagonal, options.max_depth, options.max_bytes);
+    impl->leaves = flat_subdivision(patches, options.flatness * diagonal, options.max_depth,
+                                    options.max_bytes);
     impl->patches = std::move(patches);
 
     impl->scene = embree::new_scene(impl->device);

@@ -383,8 +383,8 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
     // the largest count within max_tessellation_triangles, and within max_tessellation_steps:
     // a vertex costs one de Casteljau evaluation at the highest degree, n(n+1)(n+2)/6 steps
     const auto count = static_cast<long long>(patches.size());
-    const auto fitting = static_cast<int>(std::sqrt(static_cast<double>(max_tessellation_triangles) /
-                                                    static_cast<double>(count)));
+    const auto fitting = static_cast<int>(
+        std::sqrt(static_cast<double>(max_tessellation_triangles) / static_cast<double>(count)));
     int degree = 0;
     for (const TriangularPatch& patch : patches)
         degree = std::max(degree, patch.degree());
@@ -415,7 +415,8 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
     int searched = std::min(fitting, affordable);
     while (searched > 1 && 16 * work(searched) > max_tessellation_steps)
         --searched;
-    const int segments = options.segments_given ? options.segments : default_segments(patches, searched);
+    const int segments =
+        options.segments_given ? options.segments : default_segments(patches, searched);
     facts["segments"] = segments;
     TriangleSoup soup = tessellate(patches, segments);
     facts["triangles"] = soup.triangles.size();
@@ -538,8 +539,8 @@ bool refuse_options_for(const CommandOptions& options, bool patches, std::ostrea
     const std::array<int, 2> size = *parse_size(options.size);
     if (static_cast<long long>(size[0]) * size[1] > max_pixels) {
         why = "--size " + options.size + " has " +
-              std::to_string(static_cast<long long>(size[0]) * size[1]) + " pixels, more than the " +
-              std::to_string(max_pixels) + " allowed (8192x8192)";
+              std::to_string(static_cast<long long>(size[0]) * size[1]) +
+              " pixels, more than the " + std::to_string(max_pixels) + " allowed (8192x8192)";
     } else if (patches && options.colour == "quality") {
         why = "--colour quality needs a mesh; " + options.input + " holds patches";
     } else if (patches && options.cut_label) {

@@ -129,7 +129,8 @@ std::vector<double> pascal(int rows) {
     std::vector<double> table(size * size, 0.0);
     for (std::size_t a = 0; a < size; ++a) {
         table[a * size] = 1;
-        for (std::size_t b = 1; b <= a; ++b) table[a * size + b] = table[(a - 1) * size + b - 1] + table[(a - 1) * size + b];
+        for (std::size_t b = 1; b <= a; ++b)
+            table[a * size + b] = table[(a - 1) * size + b - 1] + table[(a - 1) * size + b];
     }
     return table;
 }
@@ -151,27 +152,34 @@ std::vector<double> pascal(int rows) {
 // corner arguments to u) with each blossom at corner arguments read off as a control point
 // instead of evaluated by de Casteljau: (m+1)(m+2)/2 x (n+1)(n+2)/2 terms, 53,361 for 20 x 20,
 // where one blossom per term cost O(m n (m + n)) more.
-TriangularPatch triangle_of(const TensorPatch& patch, const std::array<std::array<int, 2>, 3>& corners) {
+TriangularPatch triangle_of(const TensorPatch& patch,
+                            const std::array<std::array<int, 2>, 3>& corners) {
     const int m = patch.degree_u, n = patch.degree_v, degree = m + n;
     const std::vector<double> binomials = pascal(degree);
     const auto binomial = [&](int a, int b) {
-        return binomials[static_cast<std::size_t>(a) * static_cast<std::size_t>(degree + 1) + static_cast<std::size_t>(b)];
+        return binomials[static_cast<std::size_t>(a) * static_cast<std::size_t>(degree + 1) +
+                         static_cast<std::size_t>(b)];
     };
     const double total = binomial(degree, m);
     std::vector<Point> points(net_size(degree), Point{0, 0, 0});
     for (int b2 = 0; b2 <= m; ++b2)
         for (int b1 = 0; b1 <= m - b2; ++b1) {
             const std::array<int, 3> beta{m - b1 - b2, b1, b2};
-            const int a_index = beta[0] * corners[0][0] + beta[1] * corners[1][0] + beta[2] * corners[2][0];
+            const int a_index =
+                beta[0] * corners[0][0] + beta[1] * corners[1][0] + beta[2] * corners[2][0];
             for (int a2 = 0; a2 <= n; ++a2)
                 for (int a1 = 0; a1 <= n - a2; ++a1) {
                     const std::array<int, 3> alpha{n - a1 - a2, a1, a2};
-                    const int b_index = alpha[0] * corners[0][1] + alpha[1] * corners[1][1] + alpha[2] * corners[2][1];
-                    const double weight = binomial(alpha[0] + beta[0], beta[0]) * binomial(alpha[1] + beta[1], beta[1]) *
+                    const int b_index = alpha[0] * corners[0][1] + alpha[1] * corners[1][1] +
+                                        alpha[2] * corners[2][1];
+                    const double weight = binomial(alpha[0] + beta[0], beta[0]) *
+                                          binomial(alpha[1] + beta[1], beta[1]) *
                                           binomial(alpha[2] + beta[2], beta[2]) / total;
-                    const Point& p = patch.points[static_cast<std::size_t>(a_index * (n + 1) + b_index)];
+                    const Point& p =
+                        patch.points[static_cast<std::size_t>(a_index * (n + 1) + b_index)];
                     Point& c = points[net_index(degree, a1 + b1, a2 + b2)];
-                    for (std::size_t q = 0; q < 3; ++q) c[q] += weight * p[q];
+                    for (std::size_t q = 0; q < 3; ++q)
+                        c[q] += weight * p[q];
                 }
         }
     return TriangularPatch(degree, std::move(points));

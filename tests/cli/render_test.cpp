@@ -375,20 +375,25 @@ std::string elevated_teapots(int degree, int copies) {
     for (int copy = 0; copy < copies; ++copy)
         for (const auto& points : bicubic) {
             // elevate along u (index a of P_ab = points[4a + b]), then along v
-            std::vector<std::array<double, 3>> in_u((d + 1) * 4, {0, 0, 0}), in_uv((d + 1) * (d + 1), {0, 0, 0});
+            std::vector<std::array<double, 3>> in_u((d + 1) * 4, {0, 0, 0}),
+                in_uv((d + 1) * (d + 1), {0, 0, 0});
             for (int k = 0; k <= degree; ++k)
                 for (int j = 0; j <= 3; ++j) {
-                    const double w = binomial(3, j) * binomial(degree - 3, k - j) / binomial(degree, k);
+                    const double w =
+                        binomial(3, j) * binomial(degree - 3, k - j) / binomial(degree, k);
                     for (std::size_t b = 0; b < 4; ++b)
                         for (std::size_t q = 0; q < 3; ++q)
-                            in_u[static_cast<std::size_t>(k) * 4 + b][q] += w * points[static_cast<std::size_t>(j) * 4 + b][q];
+                            in_u[static_cast<std::size_t>(k) * 4 + b][q] +=
+                                w * points[static_cast<std::size_t>(j) * 4 + b][q];
                 }
             for (std::size_t a = 0; a <= d; ++a)
                 for (int k = 0; k <= degree; ++k)
                     for (int j = 0; j <= 3; ++j) {
-                        const double w = binomial(3, j) * binomial(degree - 3, k - j) / binomial(degree, k);
+                        const double w =
+                            binomial(3, j) * binomial(degree - 3, k - j) / binomial(degree, k);
                         for (std::size_t q = 0; q < 3; ++q)
-                            in_uv[a * (d + 1) + static_cast<std::size_t>(k)][q] += w * in_u[a * 4 + static_cast<std::size_t>(j)][q];
+                            in_uv[a * (d + 1) + static_cast<std::size_t>(k)][q] +=
+                                w * in_u[a * 4 + static_cast<std::size_t>(j)][q];
                     }
             out << degree << ' ' << degree << '\n';
             for (const auto& p : in_uv)
@@ -414,16 +419,17 @@ TEST(SxkRender, ManyHighDegreePatchesRenderInSeconds) {
     const fs::path in = f.input("teapots20.bpt", first.str());
     const auto start = std::chrono::steady_clock::now();
     const ProcessResult run = f.run(in.string(), {"--size", "320x240", "--json"});
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["bpt_patches"], 200);
     EXPECT_EQ(json["patches"], 400);
     EXPECT_EQ(png_size(f.out), std::make_pair(320u, 240u));
-    std::cout << "[ time     ] " << fs::file_size(in) << " bytes, 200 patches 20x20: " << json["leaves"]
-              << " leaves, sxk render " << seconds << " s (read and build "
-              << json["seconds"]["read_and_build"] << " s, render " << json["seconds"]["render"]
-              << " s)\n";
+    std::cout << "[ time     ] " << fs::file_size(in)
+              << " bytes, 200 patches 20x20: " << json["leaves"] << " leaves, sxk render "
+              << seconds << " s (read and build " << json["seconds"]["read_and_build"]
+              << " s, render " << json["seconds"]["render"] << " s)\n";
 }
 
 // Issue 12: what a small input can make huge is refused, exit 2, naming what to change.

@@ -12,8 +12,8 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <string>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "bezier_random.hpp"
@@ -79,16 +79,19 @@ TEST(TriangularPatch, SubdivisionReproducesTheSurfaceOverTheSubTriangle) {
 // Roth's middle quarter (flat_subdivision) by middle_quarter's line pyramids is the general
 // subdivision over (BC, CA, AB).
 TEST(TriangularPatch, MiddleQuarterIsTheSubdivisionOverTheMidpoints) {
-    std::mt19937_64 rng(test::seed_for("TriangularPatch.MiddleQuarterIsTheSubdivisionOverTheMidpoints"));
+    std::mt19937_64 rng(
+        test::seed_for("TriangularPatch.MiddleQuarterIsTheSubdivisionOverTheMidpoints"));
     for (int degree : {0, 1, 2, 3, 6, 11, 40}) {
         const TriangularPatch patch = random_patch(degree, rng);
-        const TriangularPatch expected = patch.subdivided({0, 0.5, 0.5}, {0.5, 0, 0.5}, {0.5, 0.5, 0});
+        const TriangularPatch expected =
+            patch.subdivided({0, 0.5, 0.5}, {0.5, 0, 0.5}, {0.5, 0.5, 0});
         std::vector<Point> got;
         NetScratch scratch;
         middle_quarter(degree, patch.control_points(), got, scratch);
         ASSERT_EQ(got.size(), expected.control_points().size());
         for (std::size_t i = 0; i < got.size(); ++i)
-            EXPECT_LT(distance(got[i], expected.control_points()[i]), 1e-13) << "degree " << degree << " point " << i;
+            EXPECT_LT(distance(got[i], expected.control_points()[i]), 1e-13)
+                << "degree " << degree << " point " << i;
     }
 }
 
@@ -140,26 +143,33 @@ TEST(TriangularPatch, RefusesAWrongNumberOfControlPoints) {
 // total degree m + n, and its control point c_ijk over the triangle A B C is the average of the
 // tensor blossom over the ways to give m of its m + n arguments (i copies of A, j of B, k of C)
 // to u and the rest to v.
-Point tensor_blossom(const TensorPatch& patch, const std::vector<double>& us, const std::vector<double>& vs) {
+Point tensor_blossom(const TensorPatch& patch, const std::vector<double>& us,
+                     const std::vector<double>& vs) {
     const int m = patch.degree_u, n = patch.degree_v;
     std::vector<Point> column(n + 1), row(m + 1);
     for (int b = 0; b <= n; ++b) {
-        for (int a = 0; a <= m; ++a) row[a] = patch.points[a * (n + 1) + b];
+        for (int a = 0; a <= m; ++a)
+            row[a] = patch.points[a * (n + 1) + b];
         for (int level = m; level > 0; --level)
             for (int a = 0; a < level; ++a)
-                for (int q = 0; q < 3; ++q) row[a][q] = (1 - us[m - level]) * row[a][q] + us[m - level] * row[a + 1][q];
+                for (int q = 0; q < 3; ++q)
+                    row[a][q] = (1 - us[m - level]) * row[a][q] + us[m - level] * row[a + 1][q];
         column[b] = row[0];
     }
     for (int level = n; level > 0; --level)
         for (int b = 0; b < level; ++b)
             for (int q = 0; q < 3; ++q)
-                column[b][q] = (1 - vs[n - level]) * column[b][q] + vs[n - level] * column[b + 1][q];
+                column[b][q] =
+                    (1 - vs[n - level]) * column[b][q] + vs[n - level] * column[b + 1][q];
     return column[0];
 }
 
-double binomial(int n, int k) { return factorial(n) / (factorial(k) * factorial(n - k)); }
+double binomial(int n, int k) {
+    return factorial(n) / (factorial(k) * factorial(n - k));
+}
 
-TriangularPatch half_by_blossoms(const TensorPatch& patch, const std::array<std::array<double, 2>, 3>& corners) {
+TriangularPatch half_by_blossoms(const TensorPatch& patch,
+                                 const std::array<std::array<double, 2>, 3>& corners) {
     const int m = patch.degree_u, n = patch.degree_v, degree = m + n;
     std::vector<Point> points((degree + 1) * (degree + 2) / 2);
     for (int k = 0; k <= degree; ++k)
@@ -170,16 +180,19 @@ TriangularPatch half_by_blossoms(const TensorPatch& patch, const std::array<std:
             for (int a = 0; a <= std::min(i, m); ++a)
                 for (int b = 0; b <= std::min(j, m - a); ++b) {
                     const int c = m - a - b;
-                    if (c > k) continue;
+                    if (c > k)
+                        continue;
                     const std::array<int, 3> to_u{a, b, c};
                     std::vector<double> us, vs;
                     for (int corner = 0; corner < 3; ++corner) {
                         us.insert(us.end(), to_u[corner], corners[corner][0]);
                         vs.insert(vs.end(), copies[corner] - to_u[corner], corners[corner][1]);
                     }
-                    const double weight = binomial(i, a) * binomial(j, b) * binomial(k, c) / binomial(degree, m);
+                    const double weight =
+                        binomial(i, a) * binomial(j, b) * binomial(k, c) / binomial(degree, m);
                     const Point f = tensor_blossom(patch, us, vs);
-                    for (int q = 0; q < 3; ++q) sum[q] += weight * f[q];
+                    for (int q = 0; q < 3; ++q)
+                        sum[q] += weight * f[q];
                 }
             points[TriangularPatch::index(degree, j, k)] = sum;
         }
@@ -189,7 +202,8 @@ TriangularPatch half_by_blossoms(const TensorPatch& patch, const std::array<std:
 TensorPatch random_tensor_patch(int m, int n, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> coordinate(-1, 1);
     TensorPatch patch{m, n, std::vector<Point>((m + 1) * (n + 1))};
-    for (Point& p : patch.points) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    for (Point& p : patch.points)
+        p = {coordinate(rng), coordinate(rng), coordinate(rng)};
     return patch;
 }
 
@@ -200,17 +214,20 @@ TEST(TensorPatch, ConversionMatchesTheBlossomConversion) {
     std::mt19937_64 rng(test::seed_for("TensorPatch.ConversionMatchesTheBlossomConversion"));
     std::vector<std::pair<int, int>> degrees{{10, 10}, {12, 3}, {0, 14}, {14, 0}};
     for (int m = 0; m <= 8; ++m)
-        for (int n = 0; n <= 8; ++n) degrees.emplace_back(m, n);
+        for (int n = 0; n <= 8; ++n)
+            degrees.emplace_back(m, n);
     double worst = 0;
     for (const auto& [m, n] : degrees) {
         const TensorPatch patch = random_tensor_patch(m, n, rng);
         const auto halves = to_triangular(patch);
-        const std::array<TriangularPatch, 2> expected{half_by_blossoms(patch, {{{0, 0}, {1, 0}, {1, 1}}}),
-                                                      half_by_blossoms(patch, {{{0, 0}, {1, 1}, {0, 1}}})};
+        const std::array<TriangularPatch, 2> expected{
+            half_by_blossoms(patch, {{{0, 0}, {1, 0}, {1, 1}}}),
+            half_by_blossoms(patch, {{{0, 0}, {1, 1}, {0, 1}}})};
         for (std::size_t h = 0; h < 2; ++h) {
             ASSERT_EQ(halves[h].degree(), m + n);
             for (std::size_t i = 0; i < expected[h].control_points().size(); ++i) {
-                const double error = distance(halves[h].control_points()[i], expected[h].control_points()[i]);
+                const double error =
+                    distance(halves[h].control_points()[i], expected[h].control_points()[i]);
                 worst = std::max(worst, error);
                 EXPECT_LT(error, 1e-12) << m << "x" << n << " half " << h << " point " << i;
             }
@@ -223,7 +240,8 @@ TEST(TensorPatch, ConversionMatchesTheBlossomConversion) {
 TEST(TensorPatch, TwoTriangularHalvesReproduceIt) {
     std::mt19937_64 rng(test::seed_for("TensorPatch.TwoTriangularHalvesReproduceIt"));
     std::uniform_real_distribution<double> unit(0, 1);
-    for (const auto& [m, n] : std::vector<std::pair<int, int>>{{3, 3}, {1, 2}, {2, 4}, {0, 3}, {20, 20}, {20, 7}, {0, 20}}) {
+    for (const auto& [m, n] : std::vector<std::pair<int, int>>{
+             {3, 3}, {1, 2}, {2, 4}, {0, 3}, {20, 20}, {20, 7}, {0, 20}}) {
         const TensorPatch patch = random_tensor_patch(m, n, rng);
         const auto halves = to_triangular(patch);
         EXPECT_EQ(halves[0].degree(), m + n);
