@@ -84,7 +84,8 @@ TEST(SxkPinched, ConvertWritesTheSplitMeshWhichValidates) {
         const ProcessResult run = sxk({"convert", pinched.string(), out.string()});
         EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
         EXPECT_EQ(run.err, split_warning(pinched, "1 pinched vertex into 2")) << name;
-        if (std::string(name) == "split.vtu") continue;  // write only
+        if (std::string(name) == "split.vtu")
+            continue;  // write only
         const ProcessResult check = sxk({"validate", out.string()});
         EXPECT_EQ(check.exit_code, 0) << name << ": " << check.out;
         EXPECT_EQ(check.out, out.string() + ": valid (9 vertices, 3 tetrahedra)\n");

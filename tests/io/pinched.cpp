@@ -93,8 +93,9 @@ TEST(PinchedVertices, StrictRefusesWithTheVertexOnItsLine) {
         FAIL() << "a pinched vertex was read with split_pinched = false";
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
-                  file + ":11: vertex 1 is non-manifold: the elements around it are not connected "
-                         "through faces");
+                  file +
+                      ":11: vertex 1 is non-manifold: the elements around it are not connected "
+                      "through faces");
     }
 }
 

@@ -11,8 +11,9 @@
 // The top-dimensional cells are the elements and their ref is the element label; the cells one
 // dimension lower (Triangles of a tetrahedral mesh, Edges of a triangle mesh) are labelled faces
 // (Mesh::face_labels); a face listed more than once is one labelled face, its first ref kept
-// (ReadReport::label_conflicts counts repeats with another ref). Vertex refs are ignored, and so are sections that only annotate
-// (Corners, Ridges, Normals, ...). Non-simplicial cells are refused.
+// (ReadReport::label_conflicts counts repeats with another ref). Vertex refs are ignored, and so
+// are sections that only annotate (Corners, Ridges, Normals, ...). Non-simplicial cells are
+// refused.
 #include <array>
 #include <cctype>
 #include <climits>

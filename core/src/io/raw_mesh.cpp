@@ -295,10 +295,9 @@ std::vector<std::pair<VertexId, VertexId>> split_pinched_vertices(RawMesh& raw, 
             for (std::size_t b = a + 1; b < m; ++b)
                 if (probe.key[b] < probe.key[a])
                     std::swap(probe.key[a], probe.key[b]);
-        const auto at = std::lower_bound(entries.begin(), entries.end(), probe,
-                                         [](const FaceEntry& a, const FaceEntry& b) {
-                                             return a.key < b.key;
-                                         });
+        const auto at =
+            std::lower_bound(entries.begin(), entries.end(), probe,
+                             [](const FaceEntry& a, const FaceEntry& b) { return a.key < b.key; });
         if (at == entries.end() || at->key != probe.key)
             continue;  // not a face of any element: add_face_labels says so
         const std::size_t t = at->incidence / k;
