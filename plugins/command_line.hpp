@@ -1,7 +1,7 @@
 // What every plug-in command does with its arguments and its mesh, as the built-in sxk commands
 // do: CLI11 parses the arguments; --help prints the usage and succeeds (exit 0); a usage error
 // prints "sxk: NAME: reason" and a pointer to --help (exit 2); an unreadable mesh prints
-// "sxk: FILE:LINE: reason"; --strict (add_read_options) refuses pinched vertices. Header-only,
+// "sxk: FILE:LINE: reason"; --strict (add_read_options) refuses what the readers repair. Header-only,
 // for the plug-ins in this folder (sxk_add_plugin puts the folder on their include path).
 //
 // The checks of numeric options below are shared with the built-in commands too
@@ -140,46 +140,105 @@ inline std::optional<int> parse_command_line(CLI::App& app, std::span<const std:
     return std::nullopt;
 }
 
+// The help of --strict, for the built-in commands and the plug-ins alike.
+inline constexpr const char* strict_reading_help =
+    "Refuse a mesh with pinched vertices (elements meeting only at a vertex) or labelled faces of no element "
+    "instead of splitting or dropping them";
+
 // The reading options of the built-in commands, for a plug-in command that reads a mesh:
-// --strict refuses pinched vertices instead of splitting them (ReadOptions::split_pinched).
+// --strict refuses pinched vertices instead of splitting them (ReadOptions::split_pinched) and
+// labelled faces of no element instead of dropping them (ReadOptions::drop_stray_faces).
 inline void add_read_options(CLI::App& app, ReadOptions& options) {
     app.add_flag_callback(
-        "--strict", [&options] { options.split_pinched = false; },
-        "Refuse a mesh with pinched vertices (elements meeting only at a vertex) instead of "
-        "splitting them");
+        "--strict", [&options] { options.split_pinched = options.drop_stray_faces = false; }, strict_reading_help);
+}
+
+// Reads a command's mesh: the mesh, or the error as "FILE:LINE: reason" for the caller to print
+// after "sxk: " (the built-in commands print it once their progress line is gone).
+inline std::variant<Mesh, std::string> try_read_mesh(const std::string& file, const ReadOptions& options,
+                                                      ReadReport& report) {
+    try {
+        return read_mesh(file, options, &report);
+    } catch (const InputError& error) {
+        return std::string(error.what());
+    } catch (const std::bad_alloc&) {
+        return file + ":0: out of memory while reading";
+    } catch (const std::exception& error) {
+        // readers promise InputError; anything else (filesystem errors) still names the file
+        return file + ":0: " + error.what();
+    }
+}
+
+// What the reader repaired, one warning line each (docs/cli.md "Reading meshes"): split pinched
+// vertices, Medit faces listed again with another reference, labelled faces of no element.
+inline void print_read_warnings(std::ostream& err, const std::string& file, const ReadReport& report) {
+    if (report.pinched_vertices > 0) {
+        const std::size_t n = report.pinched_vertices;
+        err << "sxk: warning: " << file << ": split " << n << " pinched vert" << (n == 1 ? "ex" : "ices") << " into "
+            << n + report.vertex_copies.size() << " (--strict refuses them)\n";
+    }
+    if (report.label_conflicts > 0) {
+        err << "sxk: warning: " << report.first_label_conflict << "; the first reference is kept";
+        if (report.label_conflicts > 1)
+            err << " (" << report.label_conflicts << " faces like this)";
+        err << '\n';
+    }
+    if (report.stray_faces > 0) {
+        err << "sxk: warning: " << report.first_stray_face << "; dropped";
+        if (report.stray_faces > 1)
+            err << " (" << report.stray_faces << " faces like this)";
+        err << " (--strict refuses it)\n";
+    }
 }
 
 // Reads a command's mesh as the built-in commands do (tools/sxk/load_mesh.cpp): on failure the
 // error is printed as "sxk: FILE:LINE: reason" and nothing is returned; what the reader
-// repaired is said as load_mesh says it (split pinched vertices, Medit faces listed again with
-// another reference).
+// repaired is said as print_read_warnings says it.
 inline std::optional<Mesh> load_mesh_for_command(const std::string& file, std::ostream& err,
                                                  const ReadOptions& options = {}) {
-    try {
-        ReadReport report;
-        std::optional<Mesh> mesh = read_mesh(file, options, &report);
-        if (report.pinched_vertices > 0) {
-            const std::size_t n = report.pinched_vertices;
-            err << "sxk: warning: " << file << ": split " << n << " pinched vert"
-                << (n == 1 ? "ex" : "ices") << " into " << n + report.vertex_copies.size()
-                << " (--strict refuses them)\n";
-        }
-        if (report.label_conflicts > 0) {
-            err << "sxk: warning: " << report.first_label_conflict
-                << "; the first reference is kept";
-            if (report.label_conflicts > 1)
-                err << " (" << report.label_conflicts << " faces like this)";
-            err << '\n';
-        }
-        return mesh;
-    } catch (const InputError& error) {
-        err << "sxk: " << error.what() << '\n';
-    } catch (const std::bad_alloc&) {
-        err << "sxk: " << file << ":0: out of memory while reading\n";
-    } catch (const std::exception& error) {
-        err << "sxk: " << file << ":0: " << error.what() << '\n';
+    ReadReport report;
+    std::variant<Mesh, std::string> read = try_read_mesh(file, options, report);
+    if (std::string* error = std::get_if<std::string>(&read)) {
+        err << "sxk: " << *error << '\n';
+        return std::nullopt;
     }
-    return std::nullopt;
+    print_read_warnings(err, file, report);
+    return std::move(std::get<Mesh>(read));
+}
+
+// A writer's "cannot write FILE: why" (OutputError, sxk/atomic_write.hpp) as sxk prints it, with
+// FILE in front: "FILE:0: cannot write: why".
+inline std::string write_error_line(const std::string& file, const std::exception& error) {
+    std::string why = error.what();
+    const std::string named = "cannot write " + file + ": ";
+    if (why.rfind(named, 0) == 0)
+        why = "cannot write: " + why.substr(named.size());
+    return file + ":0: " + why;
+}
+
+// Writes a command's result atomically, and only when it has elements and passes
+// Mesh::validate with the orientation check (WriteOptions::refuse_invalid): a command's output
+// is a file every command accepts, or no file (an existing one stays as it was). nullopt when
+// written, else the error as "FILE:0: cannot write: why" for the caller to print after "sxk: ".
+inline std::optional<std::string> try_write_mesh(const Mesh& mesh, const std::string& file, WriteOptions options) {
+    options.refuse_invalid = true;
+    try {
+        write_mesh(mesh, file, options);
+        return std::nullopt;
+    } catch (const std::exception& error) {
+        return write_error_line(file, error);
+    }
+}
+
+// try_write_mesh for a plug-in command: prints "sxk: FILE:0: cannot write: why" and returns
+// false when the result was not written (the command then exits 1).
+inline bool save_mesh_for_command(const Mesh& mesh, const std::string& file, std::ostream& err,
+                                  const WriteOptions& options = {}) {
+    if (const std::optional<std::string> error = try_write_mesh(mesh, file, options)) {
+        err << "sxk: " << *error << '\n';
+        return false;
+    }
+    return true;
 }
 
 }  // namespace sxk

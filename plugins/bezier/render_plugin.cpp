@@ -489,12 +489,7 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
     try {
         write_png(options.output, image);
     } catch (const std::exception& error) {
-        // write_png says "cannot write FILE: why"; FILE is already in front
-        std::string why = error.what();
-        const std::string named = "cannot write " + options.output + ": ";
-        if (why.rfind(named, 0) == 0)
-            why = "cannot write: " + why.substr(named.size());
-        err << "sxk: " << options.output << ":0: " << why << '\n';
+        err << "sxk: " << write_error_line(options.output, error) << '\n';
         return 1;
     }
 

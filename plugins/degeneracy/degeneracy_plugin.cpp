@@ -208,25 +208,6 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
     return options;
 }
 
-// Writes like the built-in commands (tools/sxk/load_mesh.cpp save_mesh): "sxk: FILE:0: reason";
-// a result without elements or one that does not validate (orientation included) is refused,
-// nothing written.
-bool save(const Mesh& mesh, const std::string& file, std::ostream& err) {
-    try {
-        WriteOptions options;
-        options.refuse_invalid = true;
-        write_mesh(mesh, file, options);
-        return true;
-    } catch (const std::exception& error) {
-        std::string why = error.what();
-        const std::string named = "cannot write " + file + ": ";
-        if (why.rfind(named, 0) == 0)
-            why = "cannot write: " + why.substr(named.size());
-        err << "sxk: " << file << ":0: " << why << '\n';
-        return false;
-    }
-}
-
 nlohmann::ordered_json options_json(const Options& options) {
     nlohmann::ordered_json json;
     json["aspect_ratio"] = options.aspect_ratio;
@@ -268,7 +249,7 @@ public:
         }
         // remove_degeneracies edits by checked transactions only; the writer's validation is
         // the oracle that keeps a broken or empty mesh from being written
-        if (!save(*mesh, options->output, err))
+        if (!save_mesh_for_command(*mesh, options->output, err))
             return 1;
 
         const bool tetrahedra = mesh->topological_dimension() == 3;

@@ -172,3 +172,26 @@ TEST(SxkPinched, PluginCommandsSplitAndTakeStrict) {
 
 }  // namespace
 }  // namespace sxk::test
+
+namespace sxk::test {
+namespace {
+
+// A labelled triangle of no tetrahedron (tests/data/malformed/medit_not_a_face.mesh, as CGAL's
+// Mesh_3 writes surface facets whose cells lie outside the complex): dropped with a warning,
+// refused with --strict, judged as it is by validate.
+TEST(SxkStrayFaces, InfoDropsThemAndSaysSo) {
+    const fs::path file = fs::path(SXK_TEST_DATA_DIR) / "malformed" / "medit_not_a_face.mesh";
+    const ProcessResult run = sxk({"info", file.string(), "--json"});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "sxk: warning: " + file.string() +
+                           ":14: triangle 2 is not a face of any tetrahedron; dropped (--strict refuses it)\n");
+    const ProcessResult strict = sxk({"info", "--strict", file.string()});
+    EXPECT_EQ(strict.exit_code, 2);
+    EXPECT_EQ(strict.err, "sxk: " + file.string() + ":14: triangle 2 is not a face of any tetrahedron\n");
+    const ProcessResult validate = sxk({"validate", file.string()});
+    EXPECT_EQ(validate.exit_code, 1) << validate.err;
+    EXPECT_EQ(validate.out.rfind(file.string() + ": invalid: face label: label 1 names ", 0), 0u) << validate.out;
+}
+
+}  // namespace
+}  // namespace sxk::test

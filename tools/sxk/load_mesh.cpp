@@ -7,57 +7,30 @@ namespace sxk::cli {
 
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options,
                               ReadReport* report) {
-    try {
-        ReadOptions chosen = options;
-        if (context.strict) chosen.split_pinched = false;
-        ReadReport own;
-        if (!report) report = &own;
-        std::optional<Mesh> mesh;
-        {
-            Progress progress("reading " + file);
-            mesh = read_mesh(file, chosen, report);
-        }
-        // docs/cli.md "Reading meshes" (the same lines as plugins/command_line.hpp)
-        if (report->pinched_vertices > 0) {
-            const std::size_t n = report->pinched_vertices;
-            context.err << "sxk: warning: " << file << ": split " << n << " pinched vert" << (n == 1 ? "ex" : "ices")
-                        << " into " << n + report->vertex_copies.size() << " (--strict refuses them)\n";
-        }
-        if (report->label_conflicts > 0) {
-            context.err << "sxk: warning: " << report->first_label_conflict << "; the first reference is kept";
-            if (report->label_conflicts > 1) context.err << " (" << report->label_conflicts << " faces like this)";
-            context.err << '\n';
-        }
-        return mesh;
-    } catch (const InputError& error) {
-        context.err << "sxk: " << error.what() << '\n';
-    } catch (const std::bad_alloc&) {
-        context.err << "sxk: " << file << ":0: out of memory while reading\n";
-    } catch (const std::exception& error) {
-        // readers promise InputError; anything else (filesystem errors) still names the file
-        context.err << "sxk: " << file << ":0: " << error.what() << '\n';
+    ReadOptions chosen = options;
+    if (context.strict) chosen.split_pinched = chosen.drop_stray_faces = false;
+    ReadReport own;
+    if (!report) report = &own;
+    std::variant<Mesh, std::string> read = [&] {
+        Progress progress("reading " + file);
+        return try_read_mesh(file, chosen, *report);
+    }();  // the progress line is gone before anything is printed
+    if (std::string* error = std::get_if<std::string>(&read)) {
+        context.err << "sxk: " << *error << '\n';
+        context.exit_code = exit_usage;
+        return std::nullopt;
     }
-    context.exit_code = exit_usage;
-    return std::nullopt;
+    print_read_warnings(context.err, file, *report);
+    return std::move(std::get<Mesh>(read));
 }
 
 bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options) {
-    try {
+    const std::optional<std::string> error = [&] {
         Progress progress("writing " + file);
-        // a command's result must be a file every command accepts: refuse an empty or invalid
-        // mesh (exit 1 from the caller, nothing written)
-        WriteOptions checked = options;
-        checked.refuse_invalid = true;
-        write_mesh(mesh, file, checked);
-        return true;
-    } catch (const std::exception& error) {
-        // the writers' messages read "cannot write FILE: why"; FILE is already in front
-        std::string why = error.what();
-        const std::string named = "cannot write " + file + ": ";
-        if (why.rfind(named, 0) == 0) why = "cannot write: " + why.substr(named.size());
-        context.err << "sxk: " << file << ":0: " << why << '\n';
-        return false;
-    }
+        return try_write_mesh(mesh, file, options);
+    }();  // the progress line is gone before anything is printed
+    if (error) context.err << "sxk: " << *error << '\n';
+    return !error;
 }
 
 std::string element_count_text(const Mesh& mesh, std::size_t count) {

@@ -99,9 +99,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     // elements are invalid.
     for (CLI::App* command : app.get_subcommands({}))
         if (command->get_name() != "plugins" && command->get_name() != "validate")
-            command->add_flag("--strict", context.strict,
-                              "Refuse a mesh with pinched vertices (elements meeting only at a vertex) instead of "
-                              "splitting them");
+            command->add_flag("--strict", context.strict, strict_reading_help);
 
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {
         // the command may belong to a plug-in that was not found: say where sxk looked

@@ -95,6 +95,12 @@ struct ReadOptions {
     // the vertex goes to the copy its element got. false refuses the file as before ("vertex N
     // is non-manifold: ..."). A lenient read never splits (validate() names the vertex).
     bool split_pinched = true;
+    // A labelled face (Medit Triangles, Gmsh lower-dimensional elements, TetGen .face) that is
+    // no face of any element, as CGAL's Mesh_3 writes surface facets whose cells lie outside
+    // the complex: dropped and counted in ReadReport::stray_faces. false refuses the file
+    // ("triangle N is not a face of any tetrahedron"). A lenient read keeps the label, so that
+    // validate() names it.
+    bool drop_stray_faces = true;
 };
 
 struct ReadReport {
@@ -108,6 +114,10 @@ struct ReadReport {
     // first of them as "FILE:LINE: triangle 2 repeats triangle 1 with reference 2, not 1".
     std::size_t label_conflicts = 0;
     std::string first_label_conflict;
+    // ReadOptions::drop_stray_faces: labelled faces dropped because no element has them, and
+    // the first as "FILE:LINE: triangle 9 is not a face of any tetrahedron".
+    std::size_t stray_faces = 0;
+    std::string first_stray_face;
 };
 
 // Reads a mesh file; for TetGen give either X.node or X.ele (the other, and X.face if present,

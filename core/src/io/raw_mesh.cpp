@@ -329,7 +329,7 @@ Simplex unoriented_key(std::span<const VertexId> vertices) {
     return s.sign() > 0 ? s : s.mate();
 }
 
-void add_face_labels(const CellList& faces, Mesh& mesh, ReadReport* report) {
+void add_face_labels(const CellList& faces, Mesh& mesh, const ReadOptions& options, ReadReport* report) {
     const int d = mesh.topological_dimension();
     const char* kind = cell_name(faces.size);
     FaceLabels& labels = mesh.face_labels();
@@ -390,9 +390,21 @@ void add_face_labels(const CellList& faces, Mesh& mesh, ReadReport* report) {
     std::size_t first = faces.count();
     for (const auto& [key, i] : interior)
         first = std::min(first, i);
-    fail(faces.file, faces.lines[first],
-         std::string(kind) + " " + std::to_string(faces.number(first)) + " is not a face of any " +
-             cell_name(d + 1));
+    const std::string stray = std::string(kind) + " " + std::to_string(faces.number(first)) +
+                              " is not a face of any " + cell_name(d + 1);
+    // a lenient read keeps the labels, and validate() names the first ("face label: ...")
+    if (options.lenient)
+        return;
+    if (!options.drop_stray_faces)
+        fail(faces.file, faces.lines[first], stray);
+    // CGAL's Mesh_3 writes surface facets whose cells are outside the complex: a label of no
+    // face cannot be held (validate() refuses it), so it goes, and the caller hears of it
+    for (const auto& [key, i] : interior)
+        labels.erase(key);
+    if (report) {
+        report->stray_faces = interior.size();
+        report->first_stray_face = InputError(faces.file, faces.lines[first], stray).what();
+    }
 }
 
 }  // namespace
@@ -481,7 +493,7 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
             explain_refusal(raw, cells, simplexes, item, built.reason());
         }
     }
-    add_face_labels(faces, mesh, report);
+    add_face_labels(faces, mesh, options, report);
     if (report)
         report->reoriented = reoriented;
     return mesh;
