@@ -29,12 +29,12 @@ Components connected_components(const Mesh& mesh) {
     std::vector<std::uint32_t> rank(n, 0), parent(n);
     boost::disjoint_sets<std::uint32_t*, std::uint32_t*> sets(rank.data(), parent.data());
     for (std::uint32_t i = 0; i < n; ++i) sets.make_set(i);
+    // the neighbour cache (Mesh::neighbor) sits in the element record: no visit to the face pool
+    const int k = mesh.element_vertex_count();
     for (ElementId t : element_of) {
-        for (FaceId f : mesh.faces(t)) {
-            const FaceId mate = mesh.mate(f);
-            if (mate == invalid_id) continue;
-            const ElementId neighbour = mesh.face_element(mate);
-            if (neighbour < t) sets.union_set(dense[t], dense[neighbour]);  // each pair once
+        for (int i = 0; i < k; ++i) {
+            const ElementId neighbour = mesh.neighbor(t, i);
+            if (neighbour != invalid_id && neighbour < t) sets.union_set(dense[t], dense[neighbour]);  // each pair once
         }
     }
     // components numbered by their smallest element id: the first element met of each set
