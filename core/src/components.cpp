@@ -1,5 +1,5 @@
-// connected_components with Boost's disjoint sets (STYLE.md 12): one set per live element, joined
-// across every pair of mated faces.
+// connected_components with Boost's disjoint sets (a library's, not a hand-written union-find):
+// one set per live element, joined across every pair of neighbours.
 #include "sxk/components.hpp"
 
 #include <boost/pending/disjoint_sets.hpp>
