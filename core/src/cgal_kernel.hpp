@@ -1,4 +1,4 @@
-// The one place CGAL enters the toolkit (STYLE.md 8): the exact-predicates kernel and the
+// The one place CGAL enters the toolkit: the exact-predicates kernel and the
 // conversion from sxk::Point. Include only from .cpp files in core/src.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Embree 3 behind one header (STYLE.md 8): only the plug-in's .cpp files include this, so no
+// Embree 3 behind one header: only the plug-in's .cpp files include this, so no
 // Embree type reaches a public header. A thin RAII layer: the device, a scene and a geometry
 // own one Embree reference each and release it on destruction; every call that can fail is
 // followed by check(), which turns the device's error code and the message its error callback

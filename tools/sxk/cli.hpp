@@ -1,6 +1,6 @@
 // Shared pieces of the sxk commands: the context every command writes to, the registration
-// function of each built-in command (one command per file, STYLE.md 1), and mesh loading with
-// the error convention of DESIGN.md ("sxk: FILE:LINE: reason", exit code 2).
+// function of each built-in command (one command per file), and mesh loading with
+// the error convention of docs/cli.md ("sxk: FILE:LINE: reason", exit code 2).
 #pragma once
 
 #include <optional>
@@ -17,7 +17,7 @@
 
 namespace sxk::cli {
 
-// Exit codes everywhere (DESIGN.md "CLI surface").
+// Exit codes everywhere (docs/cli.md "Exit codes and messages").
 inline constexpr int exit_success = 0;
 inline constexpr int exit_refused = 1;  // operation refused or result invalid
 inline constexpr int exit_usage = 2;    // usage or input error

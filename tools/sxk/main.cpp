@@ -1,4 +1,4 @@
-// sxk: the simplexkit command-line tool (DESIGN.md "The CLI surface").
+// sxk: the simplexkit command-line tool (docs/cli.md).
 //
 // Built-in commands (info, validate, convert, quality, components, dissect, delaunay-flip, refine) never load plug-ins, so a broken plug-in
 // can neither slow them down nor crash them. Everything else loads the plug-ins first, prints

@@ -21,7 +21,7 @@
 //               \  /                 the boundary map by their simplex
 //                ..
 //
-// Storage (DESIGN.md "made fast"): elements and faces live in contiguous pools addressed by
+// Storage (docs/kernel.md "How it is stored"): elements and faces live in contiguous pools addressed by
 // 32-bit ids with free lists; a Face stores only its element and its mate (8 bytes) and derives
 // its simplex from (7.1). Identities: an ElementId/FaceId stays valid until the object is freed;
 // change_elements keeps both element and face identities.

@@ -1,6 +1,6 @@
 // The result of an edit or a check: either a value, or a refusal that says why.
 //
-// STYLE.md rule 3: an operation returns what survives or what was created, or a refusal with a
+// An operation returns what survives or what was created, or a refusal with a
 // reason, never a bool plus out-parameters. std::expected is C++23; this is the small subset
 // the toolkit needs.
 #pragma once

@@ -1,6 +1,6 @@
-// Loading plug-ins into a process (DESIGN.md "Plug-ins").
+// Loading plug-ins into a process (docs/plugins.md).
 //
-// A PluginHost is an object the application owns (no global registry, STYLE.md 9): it dlopens
+// A PluginHost is an object the application owns (no global registry): it dlopens
 // plug-in MODULE files, checks them, creates one sxk::Plugin per file and destroys and unloads
 // them again in its destructor, in reverse order of loading.
 //

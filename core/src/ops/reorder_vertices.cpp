@@ -1,4 +1,4 @@
-// Reverse Cuthill-McKee renumbering through Boost.Graph (STYLE.md 12: no hand-written BFS).
+// Reverse Cuthill-McKee renumbering through Boost.Graph (the library's, no hand-written BFS).
 #include "sxk/ops/reorder_vertices.hpp"
 
 #include <algorithm>

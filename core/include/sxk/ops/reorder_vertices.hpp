@@ -9,7 +9,7 @@
 //
 // Contract.
 //   cuthill_mckee_order(mesh): a permutation new_of_old of 0..vertex_count()-1 (new_of_old[v]
-//   is the new id of v), computed by Boost.Graph's cuthill_mckee_ordering (STYLE.md 12), one
+//   is the new id of v), computed by Boost.Graph's cuthill_mckee_ordering (the library's, not our own), one
 //   pseudo-peripheral start per connected piece of the graph; vertices in no element come last.
 //   renumbered(mesh, new_of_old): a new mesh with vertex new_of_old[v] carrying the positions of
 //   v, every element simplex mapped (orientation kept: the permutation re-sorts with its sign),
