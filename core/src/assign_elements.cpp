@@ -9,6 +9,7 @@
 // is touched; so are pinched vertices, by a union-find over element-vertex incidences.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,9 @@ std::uint64_t sort_key(const FaceEntry& e) { return std::uint64_t{e.second} << 3
 
 // Finds the mate of every face of the soup (invalid_id on the boundary), for k = d+1 vertices
 // per element known at compile time (divisions by k become shifts and multiplications).
-// Returns a refusal naming the smallest offending element index, or one with item npos.
+// Returns a refusal naming the smallest offending element index, or nothing.
 template <int k>
-Refusal match_faces(std::span<const Simplex> simplexes, std::size_t vertex_count,
+std::optional<Refusal> match_faces(std::span<const Simplex> simplexes, std::size_t vertex_count,
                     std::vector<FaceId>& mates, std::size_t& boundary_count) {
     constexpr std::uint32_t ku = static_cast<std::uint32_t>(k);
     const std::size_t n = simplexes.size();
@@ -74,9 +75,11 @@ Refusal match_faces(std::span<const Simplex> simplexes, std::size_t vertex_count
 
     mates.assign(face_total, invalid_id);
     boundary_count = 0;
-    Refusal first_problem{"", Refusal::npos};
+    // every problem found here makes the soup no oriented manifold
+    std::optional<Refusal> first_problem;
     auto report = [&](std::size_t item, std::string why) {
-        if (item < first_problem.item) first_problem = Refusal{std::move(why), item};
+        if (!first_problem || item < first_problem->item)
+            first_problem.emplace(RefusalCode::not_manifold, std::move(why), item);
     };
     // face j of a simplex with sign p has sign p (-1)^j
     auto face_sign = [&](std::uint32_t f) { return ((f % ku) & 1) ? -signs[f / ku] : signs[f / ku]; };
@@ -148,22 +151,22 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
                                     std::span<const int> labels) {
     const int k = m_dimension + 1;
     const std::size_t n = simplexes.size();
-    if (m_element_count != 0) return Refusal{"assign_elements needs a mesh without elements"};
+    if (m_element_count != 0) return Refusal{RefusalCode::not_applicable, "assign_elements needs a mesh without elements"};
     if (!labels.empty() && labels.size() != n)
-        return Refusal{"got " + std::to_string(labels.size()) + " labels for " +
+        return Refusal{RefusalCode::bad_argument, "got " + std::to_string(labels.size()) + " labels for " +
                        std::to_string(n) + " elements"};
     if (n * static_cast<std::size_t>(k) >= invalid_id)
-        return Refusal{"too many elements for 32-bit face ids"};
+        return Refusal{RefusalCode::too_large, "too many elements for 32-bit face ids"};
     for (std::size_t i = 0; i < n; ++i)
         if (std::string why = check_simplex(simplexes[i], k, vertex_count()); !why.empty())
-            return Refusal{std::move(why), i};
+            return Refusal{RefusalCode::bad_argument, std::move(why), i};
 
     const std::size_t face_total = n * static_cast<std::size_t>(k);
     std::vector<FaceId> mates;
     std::size_t boundary_count = 0;
-    Refusal problem = k == 4 ? match_faces<4>(simplexes, vertex_count(), mates, boundary_count)
-                             : match_faces<3>(simplexes, vertex_count(), mates, boundary_count);
-    if (problem.item != Refusal::npos) return problem;
+    std::optional<Refusal> problem = k == 4 ? match_faces<4>(simplexes, vertex_count(), mates, boundary_count)
+                                            : match_faces<3>(simplexes, vertex_count(), mates, boundary_count);
+    if (problem) return *problem;
 
     // Face-connected vertex stars (§7.3), the one invariant the face matching cannot see. Every
     // (element, vertex) incidence is a node of a union-find; two mated faces join, for each of
@@ -205,7 +208,7 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
             if (pieces[v] <= 1) continue;
             std::size_t first = 0;
             while (!simplexes[first].contains(v)) ++first;
-            return Refusal{"star connectivity: the elements around vertex " + std::to_string(v) +
+            return Refusal{RefusalCode::pinched_star, "star connectivity: the elements around vertex " + std::to_string(v) +
                                " are not connected through faces (the mesh is pinched there)",
                            first};
         }
@@ -255,13 +258,13 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
 Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes,
                                               std::span<const int> labels) {
     const int k = m_dimension + 1;
-    if (m_element_count != 0) return Refusal{"assign_elements needs a mesh without elements"};
+    if (m_element_count != 0) return Refusal{RefusalCode::not_applicable, "assign_elements needs a mesh without elements"};
     if (!labels.empty() && labels.size() != simplexes.size())
-        return Refusal{"got " + std::to_string(labels.size()) + " labels for " +
+        return Refusal{RefusalCode::bad_argument, "got " + std::to_string(labels.size()) + " labels for " +
                        std::to_string(simplexes.size()) + " elements"};
     for (std::size_t i = 0; i < simplexes.size(); ++i)
         if (std::string why = check_simplex(simplexes[i], k, vertex_count()); !why.empty())
-            return Refusal{std::move(why), i};
+            return Refusal{RefusalCode::bad_argument, std::move(why), i};
 
     m_elements.clear();
     m_faces.clear();

@@ -64,17 +64,17 @@ std::size_t Mesh::star_pieces_after(VertexId v, std::span<const ElementId> remov
     return pieces;
 }
 
-Refusal Mesh::refuse_pinched_stars(std::vector<VertexId> touched,
-                                   std::span<const ElementId> removed,
-                                   std::span<const Simplex> added) const {
+std::optional<Refusal> Mesh::refuse_pinched_stars(std::vector<VertexId> touched,
+                                                  std::span<const ElementId> removed,
+                                                  std::span<const Simplex> added) const {
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     for (VertexId v : touched)
         if (const std::size_t pieces = star_pieces_after(v, removed, added); pieces > 1)
-            return Refusal{"star connectivity: vertex " + std::to_string(v) +
+            return Refusal{RefusalCode::pinched_star, "star connectivity: vertex " + std::to_string(v) +
                            " would be pinched (its star would fall into " + std::to_string(pieces) +
                            " pieces)"};
-    return Refusal{};
+    return std::nullopt;
 }
 
 }  // namespace sxk

@@ -18,7 +18,7 @@ Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
             if (mesh.mate(mesh.face(t, i)) != invalid_id) faces.push_back(mesh.simplex(t).subn(i));
     if (!faces.empty()) {
         const auto dissected = dissect(mesh, faces);
-        if (!dissected) return Refusal{"cut free: " + dissected.reason()};
+        if (!dissected) return dissected.refusal().prefixed("cut free: ");
     }
     // Each element is now alone in the star of each of its vertices (all its faces are cut),
     // so removing it pinches no star. One edit removes them all.
@@ -31,7 +31,7 @@ Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
             for (int i = 0; i < mesh.element_vertex_count(); ++i)
                 faces_of_doomed.emplace_back(+1, mesh.simplex(t).subn(i).vertices());
     const auto removed = mesh.replace_elements(doomed, {});
-    if (!removed) return Refusal{"cut free: " + removed.reason()};
+    if (!removed) return removed.refusal().prefixed("cut free: ");
     // Labels of faces that went with the elements (each was theirs alone after the dissection)
     // would name no face: drop them. A face with the same vertices that still exists is a
     // neighbour's boundary face now, and keeps the label.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 #include <limits>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -53,20 +54,21 @@ std::size_t vertices_in_elements(const Mesh& mesh) {
     return n;
 }
 
-Refusal check(const Mesh& mesh, const Options& options) {
+std::optional<Refusal> check(const Mesh& mesh, const Options& options) {
     if (!(options.aspect_ratio > 0 && options.aspect_ratio < 1))
-        return {"remove_degeneracies: aspect ratio threshold must be in (0, 1), not " +
+        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: aspect ratio threshold must be in (0, 1), not " +
                 std::to_string(options.aspect_ratio)};
     if (!(options.large_angle > pi / 2 && options.large_angle < pi))
-        return {"remove_degeneracies: large angle must be in (pi/2, pi) radians, not " +
+        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: large angle must be in (pi/2, pi) radians, not " +
                 std::to_string(options.large_angle)};
     if (!(options.boundary_tolerance >= 0 && options.boundary_tolerance < 1))
-        return {"remove_degeneracies: boundary tolerance must be in [0, 1), not " +
+        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: boundary tolerance must be in [0, 1), not " +
                 std::to_string(options.boundary_tolerance)};
-    if (options.max_passes == 0) return {"remove_degeneracies: max passes must be at least 1"};
+    if (options.max_passes == 0)
+        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: max passes must be at least 1"};
     if (mesh.topological_dimension() != 2 && mesh.topological_dimension() != 3)
-        return {"remove_degeneracies: not a triangle or tetrahedral mesh"};
-    return {};
+        return Refusal{RefusalCode::wrong_dimension, "remove_degeneracies: not a triangle or tetrahedral mesh"};
+    return std::nullopt;
 }
 
 class Remover {
@@ -339,7 +341,7 @@ private:
 }  // namespace
 
 Outcome<Report> remove_degeneracies(Mesh& mesh, const Options& options) {
-    if (Refusal refusal = check(mesh, options); !refusal.reason.empty()) return refusal;
+    if (auto refused = check(mesh, options)) return *refused;
     std::vector<ElementId> all;
     all.reserve(mesh.element_count());
     for (const ElementId t : elements(mesh)) all.push_back(t);
@@ -347,7 +349,7 @@ Outcome<Report> remove_degeneracies(Mesh& mesh, const Options& options) {
 }
 
 Outcome<Report> remove_degeneracies(Mesh& mesh, std::span<const ElementId> candidates, const Options& options) {
-    if (Refusal refusal = check(mesh, options); !refusal.reason.empty()) return refusal;
+    if (auto refused = check(mesh, options)) return *refused;
     std::vector<ElementId> ids;
     for (const ElementId t : candidates)
         if (mesh.is_element(t)) ids.push_back(t);

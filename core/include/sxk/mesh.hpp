@@ -37,6 +37,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -324,9 +325,10 @@ private:
     std::size_t star_pieces_after(VertexId v, std::span<const ElementId> removed,
                                   std::span<const Simplex> added) const;
     // The refusal of an edit that would pinch one of the vertices `touched` (any order,
-    // repeats allowed), or an empty reason.
-    Refusal refuse_pinched_stars(std::vector<VertexId> touched, std::span<const ElementId> removed,
-                                 std::span<const Simplex> added) const;
+    // repeats allowed), or nothing.
+    std::optional<Refusal> refuse_pinched_stars(std::vector<VertexId> touched,
+                                                std::span<const ElementId> removed,
+                                                std::span<const Simplex> added) const;
     // After an edit: vertices of the elements `added` (ids `added_ids`) get an anchor if theirs
     // no longer holds them; vertices of `old_vertices` that lost theirs take one of
     // `neighbours` (elements next to the edited ones) that contains them, or none.

@@ -468,7 +468,7 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
         }
     } else {
         Outcome<Done> built = mesh.assign_elements(simplexes, cells.labels);
-        const bool pinched = !built && built.reason().rfind("star connectivity", 0) == 0;
+        const bool pinched = !built && built.code() == RefusalCode::pinched_star;
         if (pinched && options.split_pinched) {
             const std::size_t file_vertices = raw.points.size();
             std::vector<std::pair<VertexId, VertexId>> copies =
@@ -485,7 +485,7 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
         }
         if (!built) {
             // a pinched vertex is best named on the vertex's own line
-            if (built.reason().rfind("star connectivity", 0) == 0)
+            if (built.code() == RefusalCode::pinched_star)
                 check_vertex_stars(raw, simplexes, static_cast<int>(k));
             const std::size_t item = built.refusal().item;
             if (item >= n)

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -141,7 +142,7 @@ public:
     // is the hypotenuse of all its triangles and gets a simple bisection. Refuses only when a
     // child would be flat or of the other orientation than its parent (see split_edge); the
     // plan is then discarded and the mesh was never touched.
-    Refusal bisect(const Edge& e, const std::string& operation) {
+    std::optional<Refusal> bisect(const Edge& e, const std::string& operation) {
         std::vector<Edge> stack{e};
         while (!stack.empty()) {
             const Edge top = stack.back();
@@ -160,11 +161,11 @@ public:
             }
             if (deeper)
                 continue;
-            if (Refusal r = simple_bisect(top, around, operation); !r.reason.empty())
-                return r;
+            if (auto refused = simple_bisect(top, around, operation))
+                return refused;
             stack.pop_back();
         }
-        return {};
+        return std::nullopt;
     }
 
     // The live triangle containing x (closed test, reference positions) among n and its
@@ -201,7 +202,7 @@ public:
         for (const Edge& e : m_splits) {
             auto split = split_edge(mesh, e.a, e.b, 0.5);
             if (!split)
-                return Refusal{operation + ": internal error, a planned bisection was refused: " +
+                return Refusal{RefusalCode::internal_error, operation + ": internal error, a planned bisection was refused: " +
                                split.reason()};
             results.push_back(std::move(*split));
         }
@@ -227,8 +228,8 @@ private:
     // replaced by its two halves <a->m> and <b->m>, with the checks and the arithmetic of
     // split_edge (m = 0.5 a + 0.5 b summed in that order, as Mesh::interpolated_positions does,
     // so the replay checks the same numbers).
-    Refusal simple_bisect(const Edge& e, const std::vector<int>& parents,
-                          const std::string& operation) {
+    std::optional<Refusal> simple_bisect(const Edge& e, const std::vector<int>& parents,
+                                         const std::string& operation) {
         const auto m = static_cast<VertexId>(m_base + m_reference.size());
         // Mesh::interpolated_positions' order: weights[0] * p[0] first, then + weights[1] * p[1]
         Point reference{}, deformed{};
@@ -251,9 +252,12 @@ private:
                     if (after == Sign::zero || after != before) {
                         m_reference.pop_back();
                         m_deformed.pop_back();
-                        return {operation + ": new element " + to_text(child) +
-                                (after == Sign::zero ? " would be flat" : " would be inverted") +
-                                " in the " + positions_text(positions) + " positions"};
+                        return Refusal{after == Sign::zero ? RefusalCode::would_flatten
+                                                           : RefusalCode::would_invert,
+                                       operation + ": new element " + to_text(child) +
+                                           (after == Sign::zero ? " would be flat"
+                                                                : " would be inverted") +
+                                           " in the " + positions_text(positions) + " positions"};
                     }
                 }
             }
@@ -270,7 +274,7 @@ private:
             }
         }
         m_splits.push_back(e);
-        return {};
+        return std::nullopt;
     }
 
     const Mesh& m_mesh;

@@ -43,15 +43,15 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
         const Simplex& sigma = cut_faces[i];
         const std::string name = "dissect: cut face " + std::to_string(i);
         if (sigma.count() != d)
-            return Refusal{name + " has " + std::to_string(sigma.count()) + " vertices, not " +
+            return Refusal{RefusalCode::bad_argument, name + " has " + std::to_string(sigma.count()) + " vertices, not " +
                                std::to_string(d),
                            i};
         bool known = sigma.has_distinct_vertices();
         for (VertexId v : sigma.vertices()) known = known && v < mesh.vertex_count();
         if (!known)
-            return Refusal{name + " " + to_text(sigma) + " has a repeated or unknown vertex", i};
+            return Refusal{RefusalCode::bad_argument, name + " " + to_text(sigma) + " has a repeated or unknown vertex", i};
         if (!is_mesh_face(mesh, sigma))
-            return Refusal{name + " " + to_text(sigma) + " is not a face of the mesh", i};
+            return Refusal{RefusalCode::not_found, name + " " + to_text(sigma) + " is not a face of the mesh", i};
         cut.insert(unoriented(sigma));
         cut_vertices.insert(cut_vertices.end(), sigma.vertices().begin(), sigma.vertices().end());
     }
@@ -151,7 +151,7 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
     if (!changed.ok()) {
         // cannot happen on a valid mesh (see the header); the copies are in no element yet
         for (std::size_t i = 0; i < result.new_vertices.size(); ++i) (void)mesh.remove_last_vertex();
-        return Refusal{"dissect: " + changed.reason(), changed.refusal().item};
+        return Refusal{changed.code(), "dissect: " + changed.reason(), changed.refusal().item};
     }
     for (const Relabel& r : relabel) mesh.face_labels().try_emplace(r.after, r.label);
     for (const Relabel& r : relabel)

@@ -8,16 +8,16 @@ namespace sxk {
 
 Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
                                           const TetFlipOptions& options) {
-    if (Refusal r = detail::refuse_bad_edge_arguments(mesh, entry, j, "flip_32"); !r.reason.empty())
-        return r;
+    if (auto refused = detail::refuse_bad_edge_arguments(mesh, entry, j, "flip_32"))
+        return *refused;
     const Simplex edge = mesh.face_simplex(entry).subn(j);
     const VertexId a = edge.vertex(0);
     const VertexId b = edge.vertex(1);
     auto found = detail::interior_edge_ring(mesh, entry, j, 3, "flip_32");
     if (!found) return found.refusal();
     const std::span<const ElementId> ring = found->span();
-    if (Refusal r = detail::refuse_material_interface(mesh, ring, "flip_32"); !r.reason.empty())
-        return r;
+    if (auto refused = detail::refuse_material_interface(mesh, ring, "flip_32"))
+        return *refused;
 
     // tau = <ab, c, d> for two ring vertices c, d; e is the ring vertex not in tau.
     const Simplex tau = mesh.simplex(ring[0]);
@@ -31,22 +31,22 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
     // the flip would represent it three times.
     if (!detail::embedding_proves_absence(options) &&
         detail::star_has(mesh, c, [&](const Simplex& s) { return s.contains(d) && s.contains(e); }))
-        return Refusal{"flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) + " already exists"};
+        return Refusal{RefusalCode::not_manifold, "flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) + " already exists"};
     // Replacing b (resp. a) by e in <ab,c,d> gives the tetrahedron <cde,a> (resp. <cde,b>) with
     // the orientation the ring induces: exactly the inverse of flip_23's substitutions.
     const std::array<Simplex, 2> created{tau.substituted(b, e), tau.substituted(a, e)};
-    if (Refusal r = detail::refuse_non_positive(mesh, created, options, "flip_32"); !r.reason.empty())
-        return r;
+    if (auto refused = detail::refuse_non_positive(mesh, created, options, "flip_32"))
+        return *refused;
 
     const int label = mesh.label(mesh.face_element(entry));
     const std::array<int, 2> labels{label, label};
-    if (Refusal r = detail::refuse_vanishing_label(mesh, ring, created, "flip_32"); !r.reason.empty())
-        return r;
+    if (auto refused = detail::refuse_vanishing_label(mesh, ring, created, "flip_32"))
+        return *refused;
     // Both new elements and the one new face pair contain the triangle cde, which is not in the
     // mesh (checked above), and the hull faces are reused: the star checks of
     // replace_elements are proven (mesh_checks.hpp, ProvenEdit).
     auto result = ProvenEdit::replace(mesh, ring, created, labels);
-    if (!result.ok()) return Refusal{"flip_32: " + result.reason()};
+    if (!result.ok()) return result.refusal().prefixed("flip_32: ");
     const std::vector<ElementId>& ids = *result;
     return std::array<ElementId, 2>{ids[0], ids[1]};
 }

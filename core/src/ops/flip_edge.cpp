@@ -35,10 +35,10 @@ const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
 
 Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipOptions& options) {
     if (mesh.topological_dimension() != 2)
-        return Refusal{"flip_edge: needs a triangle mesh (topological dimension 2), this one has "
+        return Refusal{RefusalCode::wrong_dimension, "flip_edge: needs a triangle mesh (topological dimension 2), this one has "
                        "dimension " + std::to_string(mesh.topological_dimension())};
     if (!mesh.is_face(edge))
-        return Refusal{"flip_edge: " + std::to_string(edge) + " is not a face of the mesh"};
+        return Refusal{RefusalCode::not_found, "flip_edge: " + std::to_string(edge) + " is not a face of the mesh"};
 
     // face_simplex(edge), c and d without Mesh::face_slot calls: t0's slot of `edge` is the
     // index of c (invariant 7.1)
@@ -50,12 +50,12 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     const VertexId b = edge_simplex.sign() > 0 ? edge_simplex.vertex(1) : edge_simplex.vertex(0);
     const FaceId mate = mesh.mate(edge);
     if (mate == invalid_id)
-        return Refusal{"flip_edge: edge " + vertex_set(a, b) + " is on the boundary"};
+        return Refusal{RefusalCode::not_applicable, "flip_edge: edge " + vertex_set(a, b) + " is on the boundary"};
 
     const ElementId t1 = mesh.face_element(mate);
     const std::array<ElementId, 2> pair{t0, t1};
-    if (Refusal r = detail::refuse_material_interface(mesh, pair, "flip_edge"); !r.reason.empty())
-        return r;
+    if (auto refused = detail::refuse_material_interface(mesh, pair, "flip_edge"))
+        return *refused;
     const VertexId c = mesh.simplex(t0).vertex(slot0);
     const VertexId d = mesh.simplex(t1).vertex(detail::slot_of(mesh, t1, mate));
 
@@ -64,7 +64,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     // triangles, from t0) says what is actually wrong, and proves what replace_elements would
     // otherwise check (see below).
     if (detail::fan_has_edge(mesh, t0, c, d))
-        return Refusal{"flip_edge: new edge " + vertex_set(c, d) +
+        return Refusal{RefusalCode::not_manifold, "flip_edge: new edge " + vertex_set(c, d) +
                        " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
                        " is topologically impossible"};
 
@@ -78,7 +78,8 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             for (const auto& triangle : new_triangles) {
                 const Sign s = orient2d(p(triangle[0]), p(triangle[1]), p(triangle[2]));
                 if (s != Sign::positive)
-                    return Refusal{"flip_edge: new triangle " + vertex_set(triangle) + " would be " +
+                    return Refusal{s == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                                   "flip_edge: new triangle " + vertex_set(triangle) + " would be " +
                                    (s == Sign::zero ? "flat" : "inverted") + " in the " +
                                    positions_name(positions) + " positions"};
             }
@@ -92,7 +93,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             for (std::size_t i = 0; i < 2; ++i) {
                 const auto& triangle = new_triangles[i];
                 if (detail::collinear_filtered(p(triangle[0]), p(triangle[1]), p(triangle[2]), normals[i]))
-                    return Refusal{"flip_edge: new triangle " + vertex_set(triangle) +
+                    return Refusal{RefusalCode::would_flatten, "flip_edge: new triangle " + vertex_set(triangle) +
                                    " would be degenerate (collinear vertices) in the " +
                                    positions_name(positions) + " positions"};
             }
@@ -102,7 +103,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             if (!options.topology_only &&
                 detail::normal_alignment_filtered(p(a), p(d), p(c), normals[0], p(d), p(b), p(c),
                                                   normals[1]) == Sign::negative)
-                return Refusal{"flip_edge: flipping edge " + vertex_set(a, b) + " to " + vertex_set(c, d) +
+                return Refusal{RefusalCode::would_invert, "flip_edge: flipping edge " + vertex_set(a, b) + " to " + vertex_set(c, d) +
                                " would fold the surface (the new triangles' normals are opposite) in the " +
                                positions_name(positions) + " positions"};
         }
@@ -112,14 +113,13 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     // face, so the new elements have the orientation of the old ones
     const std::array<ElementId, 2> old_elements{t0, t1};
     const std::array<Simplex, 2> new_simplexes{Simplex(+1, {a, d, c}), Simplex(+1, {d, b, c})};
-    if (Refusal r = detail::refuse_vanishing_label(mesh, old_elements, new_simplexes, "flip_edge");
-        !r.reason.empty())
-        return r;
+    if (auto refused = detail::refuse_vanishing_label(mesh, old_elements, new_simplexes, "flip_edge"))
+        return *refused;
     // Both new triangles and the new edge pair contain the edge c-d, which is not in the mesh
     // (checked above), and the hull edges are reused: the star checks of replace_elements are
     // proven (mesh_checks.hpp, ProvenEdit).
     auto replaced = ProvenEdit::replace(mesh, old_elements, new_simplexes, {});
-    if (!replaced) return Refusal{"flip_edge: " + replaced.reason()};
+    if (!replaced) return replaced.refusal().prefixed("flip_edge: ");
     return std::array<ElementId, 2>{replaced.value()[0], replaced.value()[1]};
 }
 

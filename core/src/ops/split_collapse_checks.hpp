@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -441,13 +442,13 @@ inline std::pair<Point, Point> interpolate(const Mesh& mesh, std::span<const Ver
 // Splits share one rule: a child must keep its parent's orientation in both positions. In
 // exact arithmetic a point strictly inside a simplex (or edge, or face) gives children of the
 // parent's sign; the rounded new position can still make a child of a nearly flat parent flat,
-// and that is refused rather than built. Empty reason when all children are fine.
+// and that is refused rather than built. Nothing when all children are fine.
 // Children of parents containing every vertex of `vanishing_with` (when not empty) are not
 // checked (SplitOptions: the caller removes them in its next edit).
-inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> children,
-                                   std::span<const ElementId> parents_of_children,
-                                   const MovedVertex& moved, const char* operation,
-                                   std::span<const VertexId> vanishing_with = {}) {
+inline std::optional<Refusal> refuse_bad_children(const Mesh& mesh, std::span<const Simplex> children,
+                                                  std::span<const ElementId> parents_of_children,
+                                                  const MovedVertex& moved, const char* operation,
+                                                  std::span<const VertexId> vanishing_with = {}) {
     auto vanishing = [&](ElementId parent) {
         return !vanishing_with.empty() &&
                std::all_of(vanishing_with.begin(), vanishing_with.end(),
@@ -465,13 +466,14 @@ inline Refusal refuse_bad_children(const Mesh& mesh, std::span<const Simplex> ch
             }
             const Sign child = simplex_orientation(mesh, children[i], positions, moved);
             if (child == Sign::zero || child != parent)
-                return {std::string(operation) + ": new element " + to_text(children[i]) +
-                            (child == Sign::zero ? " would be flat" : " would be inverted") +
-                            " in the " + positions_text(positions) + " positions",
-                        i};
+                return Refusal{child == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                               std::string(operation) + ": new element " + to_text(children[i]) +
+                                   (child == Sign::zero ? " would be flat" : " would be inverted") +
+                                   " in the " + positions_text(positions) + " positions",
+                               i};
         }
     }
-    return {};
+    return std::nullopt;
 }
 
 // The common end of every split: the new vertex m = sum weights[i] * replaced[i] (positions
@@ -501,9 +503,8 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
             parent_of_child.push_back(parent);
             labels.push_back(mesh.label(parent));
         }
-    if (Refusal r = refuse_bad_children(mesh, children, parent_of_child, moved, operation, vanishing_with);
-        !r.reason.empty())
-        return r;
+    if (auto refused = refuse_bad_children(mesh, children, parent_of_child, moved, operation, vanishing_with))
+        return *refused;
     // Face labels (keyed by vertex set) on the faces of the parents that are split: a face in no
     // child (split_edge: those containing a and b; split_face: abc) passes its label to its
     // pieces, the face with one of its replaced vertices swapped for m.
@@ -527,7 +528,7 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
                         moved_labels.emplace_back(Simplex(+1, face.substituted(v, m).vertices()), label->second);
             }
     auto added = mesh.add_interpolated_vertex(replaced, weights);
-    if (!added.ok()) return Refusal{std::string(operation) + ": " + added.reason()};
+    if (!added.ok()) return added.refusal().prefixed(std::string(operation) + ": ");
     // The star checks of replace_elements are proven (mesh_checks.hpp, ProvenEdit): (a) every
     // child and every new face that is not a face of a parent contains m, which no element has;
     // (b) around each vertex the children of a parent are face-connected among themselves
@@ -536,7 +537,7 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
     auto result = ProvenEdit::replace(mesh, parents, children, labels);
     if (!result.ok()) {
         (void)mesh.remove_last_vertex();  // m is in no element: the refused edit added nothing
-        return Refusal{std::string(operation) + ": " + result.reason()};
+        return result.refusal().prefixed(std::string(operation) + ": ");
     }
     for (const Simplex& face : split_faces) mesh.face_labels().erase(face);
     for (const auto& [face, label] : moved_labels) mesh.face_labels()[face] = label;

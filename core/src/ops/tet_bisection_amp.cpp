@@ -93,7 +93,7 @@ std::vector<int>& AmpClosurePlan::leaves_with(VertexId v) {
     return m_leaves_with.emplace(v, std::move(leaves)).first->second;
 }
 
-Refusal AmpClosurePlan::bisect(int n, std::vector<int>& work) {
+std::optional<Refusal> AmpClosurePlan::bisect(int n, std::vector<int>& work) {
     const TetMarking parent_marking = node(n).marking;
     const Simplex parent = node(n).simplex;
     const VertexId a = parent_marking.vertices[0], b = parent_marking.vertices[1];
@@ -123,10 +123,11 @@ Refusal AmpClosurePlan::bisect(int n, std::vector<int>& work) {
             const Sign after = orientation(children[i], positions);
             if (after == Sign::zero || after != before) {
                 if (created) m_new_vertices.pop_back();
-                return {"new element " + to_text(children[i]) +
-                            (after == Sign::zero ? " would be flat" : " would be inverted") +
-                            " in the " + positions_text(positions) + " positions",
-                        i};
+                return Refusal{after == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                               "new element " + to_text(children[i]) +
+                                   (after == Sign::zero ? " would be flat" : " would be inverted") +
+                                   " in the " + positions_text(positions) + " positions",
+                               i};
             }
         }
     }
@@ -151,16 +152,16 @@ Refusal AmpClosurePlan::bisect(int n, std::vector<int>& work) {
                 it->second.push_back(child);
         work.push_back(child);
     }
-    return {};
+    return std::nullopt;
 }
 
-Refusal AmpClosurePlan::bisect_and_close(int n, bool& did_not_end) {
+std::optional<Refusal> AmpClosurePlan::bisect_and_close(int n, bool& did_not_end) {
     did_not_end = false;
     // AMP bound the extra refinement of a closure; this guard only turns a closure that does
     // not end (a marking that is not AMP's) into a refusal
     const std::size_t limit = 64 + 8 * (m_mesh.element_count() + m_nodes.size());
     std::vector<int> work;
-    if (Refusal r = bisect(n, work); !r.reason.empty()) return r;
+    if (auto refused = bisect(n, work)) return refused;
     std::size_t bisections = 0;
     while (!work.empty()) {
         const int u = work.back();
@@ -168,11 +169,12 @@ Refusal AmpClosurePlan::bisect_and_close(int n, bool& did_not_end) {
         if (!node(u).alive || !has_hanging_node(u)) continue;
         if (++bisections > limit) {
             did_not_end = true;
-            return {"the marking is not conforming: the closure to conformity did not end"};
+            return Refusal{RefusalCode::bad_marking,
+                           "the marking is not conforming: the closure to conformity did not end"};
         }
-        if (Refusal r = bisect(u, work); !r.reason.empty()) return r;
+        if (auto refused = bisect(u, work)) return refused;
     }
-    return {};
+    return std::nullopt;
 }
 
 std::vector<ElementId> AmpClosurePlan::refined_originals() const {
@@ -264,7 +266,7 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
         if (!added.ok() || mesh.reference(*added) != planned.reference ||
             mesh.deformed(*added) != planned.deformed) {
             undo_vertices();
-            return Refusal{"internal error, a planned vertex differs from the one added" +
+            return Refusal{RefusalCode::internal_error, "internal error, a planned vertex differs from the one added" +
                            (added.ok() ? std::string() : ": " + added.reason())};
         }
     }
@@ -273,7 +275,7 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
     TetBisectionAccess::set_own_edit(state, false);
     if (!replaced.ok()) {
         undo_vertices();
-        return Refusal{"internal error, the planned refinement was refused: " + replaced.reason()};
+        return Refusal{RefusalCode::internal_error, "internal error, the planned refinement was refused: " + replaced.reason()};
     }
     for (const Simplex& face : split_faces) mesh.face_labels().erase(face);
     for (const auto& [face, label] : moved_labels) mesh.face_labels()[face] = label;
@@ -290,9 +292,9 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
 Outcome<std::size_t> amp_bisect(TetBisection& state, ElementId t) {
     AmpClosurePlan plan(state.mesh(), TetBisectionAccess::markings(state));
     bool did_not_end = false;
-    if (Refusal r = plan.bisect_and_close(plan.node_of(t), did_not_end); !r.reason.empty()) {
-        if (did_not_end) TetBisectionAccess::make_stale(state, r.reason);
-        return r;
+    if (auto refused = plan.bisect_and_close(plan.node_of(t), did_not_end)) {
+        if (did_not_end) TetBisectionAccess::make_stale(state, refused->reason);
+        return *refused;
     }
     if (auto replayed = amp_replay(state, plan); !replayed.ok()) return replayed.refusal();
     return plan.new_vertices().size();
@@ -303,9 +305,9 @@ Outcome<std::size_t> amp_refine_around(TetBisection& state, ElementId t, const P
     bool did_not_end = false;
     for (int n = plan.node_of(t);; n = plan.leaf_containing(n, x)) {
         if (!(plan.refinement_length(n) > h)) break;
-        if (Refusal r = plan.bisect_and_close(n, did_not_end); !r.reason.empty()) {
-            if (did_not_end) TetBisectionAccess::make_stale(state, r.reason);
-            return r;
+        if (auto refused = plan.bisect_and_close(n, did_not_end)) {
+            if (did_not_end) TetBisectionAccess::make_stale(state, refused->reason);
+            return *refused;
         }
     }
     if (plan.new_vertices().empty()) return std::size_t{0};

@@ -25,6 +25,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -59,11 +60,11 @@ public:
     const Node& node(int n) const { return m_nodes[static_cast<std::size_t>(n)]; }
     std::size_t node_count() const { return m_nodes.size(); }
 
-    // Bisects leaf n at its refinement edge, then closes to conformity. An empty reason on
-    // success; otherwise the overlay must be dropped. `did_not_end` is set when the closure
+    // Bisects leaf n at its refinement edge, then closes to conformity. Nothing on success;
+    // after a refusal the overlay must be dropped. `did_not_end` is set when the closure
     // passed its bound (64 + 8 * leaves when it started), which turns a marking whose closure
     // does not end into a refusal; AMP's marks never reach it.
-    Refusal bisect_and_close(int n, bool& did_not_end);
+    std::optional<Refusal> bisect_and_close(int n, bool& did_not_end);
 
     // The leaf containing x (closed test, reference positions) among n and its descendants; the
     // first child when rounding of a midpoint leaves x in neither.
@@ -94,7 +95,7 @@ private:
     std::vector<int>& leaves_with(VertexId v);
     void append_leaves_with(int n, VertexId v, std::vector<int>& out) const;
     // One bisection of leaf n; the leaves that may now have a hanging node go to `work`.
-    Refusal bisect(int n, std::vector<int>& work);
+    std::optional<Refusal> bisect(int n, std::vector<int>& work);
 
     const Mesh& m_mesh;
     const std::vector<TetMarking>& m_markings;

@@ -12,13 +12,13 @@ namespace sxk {
 Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t) {
     Mesh& mesh = *state.m_mesh;
     if (!mesh.is_element(t))
-        return Refusal{"bisect_tetrahedron: " + std::to_string(t) + " is not an element"};
+        return Refusal{RefusalCode::not_found, "bisect_tetrahedron: " + std::to_string(t) + " is not an element"};
     if (state.is_stale())
-        return Refusal{"bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
+        return Refusal{RefusalCode::bad_marking, "bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
 
     if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {
         auto bisected = detail::amp_bisect(state, t);
-        if (!bisected.ok()) return Refusal{"bisect_tetrahedron: " + bisected.reason()};
+        if (!bisected.ok()) return bisected.refusal().prefixed("bisect_tetrahedron: ");
         return bisected;
     }
     detail::TetBisectionPlan plan(mesh, state.rule(),
@@ -27,7 +27,7 @@ Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t) {
     auto planned = plan.bisect(plan.node_of(t), did_not_end);
     // a marking whose chains cycle will cycle again: the state says so from now on
     if (did_not_end) state.m_stale_reason = planned.reason();
-    if (!planned.ok()) return Refusal{"bisect_tetrahedron: " + planned.reason()};
+    if (!planned.ok()) return planned.refusal().prefixed("bisect_tetrahedron: ");
     if (auto replayed = detail::TetBisectionAccess::replay(state, plan.splits(), "bisect_tetrahedron");
         !replayed.ok())
         return replayed.refusal();

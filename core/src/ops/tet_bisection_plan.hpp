@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <tuple>
@@ -159,7 +160,7 @@ public:
             [&](VertexId a, VertexId b) { return tetrahedra_with_edge(a, b); },
             [&](int u) { return refinement_edge(u); },
             [&](VertexId a, VertexId b, const std::vector<int>& ring) -> Outcome<Done> {
-                if (Refusal r = split(a, b, ring); !r.reason.empty()) return r;
+                if (auto refused = split(a, b, ring)) return *refused;
                 return Done{};
             },
             did_not_end);
@@ -211,7 +212,7 @@ private:
     // arithmetic (weights {0.5, 0.5}: the first term assigned, the second added), the children
     // <a->m>, <b->m> of each parent in ring order, checked as split_parents checks them (all
     // children in the reference positions, then all in the deformed ones; the same reason).
-    Refusal split(VertexId a, VertexId b, const std::vector<int>& ring) {
+    std::optional<Refusal> split(VertexId a, VertexId b, const std::vector<int>& ring) {
         const auto m = static_cast<VertexId>(m_base + m_reference.size());
         Point reference{}, deformed{};
         for (std::size_t k = 0; k < 3; ++k) {
@@ -236,10 +237,11 @@ private:
                 if (after == Sign::zero || after != before) {
                     m_reference.pop_back();
                     m_deformed.pop_back();
-                    return {"split_edge: new element " + to_text(children[i]) +
-                                (after == Sign::zero ? " would be flat" : " would be inverted") +
-                                " in the " + positions_text(positions) + " positions",
-                            i};
+                    return Refusal{after == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                                   "split_edge: new element " + to_text(children[i]) +
+                                       (after == Sign::zero ? " would be flat" : " would be inverted") +
+                                       " in the " + positions_text(positions) + " positions",
+                                   i};
                 }
             }
         for (std::size_t i = 0; i < children.size(); ++i) {
@@ -266,7 +268,7 @@ private:
         }
         m_added_elements += ring.size();
         m_splits.push_back({a, b});
-        return {};
+        return std::nullopt;
     }
 
     const Mesh& m_mesh;
@@ -321,7 +323,7 @@ struct TetBisectionAccess {
             auto result = split_edge(mesh, e[0], e[1], 0.5);
             state.m_own_edit = false;
             if (!result.ok())
-                return Refusal{operation + ": internal error, a planned bisection was refused: " +
+                return Refusal{RefusalCode::internal_error, operation + ": internal error, a planned bisection was refused: " +
                                result.reason()};
             if (state.m_markings.size() < mesh.element_capacity())
                 state.m_markings.resize(mesh.element_capacity());
