@@ -18,23 +18,39 @@
 namespace sxk {
 
 // What kind of refusal: callers branch on the code, people read the reason. The reason text
-// names the case in words and may change wording; the codes and their names are stable.
+// names the case in words and may change wording; the codes and their names are stable. The
+// table in docs/kernel.md ("Refusal codes") lists the operations that return each.
 enum class RefusalCode : std::uint8_t {
-    bad_argument,     // malformed call: wrong sizes or counts, an id listed twice, a simplex with a repeated or unknown vertex, a parameter out of range (every operation)
-    not_found,        // an argument names nothing: no such vertex, element, face, edge or attribute, no element contains the point (every operation, refine_around*)
-    wrong_dimension,  // the mesh's topological or ambient dimension is not the one the operation needs (flips, splits, bisections, refine_around*, remove_node, make_delaunay_by_flips, TetBisection)
-    would_invert,     // a new or reshaped element would be inverted, or a surface would fold or turn over (splits, flips, collapse_edge, bisections)
-    would_flatten,    // a new or reshaped element would be flat: orientation exactly zero, collinear vertices (splits, flips, collapse_edge, bisections)
-    link_condition,   // the edge violates the link condition: the collapse would not leave a manifold (collapse_edge)
-    moves_boundary,   // the edit would change the domain: a boundary vertex or face would leave its line or plane (collapse_edge, remove_node)
-    not_manifold,     // the elements would not form an oriented manifold: an element or face twice (invariant 7.4), a face in more than two elements or twice with one orientation, a flip's new simplex that exists (replace_elements, change_elements, assign_elements, flips)
-    pinched_star,     // a vertex star would not be face-connected, "star connectivity" (replace_elements, change_elements, assign_elements)
-    label_conflict,   // labels forbid the edit: a material interface, a labelled face that would vanish, different labels around a vertex (flips, remove_node)
-    not_applicable,   // the configuration does not allow the operation: an edge on the boundary or of another degree, not the hypotenuse, elements not counter-clockwise, no valid ear, a vertex in use, a mesh with elements, a name taken, not a Kuhn mesh
-    bad_marking,      // the bisection marks do not fit the mesh: an inconsistent marking, a recursion that does not end, a stale state (TetBisection, bisect_tetrahedron, refine_around_tetrahedra)
-    invalid_mesh,     // validate() found a broken invariant or an inverted (with flat_is_invalid also a flat) element (Mesh::validate)
-    too_large,        // the mesh would exceed the 32-bit id range (assign_elements)
-    internal_error,   // a step the operation had planned and checked was refused after all: a bug; the mesh is unchanged (bisections, refine_around*, make_kuhn_cube)
+    // malformed call: wrong sizes or counts, an id twice, a bad simplex, a parameter out of range
+    bad_argument,
+    // an argument names nothing: no such vertex, element, face, edge, attribute, or point's element
+    not_found,
+    // the mesh has another dimension than the operation needs (2D ops on tetrahedra, and so on)
+    wrong_dimension,
+    // a new or reshaped element would be inverted, a surface would fold (splits, flips, collapse)
+    would_invert,
+    // a new or reshaped element would be flat or collinear (splits, flips, collapse, bisections)
+    would_flatten,
+    // collapse_edge: the edge violates the link condition (the result would not be a manifold)
+    link_condition,
+    // the edit would change the domain: the boundary would move (collapse_edge, remove_node)
+    moves_boundary,
+    // a simplex twice (7.4), a non-manifold or misoriented face (edit primitives, flips, building)
+    not_manifold,
+    // a vertex star would not be face-connected, "star connectivity" (edit primitives, building)
+    pinched_star,
+    // labels forbid it: a material interface, a labelled face would vanish (flips, remove_node)
+    label_conflict,
+    // the configuration does not allow it: a boundary edge (flips), no valid ear (remove_node), ...
+    not_applicable,
+    // the bisection marks do not fit the mesh: inconsistent, endless recursion, or the state stale
+    bad_marking,
+    // Mesh::validate found a broken invariant or an inverted (flat_is_invalid: flat) element
+    invalid_mesh,
+    // the mesh would pass a size limit: 32-bit face ids (assign_elements)
+    too_large,
+    // a step the operation had planned and checked was refused after all: a bug, mesh unchanged
+    internal_error,
 };
 
 // The code's stable snake_case name ("not_found"), as written in JSON output.
