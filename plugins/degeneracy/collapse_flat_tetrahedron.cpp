@@ -46,9 +46,9 @@ struct Move {
 // Edges of a tetrahedron by dihedral_angles' order: (01, 02, 03, 12, 13, 23).
 constexpr std::array<std::pair<int, int>, 6> edges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
-// Does the move's edits; empty string on success. A refusal part way (the collapse after the
+// Does the move's edits; nothing on success. A refusal part way (the collapse after the
 // split) leaves the split: the caller's journal undoes it.
-std::string execute(Mesh& mesh, const Move& move, const Options& options) {
+Refused execute(Mesh& mesh, const Move& move, const Options& options) {
     switch (move.kind) {
         case Move::Kind::collapse_edge:
             return collapse_one_way(mesh, move.v[0], move.v[1], move.reverse, options);
@@ -57,17 +57,17 @@ std::string execute(Mesh& mesh, const Move& move, const Options& options) {
             // split into flat pieces (SplitOptions)
             const std::array<VertexId, 1> vanishing{move.v[2]};
             const auto split = split_edge(mesh, move.v[0], move.v[1], move.s, SplitOptions{vanishing});
-            if (!split) return split.reason();
+            if (!split) return split.refusal();
             return collapse_one_way(mesh, split->vertex, move.v[2], move.reverse, options);
         }
         case Move::Kind::split_two_edges: {
             // the flat element (the one with both edges) and its pieces vanish in the collapse
             const std::array<VertexId, 2> with_cd{move.v[2], move.v[3]};
             const auto first = split_edge(mesh, move.v[0], move.v[1], move.s, SplitOptions{with_cd});
-            if (!first) return first.reason();
+            if (!first) return first.refusal();
             const std::array<VertexId, 1> with_m1{first->vertex};
             const auto second = split_edge(mesh, move.v[2], move.v[3], move.u, SplitOptions{with_m1});
-            if (!second) return second.reason();
+            if (!second) return second.refusal();
             return collapse_one_way(mesh, second->vertex, first->vertex, move.reverse, options);
         }
         case Move::Kind::split_face: {
@@ -82,14 +82,14 @@ std::string execute(Mesh& mesh, const Move& move, const Options& options) {
                     break;
                 }
             }
-            if (face == invalid_id) return "the face to split is gone";
+            if (face == invalid_id) return Refusal(RefusalCode::not_found, "the face to split is gone");
             const std::array<VertexId, 1> vanishing{move.v[3]};
             const auto split = split_face(mesh, face, move.w, SplitOptions{vanishing});
-            if (!split) return split.reason();
+            if (!split) return split.refusal();
             return collapse_one_way(mesh, split->vertex, move.v[3], move.reverse, options);
         }
     }
-    return "unknown move";
+    return Refusal(RefusalCode::internal_error, "unknown move");
 }
 
 void count(const Move& move, Tally& tally) {
@@ -220,10 +220,10 @@ std::vector<Move> moves_for(const Mesh& mesh, ElementId t, const Options& option
 
 }  // namespace
 
-std::string collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                                      MoveJournal& journal, Effort effort, MoveJournal* inner) {
+Refused collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
+                                  MoveJournal& journal, Effort effort, MoveJournal* inner) {
     const std::vector<Move> moves = moves_for(mesh, t, options);
-    if (moves.empty()) return "no split or collapse fits its shape";
+    if (moves.empty()) return Refusal(RefusalCode::not_applicable, "no split or collapse fits its shape");
     return try_moves_of(
         mesh, t, std::span<const Move>(moves), options, tally, journal, effort, inner,
         [&](const Move& move) { return execute(mesh, move, options); }, count, collapse_flat_tetrahedron);

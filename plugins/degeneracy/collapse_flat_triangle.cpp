@@ -41,24 +41,25 @@ FaceId edge_opposite(const Mesh& mesh, VertexId a, VertexId b, VertexId v) {
     return invalid_id;
 }
 
-std::string execute(Mesh& mesh, const Move& move, const Options& options) {
+Refused execute(Mesh& mesh, const Move& move, const Options& options) {
     switch (move.kind) {
         case Move::Kind::collapse_edge:
             return collapse_one_way(mesh, move.a, move.b, move.reverse, options);
         case Move::Kind::flip_edge: {
             const FaceId edge = edge_opposite(mesh, move.a, move.b, move.v);
-            if (edge == invalid_id) return "the flat triangle is gone";
+            if (edge == invalid_id) return Refusal(RefusalCode::not_found, "the flat triangle is gone");
             const auto flipped = flip_edge(mesh, edge);
-            return flipped ? std::string{} : flipped.reason();
+            if (flipped) return std::nullopt;
+            return flipped.refusal();
         }
         case Move::Kind::split_edge: {
             const std::array<VertexId, 1> vanishing{move.v};  // the flat triangle's pieces
             const auto split = split_edge(mesh, move.a, move.b, move.s, SplitOptions{vanishing});
-            if (!split) return split.reason();
+            if (!split) return split.refusal();
             return collapse_one_way(mesh, split->vertex, move.v, move.reverse, options);
         }
     }
-    return "unknown move";
+    return Refusal(RefusalCode::internal_error, "unknown move");
 }
 
 void count(const Move& move, Tally& tally) {
@@ -72,8 +73,8 @@ void count(const Move& move, Tally& tally) {
 
 }  // namespace
 
-std::string collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                                   MoveJournal& journal, Effort effort, MoveJournal* inner) {
+Refused collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
+                               MoveJournal& journal, Effort effort, MoveJournal* inner) {
     const Simplex tau = mesh.simplex(t);
     std::array<VertexId, 3> p{};
     std::array<Point, 3> x{};
@@ -106,7 +107,7 @@ std::string collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& optio
         if (rank(m1) != rank(m2)) return rank(m1) < rank(m2);
         return m1.distance < m2.distance;
     });
-    if (moves.empty()) return "no flip, split or collapse fits its shape";
+    if (moves.empty()) return Refusal(RefusalCode::not_applicable, "no flip, split or collapse fits its shape");
     std::vector<Move> both;
     for (const Move& move : moves) {
         both.push_back(move);

@@ -98,6 +98,11 @@ nlohmann::ordered_json to_json(const Report& report) {
         entry["element"] = report.remaining_elements[index];
         entry["reason"] =
             index < report.remaining_reasons.size() ? report.remaining_reasons[index] : "";
+        // the refusal code of the first attempt the reason names; null when none was made
+        if (index < report.remaining_codes.size() && report.remaining_codes[index])
+            entry["code"] = std::string(sxk::to_string(*report.remaining_codes[index]));
+        else
+            entry["code"] = nullptr;
         json["remaining"].push_back(entry);
     }
     return json;

@@ -30,7 +30,9 @@ namespace sxk::degeneracy {
 // The service the plug-in offers through Plugin::service(service_name): remove_degeneracies()
 // for applications that load degeneracy.so at run time instead of linking
 // sxk_plugin_degeneracy_static. The pointers call the functions of remove_degeneracies.hpp.
-inline constexpr const char* service_name = "sxk.degeneracy/1";
+// The number changes with the layout of what the pointers pass (2: refusals carry a code,
+// Report::remaining_codes).
+inline constexpr const char* service_name = "sxk.degeneracy/2";
 struct Service {
     Outcome<Report> (*remove)(Mesh& mesh, const Options& options);
     Outcome<Report> (*remove_among)(Mesh& mesh, std::span<const ElementId> candidates,
@@ -50,7 +52,8 @@ std::size_t removed(const Report& report);
 //     "min_angle_after", "max_angle_after" (radians; dihedral angles, triangles: angles);
 //   "summary": "found", "removed", "cracks" (= elements cut free), "remaining", "collapses",
 //     "splits", "flips", "peeled", "elements" {"before","after"}, "vertices" {"before","after"};
-//   "remaining": [{"element": id, "reason": why its last attempt was refused}].
+//   "remaining": [{"element": id, "reason": why its last attempt was refused, "code": the
+//     RefusalCode name (to_string) of the first refusal the reason names, null when none}].
 nlohmann::ordered_json to_json(const Report& report);
 
 // The text report: the pass table (angles in degrees; the column reads "dihedral range" for

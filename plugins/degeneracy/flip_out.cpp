@@ -98,35 +98,36 @@ std::vector<Flip> flips_for(const Mesh& mesh, ElementId t, const Options& option
 
 }  // namespace
 
-std::string flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally) {
+Refused flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally) {
     const std::vector<Flip> flips = flips_for(mesh, t, options);
-    if (flips.empty()) return "no flip removes it without making another degenerate element";
-    std::string why;
+    if (flips.empty())
+        return Refusal(RefusalCode::not_applicable, "no flip removes it without making another degenerate element");
+    Refused why;
     for (const Flip& flip : flips) {
         bool done = false;
         switch (flip.kind) {
             case Flip::Kind::f23: {
                 const auto r = flip_23(mesh, flip.face);
                 done = r.ok();
-                if (!done) why = r.reason();
+                if (!done) why = r.refusal();
                 break;
             }
             case Flip::Kind::f32: {
                 const auto r = flip_32(mesh, flip.face, flip.j);
                 done = r.ok();
-                if (!done) why = r.reason();
+                if (!done) why = r.refusal();
                 break;
             }
             case Flip::Kind::f44: {
                 const auto r = flip_44(mesh, flip.face, flip.j, flip.diagonal);
                 done = r.ok();
-                if (!done) why = r.reason();
+                if (!done) why = r.refusal();
                 break;
             }
         }
         if (done) {
             ++tally.flips;
-            return {};
+            return std::nullopt;
         }
     }
     return why;

@@ -18,13 +18,13 @@
 #include "sxk/quality.hpp"
 
 namespace sxk::degeneracy::detail {
-std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
+Refused peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
     const Simplex tau = mesh.simplex(t);
     std::vector<Simplex> boundary, exposed;
     for (int i = 0; i < tau.count(); ++i)
         (mesh.neighbor(t, i) == invalid_id ? boundary : exposed).push_back(tau.subn(i));
-    if (boundary.empty()) return "it has no face on the boundary";
-    if (exposed.empty()) return "it is a whole component (no interior face)";
+    if (boundary.empty()) return Refusal(RefusalCode::not_applicable, "it has no face on the boundary");
+    if (exposed.empty()) return Refusal(RefusalCode::not_applicable, "it is a whole component (no interior face)");
     for (const Simplex& face : boundary)
         for (const VertexId v : tau.vertices()) {
             if (face.contains(v)) continue;
@@ -36,8 +36,9 @@ std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
                     std::span<const Point>(corners.data(), static_cast<std::size_t>(face.count())),
                     position(mesh, v, positions));
                 if (!(d <= options.boundary_tolerance))
-                    return "peeling it off would move the boundary face " + to_text(face) + " by " +
-                           std::to_string(d) + " of its longest edge";
+                    return Refusal(RefusalCode::moves_boundary,
+                                   "peeling it off would move the boundary face " + to_text(face) + " by " +
+                                       std::to_string(d) + " of its longest edge");
             }
         }
     int label = 0;
@@ -52,12 +53,12 @@ std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
     }
     const std::array<ElementId, 1> doomed{t};
     const auto removed = mesh.replace_elements(doomed, {});
-    if (!removed) return removed.reason();
+    if (!removed) return removed.refusal();
     // its boundary faces are gone; the faces it exposed carry the boundary's label on
     for (const Simplex& face : boundary) mesh.face_labels().erase(Simplex(+1, face.vertices()));
     if (labelled)
         for (const Simplex& face : exposed) mesh.face_labels().try_emplace(Simplex(+1, face.vertices()), label);
-    return {};
+    return std::nullopt;
 }
 
 }  // namespace sxk::degeneracy::detail

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ struct Tally {
     std::size_t flips = 0;
 };
 
+// What a step returns: nothing when it did its work, else the refusal of its last attempt (a
+// kernel operation's, with its code, or the step's own).
+using Refused = std::optional<Refusal>;
+
 // How hard a removal tries (try_moves' rounds).
 enum class Effort {
     clean,      // only moves that make no degenerate element
@@ -33,31 +38,31 @@ enum class Effort {
 };
 
 // Removes the flat tetrahedron t by a collapse, after one or two splits where its shape asks
-// for them (collapse_flat_tetrahedron.cpp). Returns an empty string when t is gone, else why
-// the last attempt was refused (the mesh is then as before, up to element ids).
+// for them (collapse_flat_tetrahedron.cpp). Returns nothing when t is gone, else why the last
+// attempt was refused (the mesh is then as before, up to element ids).
 // With Effort::follow_up, `inner` is the journal of the follow-up moves.
-std::string collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
+Refused collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
                                       MoveJournal& journal, Effort effort = Effort::paying,
                                       MoveJournal* inner = nullptr);
 // The same for a flat triangle (collapse_flat_triangle.cpp): a collapse, an edge flip, or a
 // split and a collapse.
-std::string collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                                   MoveJournal& journal, Effort effort = Effort::paying,
+Refused collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
+                               MoveJournal& journal, Effort effort = Effort::paying,
                                    MoveJournal* inner = nullptr);
 // Removes tetrahedron t by the 2-3, 3-2 or 4-4 flip whose new elements are best shaped, if
-// none of them is degenerate (flip_out.cpp). Empty string on success.
-std::string flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally);
+// none of them is degenerate (flip_out.cpp). Nothing on success.
+Refused flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally);
 // Removes t when it has a face on the boundary and lies within options.boundary_tolerance of
 // the plane of each such face (peel_off_boundary.cpp): its other faces become the boundary, no
-// crack. Empty string on success.
-std::string peel_off_boundary(Mesh& mesh, ElementId t, const Options& options);
+// crack. Nothing on success.
+Refused peel_off_boundary(Mesh& mesh, ElementId t, const Options& options);
 // Cuts the elements free (dissect along all their faces, thesis §7.3) and removes them
 // (cut_free.cpp): the cracks. Refuses, mesh untouched, when dissect or the removal does.
 Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements);
 
-// Collapses a into b (reverse: b into a) with the boundary tolerance of the options; empty
-// string on success (split_and_collapse.cpp).
-std::string collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const Options& options);
+// Collapses a into b (reverse: b into a) with the boundary tolerance of the options; nothing
+// on success (split_and_collapse.cpp).
+Refused collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const Options& options);
 
 // ---- geometry in the measured positions -----------------------------------------------------
 
@@ -117,23 +122,23 @@ std::vector<VertexId> ring_of(const Mesh& mesh, std::span<const VertexId> vertic
 // (`before`); round 3 (Effort::follow_up, for what the passes could not remove) keeps a move
 // whose new degenerates `follow_up` (their vertex sets) removes by clean moves at once, the
 // journal then undoing move and follow-ups together if that fails. `execute(move)` returns a
-// refusal or an empty string; `count(move)` books a kept move. Returns an empty string when a
-// move was kept, else the last reason.
+// refusal or nothing; `count(move)` books a kept move. Returns nothing when a move was kept,
+// else the last refusal.
 template <class Move, class Execute, class Count, class FollowUp>
-std::string try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const VertexId> vertices,
+Refused try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const VertexId> vertices,
                       double before, const Options& options, MoveJournal& journal, Effort effort,
                       Execute execute, Count count, FollowUp follow_up) {
     std::vector<char> refused(moves.size(), 0);  // by an operation: later rounds skip them
     const int rounds = effort == Effort::clean ? 1 : effort == Effort::paying ? 2 : 3;
     std::vector<VertexId> region;
     if (rounds == 3) region = ring_of(mesh, vertices);
-    std::string why;
+    Refused why;
     for (int round = 0; round < rounds; ++round)
         for (std::size_t i = 0; i < moves.size(); ++i) {
             if (refused[i]) continue;
             journal.begin(round == 2 ? std::span<const VertexId>(region) : vertices);
-            std::string refusal = execute(moves[i]);
-            if (refusal.empty()) {
+            Refused refusal = execute(moves[i]);
+            if (!refusal) {
                 const std::vector<ElementId> created = journal.created();
                 const Shapes made = shapes_of(mesh, created, options);
                 bool pays = made.degenerate == 0;
@@ -149,14 +154,16 @@ std::string try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const V
                 }
                 if (pays) {
                     count(moves[i]);
-                    return {};
+                    return std::nullopt;
                 }
-                refusal = "every move leaves a degenerate element (this one: aspect ratio " +
-                          std::to_string(made.worst) + ")";
+                refusal = Refusal(RefusalCode::not_applicable,
+                                  "every move leaves a degenerate element (this one: aspect ratio " +
+                                      std::to_string(made.worst) + ")");
             } else {
                 refused[i] = 1;
             }
-            if (journal.changed() && !journal.undo()) return "a refused move could not be undone: " + refusal;
+            if (journal.changed() && !journal.undo())
+                return Refusal(RefusalCode::internal_error, "a refused move could not be undone: " + refusal->reason);
             why = std::move(refusal);
         }
     return why;
@@ -167,7 +174,7 @@ std::string try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const V
 // step with Effort::clean on the inner journal, and what they do is booked with the move they
 // follow. Effort::follow_up needs `inner`; without it the step tries no harder than paying.
 template <class Move, class Execute, class Count, class Remove>
-std::string try_moves_of(Mesh& mesh, ElementId t, std::span<const Move> moves, const Options& options,
+Refused try_moves_of(Mesh& mesh, ElementId t, std::span<const Move> moves, const Options& options,
                          Tally& tally, MoveJournal& journal, Effort effort, MoveJournal* inner,
                          Execute execute, Count count, Remove remove) {
     const Simplex& tau = mesh.simplex(t);
@@ -181,7 +188,7 @@ std::string try_moves_of(Mesh& mesh, ElementId t, std::span<const Move> moves, c
         for (const Simplex& key : flat) {
             const ElementId e = element_with(mesh, key);
             if (e == invalid_id || element_aspect_ratio(mesh, e, options.positions) >= options.aspect_ratio) continue;
-            if (!remove(mesh, e, options, follow_ups, *inner, Effort::clean, nullptr).empty()) return false;
+            if (remove(mesh, e, options, follow_ups, *inner, Effort::clean, nullptr)) return false;
         }
         return true;
     };

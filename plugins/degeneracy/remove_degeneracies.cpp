@@ -134,7 +134,9 @@ public:
         report.remaining = list.size();
         for (const ElementId t : list) {
             report.remaining_elements.push_back(t);
-            report.remaining_reasons.push_back(reason(t));
+            Why why = reason(t);
+            report.remaining_reasons.push_back(std::move(why.text));
+            report.remaining_codes.push_back(why.code);
         }
         report.elements_after = m_mesh.element_count();
         report.vertices_after = vertices_in_elements(m_mesh);
@@ -148,7 +150,7 @@ private:
     bool has_untried(const std::vector<ElementId>& list) const {
         return std::any_of(list.begin(), list.end(), [&](ElementId t) {
             const auto found = m_reasons.find(key(t));
-            return found == m_reasons.end() || found->second[0].empty();
+            return found == m_reasons.end() || !found->second[0];
         });
     }
 
@@ -159,16 +161,23 @@ private:
         return untried;
     }
 
-    std::string reason(ElementId t) const {
-        const auto found = m_reasons.find(key(t));
-        if (found == m_reasons.end()) return "not tried (the passes stopped: the list no longer shrank)";
+    // Why t remains: the refusals of its attempts in pass order, and the code of the first.
+    struct Why {
         std::string text;
+        std::optional<RefusalCode> code;
+    };
+    Why reason(ElementId t) const {
+        const auto found = m_reasons.find(key(t));
+        if (found == m_reasons.end()) return {"not tried (the passes stopped: the list no longer shrank)", {}};
+        Why why;
         const char* names[] = {"collapse: ", "flip: ", "peel: ", "cut free: "};
         for (std::size_t i = 0; i < 4; ++i) {
-            if (found->second[i].empty()) continue;
-            text += (text.empty() ? "" : " | ") + std::string(names[i]) + found->second[i];
+            const detail::Refused& refused = found->second[i];
+            if (!refused) continue;
+            why.text += (why.text.empty() ? "" : " | ") + std::string(names[i]) + refused->reason;
+            if (!why.code) why.code = refused->code;
         }
-        return text;
+        return why;
     }
 
     bool degenerate(ElementId t) const {
@@ -200,7 +209,7 @@ private:
             if (cut) {
                 p.cut_free = list.size();
             } else {
-                for (const ElementId t : list) m_reasons[key(t)][3] = cut.reason();
+                for (const ElementId t : list) m_reasons[key(t)][3] = cut.refusal();
                 next = list;
             }
         } else {
@@ -211,10 +220,10 @@ private:
                 // an earlier edit of this pass may have removed or repaired it
                 const ElementId t = detail::element_with(m_mesh, vertices);
                 if (t == invalid_id || !degenerate(t)) continue;
-                std::string why;
+                detail::Refused why;
                 if (kind == PassReport::Kind::peel) {
                     why = detail::peel_off_boundary(m_mesh, t, m_options);
-                    if (why.empty()) ++p.peeled;
+                    if (!why) ++p.peeled;
                 } else if (kind == PassReport::Kind::flip) {
                     why = detail::flip_out(m_mesh, t, m_options, tally);
                 } else if (m_mesh.topological_dimension() == 2) {
@@ -226,12 +235,12 @@ private:
                     // thesis cube grew by 7% so). A clean flip removes it with one element more
                     // at most, so slivers try it first (beyond the thesis).
                     if (m_options.flips && detail::classify_element(m_mesh, t, m_options) == DegenerateClass::sliver &&
-                        detail::flip_out(m_mesh, t, m_options, tally).empty())
+                        !detail::flip_out(m_mesh, t, m_options, tally))
                         continue;
                     why = detail::collapse_flat_tetrahedron(m_mesh, t, m_options, tally, m_journal, m_effort,
                                                             &m_inner_journal);
                 }
-                if (!why.empty()) m_reasons[vertices][static_cast<std::size_t>(kind)] = why;
+                if (why) m_reasons[vertices][static_cast<std::size_t>(kind)] = std::move(why);
             }
             for (const Simplex& vertices : keys)
                 if (const ElementId t = detail::element_with(m_mesh, vertices); t != invalid_id) next.push_back(t);
@@ -335,7 +344,7 @@ private:
     std::unordered_set<ElementId> m_made;
     std::unordered_set<ElementId> m_touched_ever;
     // why the collapse, flip and cut free attempts failed
-    std::unordered_map<Simplex, std::array<std::string, 4>, SimplexHash> m_reasons;  // by Kind
+    std::unordered_map<Simplex, std::array<detail::Refused, 4>, SimplexHash> m_reasons;  // by Kind
 };
 
 }  // namespace

@@ -58,6 +58,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -117,9 +118,11 @@ struct Report {
     std::size_t elements_before = 0, elements_after = 0;
     std::size_t vertices_before = 0, vertices_after = 0;
     // The elements still degenerate at the end (when remaining > 0), and why their last
-    // attempt was refused (one reason per element, same order).
+    // attempt was refused (one reason per element, same order): the refusal of each pass that
+    // tried, and the code of the first of them (none for an element that was not tried).
     std::vector<ElementId> remaining_elements;
     std::vector<std::string> remaining_reasons;
+    std::vector<std::optional<RefusalCode>> remaining_codes;
 };
 
 // Finds every degenerate element of the mesh and removes them. Refuses (mesh untouched) when

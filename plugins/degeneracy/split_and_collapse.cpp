@@ -8,10 +8,11 @@
 
 namespace sxk::degeneracy::detail {
 
-std::string collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const Options& options) {
+Refused collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const Options& options) {
     const auto collapsed = reverse ? collapse_edge(mesh, b, a, CollapseOptions{options.boundary_tolerance})
                                    : collapse_edge(mesh, a, b, CollapseOptions{options.boundary_tolerance});
-    return collapsed ? std::string{} : collapsed.reason();
+    if (collapsed) return std::nullopt;
+    return collapsed.refusal();
 }
 
 ElementId element_containing(const Mesh& mesh, std::span<const VertexId> vertices) {

@@ -1,7 +1,7 @@
 // sxk degeneracies IN OUT (the degeneracy plug-in, thesis §3.2.3) through the binary: usage and
 // input errors (exit 2), an unwritable output (exit 1), a cap removed by split + collapse, a
 // flat triangle removed, a boundary spindle cut free or listed as remaining, the JSON report;
-// and the plug-in's service "sxk.degeneracy/1" called in process through a PluginHost.
+// and the plug-in's service "sxk.degeneracy/2" called in process through a PluginHost.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -437,6 +437,7 @@ TEST(SxkDegeneracies, WithoutCuttingFreeTheRemainingAreListed) {
     EXPECT_NE(json["remaining"][0]["reason"].get<std::string>().find("would move the boundary"),
               std::string::npos)
         << json["remaining"][0]["reason"];
+    EXPECT_EQ(json["remaining"][0]["code"], "moves_boundary");
     // the output still holds the spindle, unchanged
     const Mesh result = read_mesh(f.out);
     EXPECT_TRUE(result.validate().ok());
@@ -492,6 +493,7 @@ TEST(DegeneracyService, RemovesTheCapInProcess) {
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(),
               "remove_degeneracies: aspect ratio threshold must be in (0, 1), not 2.000000");
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
 }

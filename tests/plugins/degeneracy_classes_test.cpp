@@ -210,6 +210,8 @@ TEST(DegeneracyClasses, WithoutCuttingFreeTheRefusalIsReported) {
     ASSERT_EQ(report->remaining_reasons.size(), 1u);
     EXPECT_NE(report->remaining_reasons[0].find("would move the boundary"), std::string::npos)
         << report->remaining_reasons[0];
+    ASSERT_EQ(report->remaining_codes.size(), 1u);
+    EXPECT_EQ(report->remaining_codes[0], RefusalCode::moves_boundary);
     // every try was undone: the same elements, the same vertices in use
     EXPECT_EQ(mesh.element_count(), before.element_count());
     EXPECT_EQ(mesh.vertex_count(), before.vertex_count());
@@ -230,11 +232,13 @@ TEST(DegeneracyClasses, BadOptionsAreRefusedWithTheMeshUntouched) {
     auto report = remove_degeneracies(mesh, options);
     ASSERT_FALSE(report.ok());
     EXPECT_EQ(report.reason(), "remove_degeneracies: aspect ratio threshold must be in (0, 1), not 0.000000");
+    EXPECT_EQ(report.code(), RefusalCode::bad_argument);
     options = {};
     options.large_angle = 1.0;
     report = remove_degeneracies(mesh, options);
     ASSERT_FALSE(report.ok());
     EXPECT_EQ(report.reason(), "remove_degeneracies: large angle must be in (pi/2, pi) radians, not 1.000000");
+    EXPECT_EQ(report.code(), RefusalCode::bad_argument);
     test::expect_same_state(mesh, before);
 }
 
