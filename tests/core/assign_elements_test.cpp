@@ -40,6 +40,7 @@ struct BadSoup {
     std::vector<Simplex> simplexes;
     std::string reason;
     std::size_t item;
+    RefusalCode code;
 };
 
 class AssignElementsRefuses : public ::testing::TestWithParam<BadSoup> {};
@@ -52,6 +53,7 @@ TEST_P(AssignElementsRefuses, WithReasonAndItem) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), GetParam().reason);
     EXPECT_EQ(result.refusal().item, GetParam().item);
+    EXPECT_EQ(result.code(), GetParam().code);
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
 }
@@ -60,22 +62,22 @@ INSTANTIATE_TEST_SUITE_P(
     Soups, AssignElementsRefuses,
     ::testing::Values(
         BadSoup{"WrongSize", {Simplex(+1, {0, 1, 2, 3}), Simplex(+1, {0, 1, 2})},
-                "element has 3 vertices, expected 4", 1},
+                "element has 3 vertices, expected 4", 1, RefusalCode::bad_argument},
         BadSoup{"UnknownVertex", {Simplex(+1, {0, 1, 2, 9})},
-                "vertex 9 does not exist (the mesh has 6 vertices)", 0},
+                "vertex 9 does not exist (the mesh has 6 vertices)", 0, RefusalCode::bad_argument},
         BadSoup{"RepeatedVertex", {Simplex(+1, {0, 1, 1, 2})},
-                "element +<0,1,1,2> repeats a vertex", 0},
+                "element +<0,1,1,2> repeats a vertex", 0, RefusalCode::bad_argument},
         BadSoup{"Duplicate", {Simplex(+1, {0, 1, 2, 3}), Simplex(+1, {1, 0, 3, 2})},
-                "element 1 repeats element 0 (duplicate element)", 1},
+                "element 1 repeats element 0 (duplicate element)", 1, RefusalCode::not_manifold},
         BadSoup{"MirrorDuplicate", {Simplex(+1, {0, 1, 2, 3}), Simplex(-1, {0, 1, 2, 3})},
-                "element 1 repeats element 0 (duplicate element)", 1},
+                "element 1 repeats element 0 (duplicate element)", 1, RefusalCode::not_manifold},
         BadSoup{"SameOrientation", {Simplex(+1, {0, 1, 2, 3}), Simplex(+1, {0, 1, 2, 4})},
                 "elements 0 and 1 share face -<0,1,2> with the same orientation "
                 "(inconsistently oriented)",
-                1},
+                1, RefusalCode::not_manifold},
         BadSoup{"NonManifold",
                 {Simplex(+1, {0, 1, 2, 3}), Simplex(-1, {0, 1, 2, 4}), Simplex(+1, {0, 1, 2, 5})},
-                "face +<0,1,2> is shared by 3 elements (non-manifold)", 2}),
+                "face +<0,1,2> is shared by 3 elements (non-manifold)", 2, RefusalCode::not_manifold}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(AssignElements, RefusesAMeshThatHasElements) {
@@ -84,6 +86,7 @@ TEST(AssignElements, RefusesAMeshThatHasElements) {
     const auto result = mesh.assign_elements(more);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "assign_elements needs a mesh without elements");
+    EXPECT_EQ(result.code(), RefusalCode::not_applicable);
     EXPECT_TRUE(mesh.validate().ok());
 }
 
@@ -96,6 +99,7 @@ TEST(AssignElementsUnchecked, KeepsWhatValidateThenNames) {
     ASSERT_FALSE(verdict.ok());
     EXPECT_EQ(verdict.reason(),
               "invariant 7.4 (uniqueness): elements 0 and 1 have the same vertices +<0,1,2,3>");
+    EXPECT_EQ(verdict.code(), RefusalCode::invalid_mesh);
 }
 
 TEST(AssignElementsUnchecked, PinchedVertexBreaksStarConnectivity) {
@@ -109,12 +113,14 @@ TEST(AssignElementsUnchecked, PinchedVertexBreaksStarConnectivity) {
     EXPECT_EQ(refused.reason(),
               "star connectivity: the elements around vertex 0 are not connected through faces "
               "(the mesh is pinched there)");
+    EXPECT_EQ(refused.code(), RefusalCode::pinched_star);
     ASSERT_TRUE(mesh.assign_elements_unchecked(pinched).ok());
     const auto verdict = mesh.validate();
     ASSERT_FALSE(verdict.ok());
     EXPECT_EQ(verdict.reason(),
               "star connectivity: the star of vertex 0 is not face-connected (1 of its 2 elements "
               "are reachable from element 0; the mesh is pinched at this vertex)");
+    EXPECT_EQ(verdict.code(), RefusalCode::invalid_mesh);
 }
 
 TEST(AssignElementsUnchecked, NonManifoldFaceBreaksTheBoundaryMap) {
@@ -126,6 +132,7 @@ TEST(AssignElementsUnchecked, NonManifoldFaceBreaksTheBoundaryMap) {
     const auto verdict = mesh.validate();
     ASSERT_FALSE(verdict.ok());
     EXPECT_EQ(verdict.reason().rfind("invariant 7.4 (uniqueness): simplex ", 0), 0u) << verdict.reason();
+    EXPECT_EQ(verdict.code(), RefusalCode::invalid_mesh);
 }
 
 }  // namespace

@@ -71,20 +71,24 @@ TEST(ChangeElements, RefusesCollisionsAndLeavesTheMeshAlone) {
         const std::array<ElementSubstitution, 1> s{ElementSubstitution{1, {0, 2, 1, invalid_id}}};
         EXPECT_EQ(mesh.change_elements(s).reason(),
                   "element -<0,1,2> already exists as an unchanged element (invariant 7.4)");
+        EXPECT_EQ(mesh.change_elements(s).code(), RefusalCode::not_manifold);
     }
     {
         const std::array<ElementSubstitution, 1> s{ElementSubstitution{1, {0, 2, 2, invalid_id}}};
         EXPECT_EQ(mesh.change_elements(s).reason(),
                   "substitution of element 1: element +<0,2,2> repeats a vertex");
+        EXPECT_EQ(mesh.change_elements(s).code(), RefusalCode::bad_argument);
     }
     {
         const std::array<ElementSubstitution, 1> s{ElementSubstitution{5, {0, 1, 2, invalid_id}}};
         EXPECT_EQ(mesh.change_elements(s).reason(), "element 5 does not exist");
+        EXPECT_EQ(mesh.change_elements(s).code(), RefusalCode::not_found);
     }
     {
         const std::array<ElementSubstitution, 2> s{ElementSubstitution{0, {0, 1, 2, invalid_id}},
                                                    ElementSubstitution{0, {0, 1, 2, invalid_id}}};
         EXPECT_EQ(mesh.change_elements(s).reason(), "element 0 is listed twice");
+        EXPECT_EQ(mesh.change_elements(s).code(), RefusalCode::bad_argument);
     }
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.changed + watcher.boundary_added_count + watcher.boundary_removed_count, 0);

@@ -39,9 +39,12 @@ TEST(MakeKuhnCube, IsTheThesisCube) {
 
 TEST(MakeKuhnCube, RefusesBadSizes) {
     EXPECT_EQ(make_kuhn_cube(0).reason(), "make_kuhn_cube: 0 cubes per side is not in 1..1000");
+    EXPECT_EQ(make_kuhn_cube(0).code(), RefusalCode::bad_argument);
     EXPECT_EQ(make_kuhn_cube(1001).reason(), "make_kuhn_cube: 1001 cubes per side is not in 1..1000");
+    EXPECT_EQ(make_kuhn_cube(1001).code(), RefusalCode::bad_argument);
     EXPECT_EQ(make_kuhn_cube(2, 0.0).reason(),
               "make_kuhn_cube: spacing 0.000000 is not positive and finite");
+    EXPECT_EQ(make_kuhn_cube(2, 0.0).code(), RefusalCode::bad_argument);
     EXPECT_FALSE(make_kuhn_cube(2, std::numeric_limits<double>::quiet_NaN()).ok());
     EXPECT_FALSE(make_kuhn_cube(2, std::numeric_limits<double>::infinity()).ok());
 }

@@ -130,6 +130,7 @@ TEST(ReplaceElements, RefusesAnExistingFaceAndLeavesTheMeshAlone) {
         out << mesh.simplex(1);
         return out.str();
     }() + " already exists as an element that stays (invariant 7.4)");
+    EXPECT_EQ(result.code(), RefusalCode::not_manifold);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
     EXPECT_TRUE(mesh.validate().ok());
@@ -161,6 +162,7 @@ TEST(ReplaceElements, RefusesTopologicallyImpossibleFlip) {
     const auto result = mesh.replace_elements(old, flipped);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "face +<2,3> already exists in an element that stays (invariant 7.4)");
+    EXPECT_EQ(result.code(), RefusalCode::not_manifold);
     EXPECT_EQ(result.refusal().item, 0u);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added + watcher.boundary_added_count, 0);
@@ -173,27 +175,32 @@ TEST(ReplaceElements, RefusesBadArguments) {
     {
         const std::array<ElementId, 1> old{7};
         EXPECT_EQ(mesh.replace_elements(old, {}).reason(), "element 7 does not exist");
+        EXPECT_EQ(mesh.replace_elements(old, {}).code(), RefusalCode::not_found);
     }
     {
         const std::array<ElementId, 2> old{1, 1};
         EXPECT_EQ(mesh.replace_elements(old, {}).reason(), "element 1 is listed twice");
+        EXPECT_EQ(mesh.replace_elements(old, {}).code(), RefusalCode::bad_argument);
     }
     {
         const std::array<ElementId, 2> old{0, 1};
         const std::array<Simplex, 2> same{Simplex(+1, {0, 1, 3}), Simplex(+1, {1, 3, 0})};
         EXPECT_EQ(mesh.replace_elements(old, same).reason(),
                   "new elements 0 and 1 have the same vertices");
+        EXPECT_EQ(mesh.replace_elements(old, same).code(), RefusalCode::not_manifold);
     }
     {
         const std::array<ElementId, 2> old{0, 1};
         const std::array<Simplex, 2> overlap{Simplex(+1, {0, 1, 2}), Simplex(+1, {0, 1, 3})};
         EXPECT_EQ(mesh.replace_elements(old, overlap).reason(),
                   "face +<0,1> would belong to two new elements (invariant 7.4)");
+        EXPECT_EQ(mesh.replace_elements(old, overlap).code(), RefusalCode::not_manifold);
     }
     {
         const std::array<Simplex, 1> unknown{Simplex(+1, {0, 1, 4})};
         EXPECT_EQ(mesh.replace_elements({}, unknown).reason(),
                   "vertex 4 does not exist (the mesh has 4 vertices)");
+        EXPECT_EQ(mesh.replace_elements({}, unknown).code(), RefusalCode::bad_argument);
     }
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
@@ -228,6 +235,7 @@ TEST(ReplaceElements, RefusesToPinchAVertexStarInTheGrid) {
     const auto refused = mesh.replace_elements(old, std::span<const Simplex>{});
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "star connectivity: vertex 4 would be pinched (its star would fall into 2 pieces)");
+    EXPECT_EQ(refused.code(), RefusalCode::pinched_star);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
     EXPECT_TRUE(mesh.validate().ok());
@@ -248,6 +256,7 @@ TEST(ReplaceElements, RefusesToPinchAVertexStarInTheGrid) {
     const auto pinched = mesh.replace_elements(lone, std::span<const Simplex>{});
     ASSERT_FALSE(pinched.ok());
     EXPECT_EQ(pinched.reason(), "star connectivity: vertex 5 would be pinched (its star would fall into 2 pieces)");
+    EXPECT_EQ(pinched.code(), RefusalCode::pinched_star);
     expect_same_state(mesh, flipped_state);
     EXPECT_TRUE(mesh.validate().ok());
 }
@@ -264,6 +273,7 @@ TEST(ReplaceElements, RefusesToPinchAVertexStarInTheKuhnCube) {
     const auto refused = mesh.replace_elements(old, std::span<const Simplex>{});
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "star connectivity: vertex 0 would be pinched (its star would fall into 2 pieces)");
+    EXPECT_EQ(refused.code(), RefusalCode::pinched_star);
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
 

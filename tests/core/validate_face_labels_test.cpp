@@ -28,6 +28,7 @@ TEST(ValidateFaceLabels, NamesALabelOfAMissingFace) {
     const auto checked = mesh.validate();
     ASSERT_FALSE(checked.ok());
     EXPECT_EQ(checked.reason(), "face label: label 7 names +<1,3>, which is not a face of the mesh");
+    EXPECT_EQ(checked.code(), RefusalCode::invalid_mesh);
 }
 
 TEST(ValidateFaceLabels, TetrahedralFaces) {
@@ -41,6 +42,7 @@ TEST(ValidateFaceLabels, TetrahedralFaces) {
     const auto checked = mesh.validate();
     ASSERT_FALSE(checked.ok());
     EXPECT_EQ(checked.reason().rfind("face label: label 5 names +<0,1,6>", 0), 0u) << checked.reason();
+    EXPECT_EQ(checked.code(), RefusalCode::invalid_mesh);
 }
 
 }  // namespace

@@ -61,20 +61,25 @@ TEST(VertexAttributes, RefusesBadRegistrationsAndUnknownRemovals) {
     const auto duplicate = mesh.add_vertex_attribute("temperature", 1);
     ASSERT_FALSE(duplicate.ok());
     EXPECT_EQ(duplicate.reason(), "add_vertex_attribute: an attribute called \"temperature\" exists");
+    EXPECT_EQ(duplicate.code(), RefusalCode::not_applicable);
     const auto unnamed = mesh.add_vertex_attribute("", 1);
     ASSERT_FALSE(unnamed.ok());
     EXPECT_EQ(unnamed.reason(), "add_vertex_attribute: the name is empty");
+    EXPECT_EQ(unnamed.code(), RefusalCode::bad_argument);
     const auto empty = mesh.add_vertex_attribute("nothing", 0);
     ASSERT_FALSE(empty.ok());
     EXPECT_EQ(empty.reason(), "add_vertex_attribute: \"nothing\" needs at least one component, not 0");
+    EXPECT_EQ(empty.code(), RefusalCode::bad_argument);
     const auto mismatch = mesh.add_vertex_attribute("velocity", 3, two);
     ASSERT_FALSE(mismatch.ok());
     EXPECT_EQ(mismatch.reason(),
               "add_vertex_attribute: \"velocity\" has 3 components but a default value of 2");
+    EXPECT_EQ(mismatch.code(), RefusalCode::bad_argument);
     EXPECT_EQ(mesh.vertex_attributes().size(), 1u);
     const auto unknown = mesh.remove_vertex_attribute(7);
     ASSERT_FALSE(unknown.ok());
     EXPECT_EQ(unknown.reason(), "remove_vertex_attribute: 7 is not a vertex attribute");
+    EXPECT_EQ(unknown.code(), RefusalCode::not_found);
 }
 
 TEST(VertexAttributes, RemovalKeepsOtherIdsAndFreesTheName) {
@@ -143,13 +148,16 @@ TEST(VertexAttributes, InterpolatedVertexRefusesBadParents) {
     const auto unknown = mesh.add_interpolated_vertex(parents, weights);
     ASSERT_FALSE(unknown.ok());
     EXPECT_EQ(unknown.reason(), "add_interpolated_vertex: parent 9 is not a vertex");
+    EXPECT_EQ(unknown.code(), RefusalCode::not_found);
     EXPECT_EQ(unknown.refusal().item, 1u);
     const auto sizes = mesh.add_interpolated_vertex(parents, one_weight);
     ASSERT_FALSE(sizes.ok());
     EXPECT_EQ(sizes.reason(), "add_interpolated_vertex: 2 parents but 1 weights");
+    EXPECT_EQ(sizes.code(), RefusalCode::bad_argument);
     const auto none = mesh.add_interpolated_vertex({}, {});
     ASSERT_FALSE(none.ok());
     EXPECT_EQ(none.reason(), "add_interpolated_vertex: 0 parents but 0 weights");
+    EXPECT_EQ(none.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     EXPECT_EQ(mesh.vertex_attribute(0, 3).size(), 1u);
 }
@@ -170,11 +178,13 @@ TEST(VertexAttributes, RemoveLastVertexUndoesAddVertexOnly) {
     const auto refused = mesh.remove_last_vertex();
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "remove_last_vertex: vertex 3 is in element 1");
+    EXPECT_EQ(refused.code(), RefusalCode::not_applicable);
     expect_same_state(mesh, before);
     Mesh empty(2, 2);
     const auto nothing = empty.remove_last_vertex();
     ASSERT_FALSE(nothing.ok());
     EXPECT_EQ(nothing.reason(), "remove_last_vertex: the mesh has no vertex");
+    EXPECT_EQ(nothing.code(), RefusalCode::not_found);
     EXPECT_TRUE(mesh.validate().ok());
 }
 

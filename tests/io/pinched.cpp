@@ -109,6 +109,7 @@ TEST(PinchedVertices, LenientReadKeepsThemForValidate) {
     EXPECT_EQ(mesh.validate().reason(),
               "star connectivity: the star of vertex 0 is not face-connected (2 of its 3 elements "
               "are reachable from element 0; the mesh is pinched at this vertex)");
+    EXPECT_EQ(mesh.validate().code(), RefusalCode::invalid_mesh);
 }
 
 TEST(PinchedVertices, NoReportNoSplitWithoutPinchedVertices) {

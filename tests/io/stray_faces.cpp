@@ -67,6 +67,7 @@ TEST(StrayFaces, ALenientReadKeepsThemForValidate) {
     const Outcome<Done> valid = mesh.validate();
     ASSERT_FALSE(valid.ok());
     EXPECT_EQ(valid.reason().rfind("face label: label 2 names ", 0), 0u) << valid.reason();
+    EXPECT_EQ(valid.code(), RefusalCode::invalid_mesh);
 }
 
 }  // namespace

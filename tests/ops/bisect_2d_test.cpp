@@ -120,24 +120,26 @@ TEST(Bisect2d, SimpleBisectOfTheHypotenuse) {
     EXPECT_TRUE(test::all_strictly_positive(mesh));
 }
 
-void expect_simple_bisect_refused(Mesh& mesh, VertexId p, VertexId q, const std::string& reason) {
+void expect_simple_bisect_refused(Mesh& mesh, VertexId p, VertexId q, RefusalCode code,
+                          const std::string& reason) {
     const Mesh before = mesh;
     const auto split = simple_bisect(mesh, p, q);
     ASSERT_FALSE(split.ok());
     EXPECT_EQ(split.reason(), reason);
+    EXPECT_EQ(split.code(), code);
     expect_same_state(mesh, before);
 }
 
 TEST(Bisect2d, SimpleBisectRefusals) {
     Mesh mesh = test::planar_grid(1);
     expect_simple_bisect_refused(
-        mesh, 0, 1,
+        mesh, 0, 1, RefusalCode::not_applicable,
         "simple_bisect: +<0,1> is not the hypotenuse of element 0 (its hypotenuse is +<0,3>)");
-    expect_simple_bisect_refused(mesh, 1, 2, "simple_bisect: +<1,2> is not an edge");
-    expect_simple_bisect_refused(mesh, 0, 9, "simple_bisect: 9 is not a vertex");
-    expect_simple_bisect_refused(mesh, 2, 2, "simple_bisect: the two ends are the same vertex");
+    expect_simple_bisect_refused(mesh, 1, 2, RefusalCode::not_found, "simple_bisect: +<1,2> is not an edge");
+    expect_simple_bisect_refused(mesh, 0, 9, RefusalCode::not_found, "simple_bisect: 9 is not a vertex");
+    expect_simple_bisect_refused(mesh, 2, 2, RefusalCode::bad_argument, "simple_bisect: the two ends are the same vertex");
     Mesh cube = test::kuhn_cube(1);
-    expect_simple_bisect_refused(cube, 0, 7,
+    expect_simple_bisect_refused(cube, 0, 7, RefusalCode::wrong_dimension,
                                  "simple_bisect: needs a triangle mesh (topological dimension 2)");
 }
 
@@ -212,21 +214,23 @@ TEST(Bisect2d, BisectEdgeOnASurfaceInSpace) {
     EXPECT_EQ(mesh.boundary_face_count(), 0u);
 }
 
-void expect_bisect_refused(Mesh& mesh, VertexId p, VertexId q, const std::string& reason) {
+void expect_bisect_refused(Mesh& mesh, VertexId p, VertexId q, RefusalCode code,
+                          const std::string& reason) {
     const Mesh before = mesh;
     const auto bisected = bisect_edge(mesh, p, q);
     ASSERT_FALSE(bisected.ok());
     EXPECT_EQ(bisected.reason(), reason);
+    EXPECT_EQ(bisected.code(), code);
     expect_same_state(mesh, before);
 }
 
 TEST(Bisect2d, BisectEdgeRefusals) {
     Mesh mesh = test::planar_grid(2);
-    expect_bisect_refused(mesh, 0, 8, "bisect_edge: +<0,8> is not an edge");
-    expect_bisect_refused(mesh, 0, 9, "bisect_edge: 9 is not a vertex");
-    expect_bisect_refused(mesh, 3, 3, "bisect_edge: the two ends are the same vertex");
+    expect_bisect_refused(mesh, 0, 8, RefusalCode::not_found, "bisect_edge: +<0,8> is not an edge");
+    expect_bisect_refused(mesh, 0, 9, RefusalCode::not_found, "bisect_edge: 9 is not a vertex");
+    expect_bisect_refused(mesh, 3, 3, RefusalCode::bad_argument, "bisect_edge: the two ends are the same vertex");
     Mesh cube = test::kuhn_cube(1);
-    expect_bisect_refused(cube, 0, 7,
+    expect_bisect_refused(cube, 0, 7, RefusalCode::wrong_dimension,
                           "bisect_edge: needs a triangle mesh (topological dimension 2)");
 }
 
@@ -248,6 +252,7 @@ TEST(Bisect2d, BisectEdgeIsATransactionAcrossItsSplits) {
     // vertex 10: the refused split is the second one planned (9 went to 0-4)
     EXPECT_EQ(bisected.reason(),
               "bisect_edge: new element +<2,5,10> would be flat in the deformed positions");
+    EXPECT_EQ(bisected.code(), RefusalCode::would_flatten);
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
 }
@@ -278,34 +283,36 @@ TEST(Bisect2d, RefineAroundAPoint) {
     EXPECT_EQ(again->element, refined->element);
 }
 
-void expect_refine_refused(Mesh& mesh, const Point& x, double h, const std::string& reason) {
+void expect_refine_refused(Mesh& mesh, const Point& x, double h, RefusalCode code,
+                          const std::string& reason) {
     const Mesh before = mesh;
     const auto refined = refine_around(mesh, x, h);
     ASSERT_FALSE(refined.ok());
     EXPECT_EQ(refined.reason(), reason);
+    EXPECT_EQ(refined.code(), code);
     expect_same_state(mesh, before);
 }
 
 TEST(Bisect2d, RefineAroundRefusals) {
     Mesh mesh = test::planar_grid(2);
-    expect_refine_refused(mesh, {2, 3, 0}, 0.5, "refine_around: point (2, 3) is not in the mesh");
-    expect_refine_refused(mesh, {-0.25, 1, 0}, 0.5,
+    expect_refine_refused(mesh, {2, 3, 0}, 0.5, RefusalCode::not_found, "refine_around: point (2, 3) is not in the mesh");
+    expect_refine_refused(mesh, {-0.25, 1, 0}, 0.5, RefusalCode::not_found,
                           "refine_around: point (-0.25, 1) is not in the mesh");
-    expect_refine_refused(mesh, {NAN, 1, 0}, 0.5,
+    expect_refine_refused(mesh, {NAN, 1, 0}, 0.5, RefusalCode::not_found,
                           "refine_around: point (nan, 1) is not in the mesh");
-    expect_refine_refused(mesh, {1, 1, 0}, 0, "refine_around: size h = 0 is not a positive number");
-    expect_refine_refused(mesh, {1, 1, 0}, -1,
+    expect_refine_refused(mesh, {1, 1, 0}, 0, RefusalCode::bad_argument, "refine_around: size h = 0 is not a positive number");
+    expect_refine_refused(mesh, {1, 1, 0}, -1, RefusalCode::bad_argument,
                           "refine_around: size h = -1 is not a positive number");
-    expect_refine_refused(mesh, {1, 1, 0}, NAN,
+    expect_refine_refused(mesh, {1, 1, 0}, NAN, RefusalCode::bad_argument,
                           "refine_around: size h = nan is not a positive number");
     Mesh cube = test::kuhn_cube(1);
-    expect_refine_refused(cube, {0.5, 0.5, 0.5}, 0.1,
+    expect_refine_refused(cube, {0.5, 0.5, 0.5}, 0.1, RefusalCode::wrong_dimension,
                           "refine_around: tetrahedral meshes use refine_around_tetrahedra");
     Mesh surface(2, 3);
     for (const Point& p : {Point{0, 0, 0}, Point{1, 0, 0}, Point{0, 1, 0}})
         surface.add_vertex(p);
     ASSERT_TRUE(surface.assign_elements(std::array<Simplex, 1>{Simplex(+1, {0, 1, 2})}).ok());
-    expect_refine_refused(surface, {0.1, 0.1, 0}, 0.1,
+    expect_refine_refused(surface, {0.1, 0.1, 0}, 0.1, RefusalCode::wrong_dimension,
                           "refine_around: needs a planar triangle mesh (ambient dimension 2)");
 }
 
@@ -319,6 +326,7 @@ TEST(Bisect2d, RefineAroundIsATransactionAcrossItsBisections) {
     // vertex 11: two bisections were planned before the refused one
     EXPECT_EQ(refined.reason(),
               "refine_around: new element +<2,5,11> would be flat in the deformed positions");
+    EXPECT_EQ(refined.code(), RefusalCode::would_flatten);
     expect_same_state(mesh, before);
 }
 

@@ -86,6 +86,7 @@ TEST(CollapseEdge, ToAPointMovesTheSurvivor) {
     EXPECT_EQ(moved.reason(), "collapse_edge: boundary face " + test::text(Simplex(+1, {2, 5})) +
                                   " would leave its line in the reference positions: the"
                                   " collapse would move the boundary");
+    EXPECT_EQ(moved.code(), RefusalCode::moves_boundary);
     expect_same_state(grid, before);
 }
 
@@ -115,6 +116,7 @@ TEST(CollapseEdge, RefusesTheLinkConditionViolation) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: " + test::text(Simplex(+1, {0, 1})) +
                                    " violates the link condition (the result would not be a manifold)");
+    EXPECT_EQ(result.code(), RefusalCode::link_condition);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -149,6 +151,7 @@ TEST(CollapseEdge, RefusesAnInvertingCollapseInEitherPositions) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: element " + test::text(Simplex(+1, {3, 1, 2})) +
                                    " would be inverted in the reference positions");
+    EXPECT_EQ(result.code(), RefusalCode::would_invert);
     expect_same_state(mesh, before);
 
     mesh = reflex_fan({0, 2, 0}, {0, 0.2, 0});
@@ -158,6 +161,7 @@ TEST(CollapseEdge, RefusesAnInvertingCollapseInEitherPositions) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: element " + test::text(Simplex(+1, {3, 1, 2})) +
                                    " would be inverted in the deformed positions");
+    EXPECT_EQ(result.code(), RefusalCode::would_invert);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -171,6 +175,7 @@ TEST(CollapseEdge, RefusesToMoveTheBoundary) {
     EXPECT_EQ(result.reason(), "collapse_edge: " + test::text(Simplex(+1, {1, 4})) +
                                    " is interior but vertex 1 is on the boundary: the collapse"
                                    " would move the boundary");
+    EXPECT_EQ(result.code(), RefusalCode::moves_boundary);
     expect_same_state(mesh, before);
     // the corner 0 along the bottom edge onto 1: the left side would tilt
     result = collapse_edge(mesh, 0, 1);
@@ -178,6 +183,7 @@ TEST(CollapseEdge, RefusesToMoveTheBoundary) {
     EXPECT_EQ(result.reason(), "collapse_edge: boundary face " + test::text(Simplex(+1, {3, 0})) +
                                    " would leave its line in the reference positions: the"
                                    " collapse would move the boundary");
+    EXPECT_EQ(result.code(), RefusalCode::moves_boundary);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -197,6 +203,7 @@ TEST(CollapseEdge, BoundaryToleranceAllowsASmallMoveOfTheBoundary) {
     EXPECT_EQ(exact.reason(), "collapse_edge: boundary face " + test::text(Simplex(+1, {0, 1})) +
                                   " would leave its line in the reference positions: the"
                                   " collapse would move the boundary");
+    EXPECT_EQ(exact.code(), RefusalCode::moves_boundary);
     expect_same_state(mesh, before);
     // 2 lies about 2 * lift from the line 0-1, whose length is half the side: relative 0.004
     auto too_tight = collapse_edge(mesh, 1, 2, CollapseOptions{0.001});
@@ -205,6 +212,7 @@ TEST(CollapseEdge, BoundaryToleranceAllowsASmallMoveOfTheBoundary) {
     auto bad = collapse_edge(mesh, 1, 2, CollapseOptions{-1});
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.reason(), "collapse_edge: boundary tolerance must be in [0, 1)");
+    EXPECT_EQ(bad.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     auto tolerant = collapse_edge(mesh, 1, 2, CollapseOptions{0.01});
     ASSERT_TRUE(tolerant.ok()) << tolerant.reason();
@@ -218,12 +226,15 @@ TEST(CollapseEdge, RefusesWhatIsNotAnEdge) {
     auto result = collapse_edge(mesh, 0, 8);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: " + test::text(Simplex(+1, {0, 8})) + " is not an edge");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     result = collapse_edge(mesh, 4, 4);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: the two ends are the same vertex");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     result = collapse_edge(mesh, 4, 99);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: 99 is not a vertex");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
 }
 
@@ -236,6 +247,7 @@ TEST(CollapseEdge, RefusesFlatTetrahedra) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: element " + test::text(Simplex(-1, {0, 1, 3, 4})) +
                                    " would be flat in the reference positions");
+    EXPECT_EQ(result.code(), RefusalCode::would_flatten);
     expect_same_state(mesh, before);
     // while the corner 0 is fine: star(13) is star-shaped around it
     ASSERT_TRUE(collapse_edge(mesh, 13, 0).ok());
@@ -280,6 +292,9 @@ void random_splits_and_collapses(Mesh mesh, int operations) {
                 // a nearly flat parent); the mesh must be untouched
                 ++refusals;
                 EXPECT_NE(result.reason().find(" would be "), std::string::npos) << result.reason();
+                EXPECT_TRUE(result.code() == RefusalCode::would_flatten ||
+                            result.code() == RefusalCode::would_invert)
+                    << to_string(result.code());
                 expect_same_state(mesh, before);
                 if (::testing::Test::HasFailure()) FAIL() << "step " << step << ": " << result.reason();
                 continue;

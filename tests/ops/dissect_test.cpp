@@ -142,6 +142,7 @@ TEST(Dissect, RefusesAFaceOfTheWrongSize) {
     const auto result = dissect(mesh, cut);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "dissect: cut face 1 has 3 vertices, not 2");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     EXPECT_EQ(result.refusal().item, 1u);
     expect_same_state(mesh, before);
 }
@@ -153,6 +154,7 @@ TEST(Dissect, RefusesAFaceNotInTheMesh) {
     const auto result = dissect(mesh, cut);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "dissect: cut face 0 +<1,3> is not a face of the mesh");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
 }
 
@@ -163,6 +165,7 @@ TEST(Dissect, RefusesAnUnknownVertex) {
     const auto result = dissect(mesh, cut);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "dissect: cut face 0 +<0,9> has a repeated or unknown vertex");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
 }
 

@@ -81,6 +81,7 @@ TEST(Flip23, RefusesABoundaryFace) {
                                        return out.str();
                                    }() +
                                    " is on the boundary");
+    EXPECT_EQ(result.code(), RefusalCode::not_applicable);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -97,6 +98,7 @@ TEST(Flip23, RefusesANonConvexPair) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(),
               "flip_23: new tetrahedron -<0,1,2,4> would be inverted in the reference positions");
+    EXPECT_EQ(result.code(), RefusalCode::would_invert);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
     ASSERT_TRUE(mesh.validate().ok());
@@ -116,6 +118,7 @@ TEST(Flip23, RefusesWhenOnlyTheDeformedPairIsNonConvex) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(),
               "flip_23: new tetrahedron -<0,1,2,4> would be inverted in the deformed positions");
+    EXPECT_EQ(result.code(), RefusalCode::would_invert);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -131,6 +134,7 @@ TEST(Flip23, RefusesAnExistingEdge) {
     const auto result = flip_23(mesh, inner, {.topology_only = true});
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_23: edge +<2,3> already exists");
+    EXPECT_EQ(result.code(), RefusalCode::not_manifold);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -145,6 +149,7 @@ TEST(Flip23, RefusesAMaterialInterface) {
     const auto result = flip_23(mesh, test::shared_face(mesh));
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_23: elements have different labels (a material interface)");
+    EXPECT_EQ(result.code(), RefusalCode::label_conflict);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
     ASSERT_TRUE(mesh.validate().ok());
@@ -168,6 +173,7 @@ TEST(Flip23, RefusesALabelledFace) {
     EXPECT_EQ(result.reason(), "flip_23: face " + to_text(Simplex(+1, shared.vertices())) +
                                    " carries label 4 (a constraint: an interface or a boundary "
                                    "patch)");
+    EXPECT_EQ(result.code(), RefusalCode::label_conflict);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -178,6 +184,7 @@ TEST(Flip23, RefusesATriangleMesh) {
     const auto result = flip_23(mesh, mesh.face(0, 0));
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_23: needs a tetrahedral mesh");
+    EXPECT_EQ(result.code(), RefusalCode::wrong_dimension);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }

@@ -42,6 +42,7 @@ TEST(Flip32, RefusesABoundaryEdge) {
     const auto result = flip_32(mesh, entry, j);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_32: edge +<1,2> is on the boundary");
+    EXPECT_EQ(result.code(), RefusalCode::not_applicable);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -56,10 +57,12 @@ TEST(Flip32, RefusesDegreeOtherThanThree) {
     const auto result = flip_32(mesh, entry, j);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_32: edge +<0,13> has degree 6, not 3");
+    EXPECT_EQ(result.code(), RefusalCode::not_applicable);
     const auto [inner, k] = test::edge_entry(mesh, 13, 26);
     const auto six = flip_32(mesh, inner, k);
     ASSERT_FALSE(six.ok());
     EXPECT_EQ(six.reason(), "flip_32: edge +<13,26> has degree 6, not 3");
+    EXPECT_EQ(six.code(), RefusalCode::not_applicable);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -93,6 +96,7 @@ TEST(Flip32, RefusesAnExistingTriangle) {
     const auto result = flip_32(mesh, entry, j, {.topology_only = true});
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_32: triangle +<1,2,3> already exists");
+    EXPECT_EQ(result.code(), RefusalCode::not_manifold);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
     ASSERT_TRUE(mesh.validate().ok());
@@ -112,6 +116,7 @@ TEST(Flip32, RefusesAMaterialInterface) {
     const auto result = flip_32(mesh, entry, j);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_32: elements have different labels (a material interface)");
+    EXPECT_EQ(result.code(), RefusalCode::label_conflict);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
     ASSERT_TRUE(mesh.validate().ok());
@@ -137,6 +142,7 @@ TEST(Flip32, RefusesANonConvexRing) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(),
               "flip_32: new tetrahedron -<0,1,2,3> would be inverted in the deformed positions");
+    EXPECT_EQ(result.code(), RefusalCode::would_invert);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }

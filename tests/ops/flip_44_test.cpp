@@ -94,10 +94,12 @@ TEST(Flip44, RefusesBoundaryEdgesAndOtherDegrees) {
     const auto boundary = flip_44(mesh, hull_entry, hull_j, 0);
     ASSERT_FALSE(boundary.ok());
     EXPECT_EQ(boundary.reason(), "flip_44: edge +<1,2> is on the boundary");
+    EXPECT_EQ(boundary.code(), RefusalCode::not_applicable);
     const auto [entry, j] = test::edge_entry(mesh, 0, 5);
     const auto bad = flip_44(mesh, entry, j, 2);
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.reason(), "flip_44: diagonal 2 is not 0 or 1");
+    EXPECT_EQ(bad.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 
@@ -107,6 +109,7 @@ TEST(Flip44, RefusesBoundaryEdgesAndOtherDegrees) {
     const auto six = flip_44(cube, e, k, 0);
     ASSERT_FALSE(six.ok());
     EXPECT_EQ(six.reason(), "flip_44: edge +<0,13> has degree 6, not 4");
+    EXPECT_EQ(six.code(), RefusalCode::not_applicable);
     expect_same_state(cube, cube_before);
     ASSERT_TRUE(cube.validate().ok());
 }
@@ -124,6 +127,7 @@ TEST(Flip44, RefusesAMaterialInterface) {
         const auto result = flip_44(mesh, entry, j, diagonal);
         ASSERT_FALSE(result.ok());
         EXPECT_EQ(result.reason(), "flip_44: elements have different labels (a material interface)");
+        EXPECT_EQ(result.code(), RefusalCode::label_conflict);
     }
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.added, 0);
@@ -155,6 +159,8 @@ TEST(Flip44, RefusesTheDiagonalOutsideANonConvexRing) {
             EXPECT_TRUE(trial.simplex((*result)[0]).contains(1));
         } else {
             EXPECT_EQ(result.reason().rfind("flip_44: new tetrahedron ", 0), 0u) << result.reason();
+            EXPECT_TRUE(result.code() == RefusalCode::would_invert || result.code() == RefusalCode::would_flatten)
+                << to_string(result.code());
             expect_same_state(trial, mesh);
             ASSERT_TRUE(trial.validate().ok());
         }

@@ -129,6 +129,7 @@ TEST(FlipEdge, RefusesBoundaryEdge) {
     auto flipped = flip_edge(mesh, find_edge(mesh, 0, 1));
     ASSERT_FALSE(flipped.ok());
     EXPECT_EQ(flipped.reason(), "flip_edge: edge {0,1} is on the boundary");
+    EXPECT_EQ(flipped.code(), RefusalCode::not_applicable);
     EXPECT_EQ(watcher.removed + watcher.added + watcher.changed, 0);
     mesh.remove_watcher(watcher);
     expect_same_state(mesh, copy);
@@ -146,6 +147,7 @@ TEST(FlipEdge, RefusesAMaterialInterface) {
     auto flipped = flip_edge(mesh, find_edge(mesh, 0, 2));
     ASSERT_FALSE(flipped.ok());
     EXPECT_EQ(flipped.reason(), "flip_edge: elements have different labels (a material interface)");
+    EXPECT_EQ(flipped.code(), RefusalCode::label_conflict);
     EXPECT_EQ(watcher.removed + watcher.added + watcher.changed, 0);
     mesh.remove_watcher(watcher);
     expect_same_state(mesh, copy);
@@ -172,6 +174,7 @@ TEST(FlipEdge, RefusesALabelledEdge) {
     EXPECT_EQ(flipped.reason(),
               "flip_edge: face +<0,2> carries label 9 (a constraint: an interface or a boundary "
               "patch)");
+    EXPECT_EQ(flipped.code(), RefusalCode::label_conflict);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 
@@ -188,10 +191,12 @@ TEST(FlipEdge, RefusesTopologicallyImpossibleFlipAtDegreeThreeVertex) {
     EXPECT_EQ(flipped.reason(),
               "flip_edge: new edge {1,2} already exists (thesis Fig. 5.9), flipping edge {0,3} is "
               "topologically impossible");
+    EXPECT_EQ(flipped.code(), RefusalCode::not_manifold);
     // even when the caller waives geometry
     auto waived = flip_edge(mesh, find_edge(mesh, 0, 3), FlipOptions{.topology_only = true});
     ASSERT_FALSE(waived.ok());
     EXPECT_EQ(waived.reason(), flipped.reason());
+    EXPECT_EQ(waived.code(), flipped.code());
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -202,6 +207,7 @@ TEST(FlipEdge, RefusesNonConvexQuadrilateral) {
     auto flipped = flip_edge(mesh, find_edge(mesh, 0, 2));
     ASSERT_FALSE(flipped.ok());
     EXPECT_EQ(flipped.reason(), "flip_edge: new triangle {1,2,3} would be inverted in the reference positions");
+    EXPECT_EQ(flipped.code(), RefusalCode::would_invert);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -220,6 +226,7 @@ TEST(FlipEdge, RefusesFlatTriangle) {
     auto flipped = flip_edge(mesh, find_edge(mesh, 0, 2));
     ASSERT_FALSE(flipped.ok());
     EXPECT_EQ(flipped.reason(), "flip_edge: new triangle {1,2,3} would be flat in the reference positions");
+    EXPECT_EQ(flipped.code(), RefusalCode::would_flatten);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -231,6 +238,7 @@ TEST(FlipEdge, ChecksDeformedPositionsToo) {
     auto flipped = flip_edge(mesh, find_edge(mesh, 0, 2));
     ASSERT_FALSE(flipped.ok());
     EXPECT_EQ(flipped.reason(), "flip_edge: new triangle {1,2,3} would be inverted in the deformed positions");
+    EXPECT_EQ(flipped.code(), RefusalCode::would_invert);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -241,6 +249,7 @@ TEST(FlipEdge, RefusesTetrahedralMesh) {
     auto flipped = flip_edge(mesh, 0);
     ASSERT_FALSE(flipped.ok());
     EXPECT_EQ(flipped.reason(), "flip_edge: needs a triangle mesh (topological dimension 2), this one has dimension 3");
+    EXPECT_EQ(flipped.code(), RefusalCode::wrong_dimension);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -275,6 +284,7 @@ TEST(FlipEdgeSurface, RefusesEveryEdgeOfTetrahedronSurface) {
     EXPECT_EQ(flipped.reason(),
               "flip_edge: new edge {2,3} already exists (thesis Fig. 5.9), flipping edge {0,1} is "
               "topologically impossible");
+    EXPECT_EQ(flipped.code(), RefusalCode::not_manifold);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -294,6 +304,7 @@ TEST(FlipEdgeSurface, RefusesFolding) {
     EXPECT_EQ(flipped.reason(),
               "flip_edge: flipping edge {0,1} to {2,3} would fold the surface (the new triangles' "
               "normals are opposite) in the reference positions");
+    EXPECT_EQ(flipped.code(), RefusalCode::would_invert);
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -317,6 +328,7 @@ TEST(FlipEdgeSurface, RefusesCollinearTriangleEvenWithTopologyOnly) {
         EXPECT_EQ(flipped.reason(),
                   "flip_edge: new triangle {0,2,3} would be degenerate (collinear vertices) in the "
                   "reference positions");
+        EXPECT_EQ(flipped.code(), RefusalCode::would_flatten);
     }
     expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());

@@ -87,6 +87,7 @@ TEST(FlipEmbedding, TopologyOnlyFlipsStillSearch) {
     const auto result = flip_23(mesh, inner, options);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "flip_23: edge +<2,3> already exists");
+    EXPECT_EQ(result.code(), RefusalCode::not_manifold);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }

@@ -145,6 +145,7 @@ TEST(MakeDelaunayByFlips, RefusesSurfaceMesh) {
     ASSERT_FALSE(flips.ok());
     EXPECT_EQ(flips.reason(),
               "make_delaunay_by_flips: needs a planar triangle mesh (topological and ambient dimension 2)");
+    EXPECT_EQ(flips.code(), RefusalCode::wrong_dimension);
     test::expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -158,6 +159,7 @@ TEST(MakeDelaunayByFlips, RefusesClockwiseTriangle) {
     const ElementId clockwise = mesh.face_element(find_edge(mesh, 2, 3));
     EXPECT_EQ(flips.reason(), "make_delaunay_by_flips: element " + std::to_string(clockwise) +
                                   " is not counter-clockwise in the deformed positions");
+    EXPECT_EQ(flips.code(), RefusalCode::not_applicable);
     test::expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
 }

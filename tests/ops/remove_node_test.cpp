@@ -202,11 +202,12 @@ TEST(RemoveNode, JitteredDelaunayGridStaysDelaunay) {
 
 // ---- refusals: exact reason, state unchanged -------------------------------------------------
 
-void expect_refused(Mesh& mesh, VertexId v, const std::string& reason) {
+void expect_refused(Mesh& mesh, VertexId v, RefusalCode code, const std::string& reason) {
     const Mesh before = mesh;
     const auto removed = remove_node(mesh, v);
     ASSERT_FALSE(removed.ok());
     EXPECT_EQ(removed.reason(), reason);
+    EXPECT_EQ(removed.code(), code);
     expect_same_state(mesh, before);
     EXPECT_EQ(mesh.face_labels(), before.face_labels());
     EXPECT_TRUE(mesh.validate().ok());
@@ -214,21 +215,21 @@ void expect_refused(Mesh& mesh, VertexId v, const std::string& reason) {
 
 TEST(RemoveNode, RefusesWhatIsNotARemovableVertex) {
     Mesh mesh = test::unit_square();
-    expect_refused(mesh, 99, "remove_node: 99 is not a vertex");
-    expect_refused(mesh, 0,
+    expect_refused(mesh, 99, RefusalCode::not_found, "remove_node: 99 is not a vertex");
+    expect_refused(mesh, 0, RefusalCode::moves_boundary,
                    "remove_node: vertex 0 is on the boundary and the boundary is not straight "
                    "there (its removal "
                    "would change the domain)");
     mesh.add_vertex({5, 5, 0});
-    expect_refused(mesh, 4, "remove_node: vertex 4 is in no element");
+    expect_refused(mesh, 4, RefusalCode::not_applicable, "remove_node: vertex 4 is in no element");
     Mesh grid = test::planar_grid(3);
-    expect_refused(grid, 3,
+    expect_refused(grid, 3, RefusalCode::moves_boundary,
                    "remove_node: vertex 3 is on the boundary and the boundary is not straight "
                    "there (its removal "
                    "would change the domain)");
     // straight in the reference positions only
     grid.set_deformed(1, {1, -0.25, 0});
-    expect_refused(grid, 1,
+    expect_refused(grid, 1, RefusalCode::moves_boundary,
                    "remove_node: vertex 1 is on the boundary and the boundary is not straight "
                    "there (its removal "
                    "would change the domain)");
@@ -263,18 +264,18 @@ TEST(RemoveNode, RefusesBoundaryEdgesWithDifferentFaceLabels) {
     Mesh mesh = test::planar_grid(3);
     mesh.face_labels()[Simplex(+1, {0, 1})] = 7;
     expect_refused(
-        mesh, 1,
+        mesh, 1, RefusalCode::label_conflict,
         "remove_node: the boundary edges at vertex 1 carry different face labels (7 and none)");
     mesh.face_labels()[Simplex(+1, {1, 2})] = 8;
     expect_refused(
-        mesh, 1,
+        mesh, 1, RefusalCode::label_conflict,
         "remove_node: the boundary edges at vertex 1 carry different face labels (7 and 8)");
 }
 
 TEST(RemoveNode, RefusesTetrahedraAndSurfaces) {
     Mesh cube = test::kuhn_cube(2);
     expect_refused(
-        cube, 13,
+        cube, 13, RefusalCode::wrong_dimension,
         "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)");
     Mesh surface(2, 3);
     for (const Point& p : {Point{0, 0, 0}, Point{1, 0, 0}, Point{0, 1, 0}, Point{0, 0, 1}})
@@ -283,7 +284,7 @@ TEST(RemoveNode, RefusesTetrahedraAndSurfaces) {
                                        Simplex(+1, {1, 2, 3}), Simplex(+1, {0, 3, 2})};
     ASSERT_TRUE(surface.assign_elements(faces).ok());
     expect_refused(
-        surface, 0,
+        surface, 0, RefusalCode::wrong_dimension,
         "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)");
 }
 
@@ -292,7 +293,7 @@ TEST(RemoveNode, RefusesMixedLabels) {
     const std::vector<ElementId> around = star(mesh, 12);
     mesh.set_label(around[2], 5);
     mesh.set_label(around[4], -1);
-    expect_refused(mesh, 12, "remove_node: the star of vertex 12 mixes element labels -1 and 5");
+    expect_refused(mesh, 12, RefusalCode::label_conflict, "remove_node: the star of vertex 12 mixes element labels -1 and 5");
 }
 
 // The interior edge from v = 12 = (2,2) to (3,2) carries a face label (say an interface drawn
@@ -301,7 +302,7 @@ TEST(RemoveNode, RefusesALabelledInteriorEdge) {
     Mesh mesh = test::planar_grid(4);
     mesh.face_labels()[Simplex(+1, {12, 13})] = 6;
     ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
-    expect_refused(mesh, 12,
+    expect_refused(mesh, 12, RefusalCode::label_conflict,
                    "remove_node: the edge +<12,13> at vertex 12 carries face label 6 (a constraint)");
 }
 
@@ -315,7 +316,7 @@ TEST(RemoveNode, RefusesAStarInvertedInTheDeformedPositions) {
             inverted = t;
     ASSERT_NE(inverted, invalid_id);
     expect_refused(
-        mesh, 12,
+        mesh, 12, RefusalCode::not_applicable,
         "remove_node: element " + std::to_string(inverted) +
             " of the star of vertex 12 is not counter-clockwise in the deformed positions");
 }
@@ -336,7 +337,7 @@ TEST(RemoveNode, RefusesWhenNoEarIsValidInBothPositionSets) {
     for (VertexId i = 0; i < 4; ++i)
         mesh.set_deformed(i + 1, ring[(i + 3) % 4]);
     ASSERT_TRUE(test::all_strictly_positive(mesh));
-    expect_refused(mesh, 0,
+    expect_refused(mesh, 0, RefusalCode::not_applicable,
                    "remove_node: no ear of the link of vertex 0 is valid in both the reference and "
                    "the deformed positions");
 }

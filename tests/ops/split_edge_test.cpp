@@ -105,20 +105,25 @@ TEST(SplitEdge, RefusesWhatIsNotAnEdgeOrAPointOnIt) {
     auto result = split_edge(mesh, 1, 3);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_edge: " + test::text(Simplex(+1, {1, 3})) + " is not an edge");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
 
     result = split_edge(mesh, 0, 2, 0.0);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_edge: t = 0.000000 is not in (0,1)");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     result = split_edge(mesh, 0, 2, 1.0);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_edge: t = 1.000000 is not in (0,1)");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     result = split_edge(mesh, 2, 2);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_edge: the two ends are the same vertex");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     result = split_edge(mesh, 0, 17);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_edge: 17 is not a vertex");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }
@@ -195,6 +200,7 @@ TEST(SplitEdge, RefusalAfterAddingTheVertexRemovesItAgain) {
     const auto split = split_edge(mesh, 1, 2);
     ASSERT_FALSE(split.ok());
     EXPECT_EQ(split.reason(), "split_edge: new elements 0 and 2 have the same vertices");
+    EXPECT_EQ(split.code(), RefusalCode::not_manifold);
     EXPECT_EQ(mesh.vertex_count(), 4u);
     expect_same_state(mesh, before);
 }
@@ -221,6 +227,7 @@ TEST(SplitEdge, ParentsVanishingWithAVertexMayHaveFlatChildren) {
     ASSERT_FALSE(checked.ok());
     EXPECT_EQ(checked.reason().rfind("split_edge: new element ", 0), 0u) << checked.reason();
     EXPECT_NE(checked.reason().find(" would be flat in the reference positions"), std::string::npos);
+    EXPECT_EQ(checked.code(), RefusalCode::would_flatten);
     expect_same_state(mesh, before);
     const std::array<VertexId, 1> vanishing{2};
     const auto split = split_edge(mesh, 0, 1, 0.5, SplitOptions{vanishing});

@@ -64,14 +64,17 @@ TEST(SplitElement, Refusals) {
     auto result = split_element(mesh, 7);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_element: 7 is not an element");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     const std::array<double, 2> two{1, 1};
     result = split_element(mesh, 0, two);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_element: needs 3 weights, got 2");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     const std::array<double, 3> negative{1, -1, 1};
     result = split_element(mesh, 0, negative);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_element: the weights must all be > 0 (the new vertex inside the element)");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }

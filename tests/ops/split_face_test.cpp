@@ -67,6 +67,7 @@ TEST(SplitFace, Refusals) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(),
               "split_face: needs a tetrahedral mesh (split a triangle mesh's edges with split_edge)");
+    EXPECT_EQ(result.code(), RefusalCode::wrong_dimension);
     expect_same_state(square, square_before);
 
     Mesh mesh = test::two_tets();
@@ -74,9 +75,11 @@ TEST(SplitFace, Refusals) {
     result = split_face(mesh, 999);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_face: 999 is not a face");
+    EXPECT_EQ(result.code(), RefusalCode::not_found);
     result = split_face(mesh, test::shared_face(mesh), {1, 0, 1});
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "split_face: the weights must all be > 0 (the new vertex inside the face)");
+    EXPECT_EQ(result.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     ASSERT_TRUE(mesh.validate().ok());
 }

@@ -268,6 +268,7 @@ TEST(SurfaceFastPaths, TheClosedTetrahedronSurfaceRefusesEveryCollapse) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.reason(), "collapse_edge: " + test::text(Simplex(+1, {0, 1})) +
                                    " violates the link condition (the result would not be a manifold)");
+    EXPECT_EQ(result.code(), RefusalCode::link_condition);
     test::expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());
 }

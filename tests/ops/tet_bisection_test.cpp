@@ -614,6 +614,7 @@ TEST(RefineAroundTetrahedra, LocatesAcrossANotch) {
     const auto notch = refine_around_tetrahedra(*state, {1.5, 1.5, 1.0}, 0.2);
     ASSERT_FALSE(notch.ok());
     EXPECT_EQ(notch.reason(), "refine_around_tetrahedra: point (1.5, 1.5, 1) is not in the mesh");
+    EXPECT_EQ(notch.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
     expect_conforming(*state, volume, area);
 }
@@ -696,6 +697,7 @@ TEST(BisectTetrahedron, RefusalInTheMiddleOfTheRecursionChangesNothing) {
     EXPECT_EQ(base + *twin_bisected - 1, 29u);
     EXPECT_EQ(refused.reason(), "bisect_tetrahedron: split_edge: new element -<12,13,27,29> "
                                 "would be flat in the deformed positions");
+    EXPECT_EQ(refused.code(), RefusalCode::would_flatten);
     const auto a = marking.vertices[0], b = marking.vertices[1];
     const auto c = marking.vertices[2], d = marking.vertices[3];
     expect_same_state(mesh, before);
@@ -715,6 +717,7 @@ TEST(BisectTetrahedron, RefusalInTheMiddleOfTheRecursionChangesNothing) {
     const auto refused_around = refine_around_tetrahedra(*state, x, 0.01);
     ASSERT_FALSE(refused_around.ok());
     EXPECT_EQ(refused_around.reason(), "refine_around_tetrahedra: " + refused.reason());
+    EXPECT_EQ(refused_around.code(), refused.code());
     expect_same_state(mesh, before);
     EXPECT_FALSE(state->is_stale()) << state->stale_reason();
     i = 0;
@@ -729,6 +732,7 @@ TEST(BisectTetrahedron, RefusalInTheMiddleOfTheRecursionChangesNothing) {
     EXPECT_NE(refused_stateless.reason().find(" would be flat in the deformed positions"),
               std::string::npos)
         << refused_stateless.reason();
+    EXPECT_EQ(refused_stateless.code(), RefusalCode::would_flatten);
     expect_same_state(mesh, before);
     EXPECT_EQ(watcher.removed + watcher.changed + watcher.added, 0);
 
@@ -751,20 +755,25 @@ TEST(RefineAroundTetrahedra, RefusesWithReasonAndUntouchedMesh) {
     auto refused = refine_around_tetrahedra(*state, {2, 0.5, 0.5}, 0.1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: point (2, 0.5, 0.5) is not in the mesh");
+    EXPECT_EQ(refused.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
     refused = refine_around_tetrahedra(*state, {0.5, 0.5, 0.5}, 0);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: h = 0 is not positive");
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
     refused = refine_around_tetrahedra(*state, {0.5, 0.5, 0.5}, -1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: h = -1 is not positive");
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
     refused = refine_around_tetrahedra(*state, {0.5, 0.5, 0.5}, std::numeric_limits<double>::quiet_NaN());
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: h = nan is not positive");
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
     refused = refine_around_tetrahedra(
         *state, {std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5}, 0.1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: point (nan, 0.5, 0.5) is not in the mesh");
+    EXPECT_EQ(refused.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
     EXPECT_FALSE(state->is_stale());
 
@@ -772,6 +781,7 @@ TEST(RefineAroundTetrahedra, RefusesWithReasonAndUntouchedMesh) {
     refused = refine_around_tetrahedra(mesh, {-0.5, 0.5, 0.5}, 0.1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: point (-0.5, 0.5, 0.5) is not in the mesh");
+    EXPECT_EQ(refused.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
 }
 
@@ -781,13 +791,16 @@ TEST(RefineAroundTetrahedra, RefusesTriangleMeshes) {
     const auto refused = refine_around_tetrahedra(mesh, {0.5, 0.5, 0}, 0.1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: the mesh has triangles, not tetrahedra");
+    EXPECT_EQ(refused.code(), RefusalCode::wrong_dimension);
     expect_same_state(mesh, before);
     const auto state = TetBisection::with_initial_marking(mesh);
     ASSERT_FALSE(state.ok());
     EXPECT_EQ(state.reason(), "tet_bisection: the mesh has triangles, not tetrahedra");
+    EXPECT_EQ(state.code(), RefusalCode::wrong_dimension);
     const auto kuhn = TetBisection::for_kuhn_mesh(mesh);
     ASSERT_FALSE(kuhn.ok());
     EXPECT_EQ(kuhn.reason(), "tet_bisection: the mesh has triangles, not tetrahedra");
+    EXPECT_EQ(kuhn.code(), RefusalCode::wrong_dimension);
     expect_same_state(mesh, before);
 }
 
@@ -799,6 +812,7 @@ TEST(TetBisection, ForKuhnMeshRefusesOtherMeshes) {
     ASSERT_FALSE(state.ok());
     // element 0 of kuhn_cube(2) has the vertex (1,1,1), which the jitter moved
     EXPECT_EQ(state.reason(), "tet_bisection: element 0 is not a Kuhn tetrahedron");
+    EXPECT_EQ(state.code(), RefusalCode::not_applicable);
     expect_same_state(mesh, before);
 }
 
@@ -810,6 +824,7 @@ TEST(BisectTetrahedron, RefusesAnUnknownElement) {
     const auto refused = bisect_tetrahedron(*state, 999);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "bisect_tetrahedron: 999 is not an element");
+    EXPECT_EQ(refused.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
 }
 
@@ -829,10 +844,12 @@ TEST(TetBisection, ForeignEditMakesTheStateStale) {
     auto refused = refine_around_tetrahedra(*state, {0.5, 0.5, 0.5}, 0.1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: the bisection state is stale: " + why);
+    EXPECT_EQ(refused.code(), RefusalCode::bad_marking);
     ElementId any = *elements(mesh).begin();
     refused = bisect_tetrahedron(*state, any);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "bisect_tetrahedron: the bisection state is stale: " + why);
+    EXPECT_EQ(refused.code(), RefusalCode::bad_marking);
     expect_same_state(mesh, before);
 
     // a fresh state works again
@@ -1017,6 +1034,7 @@ TEST(TetBisection, WithAmpMarkingIsTheLongestEdgeMarkingUnflagged) {
     const auto refused = TetBisection::with_amp_marking(triangles);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "tet_bisection: the mesh has triangles, not tetrahedra");
+    EXPECT_EQ(refused.code(), RefusalCode::wrong_dimension);
 }
 
 // One bisection: the element and whatever the closure needs, children marked by AMP's rules
@@ -1280,6 +1298,7 @@ TEST(BisectTetrahedron, AmpRefusalInTheMiddleOfTheClosureChangesNothing) {
     EXPECT_EQ(refused.reason().rfind("bisect_tetrahedron: new element ", 0), 0u) << refused.reason();
     EXPECT_NE(refused.reason().find(" would be flat in the deformed positions"), std::string::npos)
         << refused.reason();
+    EXPECT_EQ(refused.code(), RefusalCode::would_flatten);
     std::cout << "refused: " << refused.reason() << '\n';
     // the child named is one that has the moved vertex a (from far or another element around a)
     const std::string a = std::to_string(marking.vertices[0]);
@@ -1306,6 +1325,7 @@ TEST(BisectTetrahedron, AmpRefusalInTheMiddleOfTheClosureChangesNothing) {
     ASSERT_FALSE(refused_around.ok());
     EXPECT_EQ(refused_around.reason().rfind("refine_around_tetrahedra: bisect_tetrahedron: new element ", 0), 0u)
         << refused_around.reason();
+    EXPECT_EQ(refused_around.code(), refused.code());
     expect_same_state(mesh, before);
     EXPECT_FALSE(state->is_stale()) << state->stale_reason();
     EXPECT_EQ(watcher.removed + watcher.changed + watcher.added, 0);
