@@ -151,9 +151,12 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
                                     std::span<const int> labels) {
     const int k = m_dimension + 1;
     const std::size_t n = simplexes.size();
-    if (m_element_count != 0) return Refusal{RefusalCode::not_applicable, "assign_elements needs a mesh without elements"};
+    if (m_element_count != 0)
+        return Refusal{RefusalCode::not_applicable,
+                       "assign_elements needs a mesh without elements"};
     if (!labels.empty() && labels.size() != n)
-        return Refusal{RefusalCode::bad_argument, "got " + std::to_string(labels.size()) + " labels for " +
+        return Refusal{RefusalCode::bad_argument,
+                       "got " + std::to_string(labels.size()) + " labels for " +
                        std::to_string(n) + " elements"};
     if (n * static_cast<std::size_t>(k) >= invalid_id)
         return Refusal{RefusalCode::too_large, "too many elements for 32-bit face ids"};
@@ -164,8 +167,9 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
     const std::size_t face_total = n * static_cast<std::size_t>(k);
     std::vector<FaceId> mates;
     std::size_t boundary_count = 0;
-    std::optional<Refusal> problem = k == 4 ? match_faces<4>(simplexes, vertex_count(), mates, boundary_count)
-                                            : match_faces<3>(simplexes, vertex_count(), mates, boundary_count);
+    std::optional<Refusal> problem =
+        k == 4 ? match_faces<4>(simplexes, vertex_count(), mates, boundary_count)
+               : match_faces<3>(simplexes, vertex_count(), mates, boundary_count);
     if (problem) return *problem;
 
     // Face-connected vertex stars (§7.3), the one invariant the face matching cannot see. Every
@@ -208,7 +212,8 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
             if (pieces[v] <= 1) continue;
             std::size_t first = 0;
             while (!simplexes[first].contains(v)) ++first;
-            return Refusal{RefusalCode::pinched_star, "star connectivity: the elements around vertex " + std::to_string(v) +
+            return Refusal{RefusalCode::pinched_star,
+                           "star connectivity: the elements around vertex " + std::to_string(v) +
                                " are not connected through faces (the mesh is pinched there)",
                            first};
         }
@@ -258,9 +263,12 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
 Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes,
                                               std::span<const int> labels) {
     const int k = m_dimension + 1;
-    if (m_element_count != 0) return Refusal{RefusalCode::not_applicable, "assign_elements needs a mesh without elements"};
+    if (m_element_count != 0)
+        return Refusal{RefusalCode::not_applicable,
+                       "assign_elements needs a mesh without elements"};
     if (!labels.empty() && labels.size() != simplexes.size())
-        return Refusal{RefusalCode::bad_argument, "got " + std::to_string(labels.size()) + " labels for " +
+        return Refusal{RefusalCode::bad_argument,
+                       "got " + std::to_string(labels.size()) + " labels for " +
                        std::to_string(simplexes.size()) + " elements"};
     for (std::size_t i = 0; i < simplexes.size(); ++i)
         if (std::string why = check_simplex(simplexes[i], k, vertex_count()); !why.empty())

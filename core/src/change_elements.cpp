@@ -24,7 +24,9 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
     // ---- checks ---------------------------------------------------------------------------------
     for (std::size_t i = 0; i < m; ++i)
         if (!is_element(substitution[i].element))
-            return Refusal{RefusalCode::not_found, "element " + std::to_string(substitution[i].element) + " does not exist", i};
+            return Refusal{RefusalCode::not_found,
+                           "element " + std::to_string(substitution[i].element) + " does not exist",
+                           i};
     std::vector<ElementId> changed_in_order;
     changed_in_order.reserve(m);
     for (const ElementSubstitution& s : substitution) changed_in_order.push_back(s.element);
@@ -32,21 +34,24 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
     std::sort(changed_sorted.begin(), changed_sorted.end());
     if (auto d = std::adjacent_find(changed_sorted.begin(), changed_sorted.end());
         d != changed_sorted.end())
-        return Refusal{RefusalCode::bad_argument, "element " + std::to_string(*d) + " is listed twice"};
+        return Refusal{RefusalCode::bad_argument,
+                       "element " + std::to_string(*d) + " is listed twice"};
 
     std::vector<Simplex> substituted(m);
     for (std::size_t i = 0; i < m; ++i) {
         const Simplex& tau = m_elements[substitution[i].element].simplex;
         substituted[i] = Simplex(tau.sign(), std::span<const VertexId>(substitution[i].new_vertices.data(), uk));
         if (std::string why = check_simplex(substituted[i], k, vertex_count()); !why.empty())
-            return Refusal{RefusalCode::bad_argument, "substitution of element " + std::to_string(substitution[i].element) +
+            return Refusal{RefusalCode::bad_argument,
+                           "substitution of element " + std::to_string(substitution[i].element) +
                                ": " + why,
                            i};
     }
     for (std::size_t i = 0; i < m; ++i)
         for (std::size_t j = i + 1; j < m; ++j)
             if (substituted[i].same_vertices(substituted[j]))
-                return Refusal{RefusalCode::not_manifold, "elements " + std::to_string(substitution[i].element) + " and " +
+                return Refusal{RefusalCode::not_manifold,
+                               "elements " + std::to_string(substitution[i].element) + " and " +
                                    std::to_string(substitution[j].element) +
                                    " would get the same vertices",
                                j};
@@ -56,10 +61,13 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
         for (int j = 0; j < k; ++j) new_faces.push_back(tau.subn(j));
     std::sort(new_faces.begin(), new_faces.end());
     if (auto d = std::adjacent_find(new_faces.begin(), new_faces.end()); d != new_faces.end())
-        return Refusal{RefusalCode::not_manifold, "face " + to_text(*d) + " would belong to two changed elements (invariant 7.4)"};
+        return Refusal{
+            RefusalCode::not_manifold,
+            "face " + to_text(*d) + " would belong to two changed elements (invariant 7.4)"};
     for (std::size_t i = 0; i < m; ++i) {
         if (has_face_outside(substituted[i], changed_sorted))
-            return Refusal{RefusalCode::not_manifold, "element " + to_text(substituted[i]) +
+            return Refusal{RefusalCode::not_manifold,
+                           "element " + to_text(substituted[i]) +
                                " already exists as an unchanged element (invariant 7.4)",
                            i};
         for (int j = 0; j < k; ++j) {
@@ -69,7 +77,8 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
                 b != invalid_id && face_simplex(b) == sigma &&
                 !std::binary_search(changed_sorted.begin(), changed_sorted.end(), m_faces[b].element);
             if (on_boundary || has_face_outside(sigma, changed_sorted))
-                return Refusal{RefusalCode::not_manifold, "face " + to_text(sigma) +
+                return Refusal{RefusalCode::not_manifold,
+                               "face " + to_text(sigma) +
                                    " already exists in an unchanged element (invariant 7.4)",
                                i};
         }

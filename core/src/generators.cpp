@@ -11,9 +11,11 @@ namespace sxk {
 
 Outcome<Mesh> make_kuhn_cube(int n, double spacing) {
     if (n < 1 || n > 1000)
-        return Refusal{RefusalCode::bad_argument, "make_kuhn_cube: " + std::to_string(n) + " cubes per side is not in 1..1000"};
+        return Refusal{RefusalCode::bad_argument, "make_kuhn_cube: " + std::to_string(n) +
+                                                      " cubes per side is not in 1..1000"};
     if (!(spacing > 0) || !std::isfinite(spacing))
-        return Refusal{RefusalCode::bad_argument, "make_kuhn_cube: spacing " + std::to_string(spacing) +
+        return Refusal{RefusalCode::bad_argument,
+                       "make_kuhn_cube: spacing " + std::to_string(spacing) +
                        " is not positive and finite"};
     const std::size_t side = static_cast<std::size_t>(n) + 1;
     const std::size_t cubes = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) *
@@ -48,7 +50,8 @@ Outcome<Mesh> make_kuhn_cube(int n, double spacing) {
                     tets.emplace_back(sign, v);
                 }
     if (auto built = mesh.assign_elements(tets); !built)
-        return Refusal{RefusalCode::internal_error, "make_kuhn_cube: " + built.reason()};  // cannot happen: the cuts match
+        return Refusal{RefusalCode::internal_error,
+                       "make_kuhn_cube: " + built.reason()};  // cannot happen: the cuts match
     return mesh;
 }
 

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+#include "sxk/predicates.hpp"
 #include "sxk/simplex.hpp"
 
 namespace sxk::detail {
@@ -28,6 +30,12 @@ inline std::string check_simplex(const Simplex& s, int vertex_count_per_element,
                    std::to_string(vertices) + " vertices)";
     if (!s.has_distinct_vertices()) return "element " + to_text(s) + " repeats a vertex";
     return {};
+}
+
+// The code of a refusal for a new element whose orientation `s` is not the one it must have:
+// would_flatten when it is zero, would_invert otherwise.
+inline RefusalCode orientation_code(Sign s) {
+    return s == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert;
 }
 
 // A vector that keeps its first N elements in place (on the stack, as a local) and moves to the

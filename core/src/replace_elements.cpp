@@ -273,14 +273,17 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     // ---- checks: nothing changes before all of them pass ----------------------------------
     for (std::size_t i = 0; i < old_elements.size(); ++i)
         if (!is_element(old_elements[i]))
-            return Refusal{RefusalCode::not_found, "element " + std::to_string(old_elements[i]) + " does not exist", i};
+            return Refusal{RefusalCode::not_found,
+                           "element " + std::to_string(old_elements[i]) + " does not exist", i};
     detail::SmallVector<ElementId, small_edit> old_sorted;
     for (ElementId t : old_elements) old_sorted.push_back(t);
     std::sort(old_sorted.begin(), old_sorted.end());
     if (auto d = std::adjacent_find(old_sorted.begin(), old_sorted.end()); d != old_sorted.end())
-        return Refusal{RefusalCode::bad_argument, "element " + std::to_string(*d) + " is listed twice"};
+        return Refusal{RefusalCode::bad_argument,
+                       "element " + std::to_string(*d) + " is listed twice"};
     if (!labels.empty() && labels.size() != m)
-        return Refusal{RefusalCode::bad_argument, "got " + std::to_string(labels.size()) + " labels for " +
+        return Refusal{RefusalCode::bad_argument,
+                       "got " + std::to_string(labels.size()) + " labels for " +
                        std::to_string(m) + " new elements"};
     for (std::size_t i = 0; i < m; ++i)
         if (std::string why = check_simplex(new_simplexes[i], k, vertex_count()); !why.empty())
@@ -288,7 +291,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     for (std::size_t i = 0; i < m; ++i)
         for (std::size_t j = i + 1; j < m; ++j)
             if (new_simplexes[i].same_vertices(new_simplexes[j]))
-                return Refusal{RefusalCode::not_manifold, "new elements " + std::to_string(i) + " and " + std::to_string(j) +
+                return Refusal{RefusalCode::not_manifold,
+                               "new elements " + std::to_string(i) + " and " + std::to_string(j) +
                                    " have the same vertices",
                                j};
 
@@ -320,7 +324,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
               [&](std::size_t a, std::size_t b) { return new_faces[a].sigma < new_faces[b].sigma; });
     for (std::size_t i = 1; i < order.size(); ++i)
         if (new_faces[order[i]].sigma == new_faces[order[i - 1]].sigma)
-            return Refusal{RefusalCode::not_manifold, "face " + to_text(new_faces[order[i]].sigma) +
+            return Refusal{RefusalCode::not_manifold,
+                           "face " + to_text(new_faces[order[i]].sigma) +
                                " would belong to two new elements (invariant 7.4)",
                            std::max(order[i], order[i - 1]) / uk};
     auto find_new = [&](const Simplex& s) -> NewFace* {
@@ -365,7 +370,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     // may a new element have the vertices of one that stays.
     for (std::size_t i = 0; i < m && !proven; ++i) {
         if (exists_outside(*this, new_simplexes[i], stars.star(new_simplexes[i].vertex(0)), old_sorted))
-            return Refusal{RefusalCode::not_manifold, "element " + to_text(new_simplexes[i]) +
+            return Refusal{RefusalCode::not_manifold,
+                           "element " + to_text(new_simplexes[i]) +
                                " already exists as an element that stays (invariant 7.4)",
                            i};
         for (int j = 0; j < k; ++j) {
@@ -376,7 +382,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
                                      !sorted_contains(old_sorted, m_faces[b].element);
             if (on_boundary ||
                 exists_outside(*this, nf.sigma, stars.star(nf.sigma.vertex(0)), old_sorted))
-                return Refusal{RefusalCode::not_manifold, "face " + to_text(nf.sigma) +
+                return Refusal{RefusalCode::not_manifold,
+                               "face " + to_text(nf.sigma) +
                                    " already exists in an element that stays (invariant 7.4)",
                                i};
         }
@@ -385,7 +392,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     // Every vertex the edit touches must keep a face-connected star.
     for (std::size_t i = 0; i < stars.vertices.size(); ++i)
         if (stars.pieces[i] > 1)
-            return Refusal{RefusalCode::pinched_star, "star connectivity: vertex " + std::to_string(stars.vertices[i]) +
+            return Refusal{RefusalCode::pinched_star,
+                           "star connectivity: vertex " + std::to_string(stars.vertices[i]) +
                            " would be pinched (its star would fall into " +
                            std::to_string(stars.pieces[i]) + " pieces)"};
 

@@ -71,7 +71,8 @@ std::optional<Refusal> Mesh::refuse_pinched_stars(std::vector<VertexId> touched,
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     for (VertexId v : touched)
         if (const std::size_t pieces = star_pieces_after(v, removed, added); pieces > 1)
-            return Refusal{RefusalCode::pinched_star, "star connectivity: vertex " + std::to_string(v) +
+            return Refusal{RefusalCode::pinched_star,
+                           "star connectivity: vertex " + std::to_string(v) +
                            " would be pinched (its star would fall into " + std::to_string(pieces) +
                            " pieces)"};
     return std::nullopt;

@@ -25,11 +25,13 @@ Outcome<Done> check_orientation(const Mesh& mesh, bool flat_is_invalid) {
         for (ElementId t : elements(mesh)) {
             const Sign sign = element_orientation(mesh, t, positions);
             if (sign == Sign::negative)
-                return Refusal{RefusalCode::invalid_mesh, "element " + std::to_string(t) + " is inverted in the " + which +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "element " + std::to_string(t) + " is inverted in the " + which +
                                    " positions",
                                t};
             if (sign == Sign::zero && flat_is_invalid)
-                return Refusal{RefusalCode::invalid_mesh, "element " + std::to_string(t) + " is flat in the " + which +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "element " + std::to_string(t) + " is flat in the " + which +
                                    " positions",
                                t};
         }
@@ -50,28 +52,36 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         ++live_elements;
         const ElementRecord& e = m_elements[t];
         if (std::string why = detail::check_simplex(e.simplex, k, vertex_count()); !why.empty())
-            return Refusal{RefusalCode::invalid_mesh, "element " + std::to_string(t) + ": " + why, t};
+            return Refusal{RefusalCode::invalid_mesh,
+                           "element " + std::to_string(t) + ": " + why, t};
         for (std::size_t i = 0; i < uk; ++i) {
             const FaceId f = e.faces[i];
             if (!is_face(f))
-                return Refusal{RefusalCode::invalid_mesh, "invariant 7.1 (faces of an element): " + element_name(t, e.simplex) +
-                                   " lists face " + (f == invalid_id ? std::string("none") : std::to_string(f)) +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "invariant 7.1 (faces of an element): " +
+                                   element_name(t, e.simplex) + " lists face " +
+                                   (f == invalid_id ? std::string("none") : std::to_string(f)) +
                                    " in slot " + std::to_string(i) + ", which does not exist",
                                t};
             if (m_faces[f].element != t)
-                return Refusal{RefusalCode::invalid_mesh, "invariant 7.2 (face element): face " + std::to_string(f) + " in slot " +
-                                   std::to_string(i) + " of " + element_name(t, e.simplex) +
-                                   " names element " + std::to_string(m_faces[f].element),
+                return Refusal{RefusalCode::invalid_mesh,
+                               "invariant 7.2 (face element): face " + std::to_string(f) +
+                                   " in slot " + std::to_string(i) + " of " +
+                                   element_name(t, e.simplex) + " names element " +
+                                   std::to_string(m_faces[f].element),
                                t};
             for (std::size_t j = 0; j < i; ++j)
                 if (e.faces[j] == f)
-                    return Refusal{RefusalCode::invalid_mesh, "invariant 7.1 (faces of an element): " + element_name(t, e.simplex) +
-                                       " lists face " + std::to_string(f) + " twice",
-                                   t};
+                    return Refusal{
+                        RefusalCode::invalid_mesh,
+                        "invariant 7.1 (faces of an element): " + element_name(t, e.simplex) +
+                            " lists face " + std::to_string(f) + " twice",
+                        t};
         }
     }
     if (live_elements != m_element_count)
-        return Refusal{RefusalCode::invalid_mesh, "element count " + std::to_string(m_element_count) + " but " +
+        return Refusal{RefusalCode::invalid_mesh,
+                       "element count " + std::to_string(m_element_count) + " but " +
                        std::to_string(live_elements) + " live elements"};
 
     // faces: owned (7.2), mates mutual and opposite (7.3)
@@ -80,7 +90,8 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         if (!is_face(f)) continue;
         const ElementId t = m_faces[f].element;
         if (!is_element(t) || face_slot(f) < 0)
-            return Refusal{RefusalCode::invalid_mesh, "invariant 7.2 (face element): face " + std::to_string(f) +
+            return Refusal{RefusalCode::invalid_mesh,
+                           "invariant 7.2 (face element): face " + std::to_string(f) +
                            " is not among the faces of its element " + std::to_string(t)};
         const FaceId g = m_faces[f].mate;
         if (g == invalid_id) {
@@ -89,16 +100,22 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         }
         const Simplex sigma = face_simplex(f);
         if (!is_face(g))
-            return Refusal{RefusalCode::invalid_mesh, "invariant 7.3 (mate): face " + std::to_string(f) + " " + to_text(sigma) +
-                           " has mate " + std::to_string(g) + ", which does not exist"};
+            return Refusal{RefusalCode::invalid_mesh, "invariant 7.3 (mate): face " +
+                                                          std::to_string(f) + " " + to_text(sigma) +
+                                                          " has mate " + std::to_string(g) +
+                                                          ", which does not exist"};
         if (m_faces[g].mate != f)
-            return Refusal{RefusalCode::invalid_mesh, "invariant 7.3 (mate): face " + std::to_string(f) + " " + to_text(sigma) +
-                           " has mate " + std::to_string(g) + " whose mate is " +
-                           (m_faces[g].mate == invalid_id ? std::string("none") : std::to_string(m_faces[g].mate))};
+            return Refusal{RefusalCode::invalid_mesh,
+                           "invariant 7.3 (mate): face " + std::to_string(f) + " " +
+                               to_text(sigma) + " has mate " + std::to_string(g) +
+                               " whose mate is " +
+                               (m_faces[g].mate == invalid_id ? std::string("none")
+                                                              : std::to_string(m_faces[g].mate))};
         if (!(face_simplex(g) == sigma.mate()))
-            return Refusal{RefusalCode::invalid_mesh, "invariant 7.3 (mate): face " + std::to_string(f) + " " + to_text(sigma) +
-                           " has mate " + std::to_string(g) + " " + to_text(face_simplex(g)) +
-                           ", expected " + to_text(sigma.mate())};
+            return Refusal{RefusalCode::invalid_mesh,
+                           "invariant 7.3 (mate): face " + std::to_string(f) + " " +
+                               to_text(sigma) + " has mate " + std::to_string(g) + " " +
+                               to_text(face_simplex(g)) + ", expected " + to_text(sigma.mate())};
     }
 
     // the neighbour cache: neighbors[i] is the element of the mate of faces[i]
@@ -109,7 +126,8 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
             const FaceId g = m_faces[e.faces[i]].mate;
             const ElementId expected = g == invalid_id ? invalid_id : m_faces[g].element;
             if (e.neighbors[i] != expected)
-                return Refusal{RefusalCode::invalid_mesh, "neighbour cache: " + element_name(t, e.simplex) + " names " +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "neighbour cache: " + element_name(t, e.simplex) + " names " +
                                    (e.neighbors[i] == invalid_id ? std::string("none") : std::to_string(e.neighbors[i])) +
                                    " across slot " + std::to_string(i) + ", but its mate is in " +
                                    (expected == invalid_id ? std::string("none") : std::to_string(expected)),
@@ -126,8 +144,10 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         std::sort(all.begin(), all.end());
         for (std::size_t i = 1; i < all.size(); ++i)
             if (all[i].first == all[i - 1].first)
-                return Refusal{RefusalCode::invalid_mesh, "invariant 7.4 (uniqueness): elements " + std::to_string(all[i - 1].second) +
-                                   " and " + std::to_string(all[i].second) + " have the same vertices " +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "invariant 7.4 (uniqueness): elements " +
+                                   std::to_string(all[i - 1].second) + " and " +
+                                   std::to_string(all[i].second) + " have the same vertices " +
                                    to_text(all[i].first),
                                all[i].second};
     }
@@ -139,7 +159,8 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         std::sort(all.begin(), all.end());
         for (std::size_t i = 1; i < all.size(); ++i)
             if (all[i].first == all[i - 1].first)
-                return Refusal{RefusalCode::invalid_mesh, "invariant 7.4 (uniqueness): simplex " + to_text(all[i].first) +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "invariant 7.4 (uniqueness): simplex " + to_text(all[i].first) +
                                    " is represented by faces " + std::to_string(all[i - 1].second) +
                                    " (element " + std::to_string(m_faces[all[i - 1].second].element) +
                                    ") and " + std::to_string(all[i].second) + " (element " +
@@ -157,14 +178,17 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         std::sort(keys.begin(), keys.end());
         for (const auto& [key, label] : m_face_labels)
             if (!std::binary_search(keys.begin(), keys.end(), Simplex(+1, key.vertices())))
-                return Refusal{RefusalCode::invalid_mesh, "face label: label " + std::to_string(label) + " names " +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "face label: label " + std::to_string(label) + " names " +
                                to_text(key) + ", which is not a face of the mesh"};
     }
 
     // boundary map (7.5): exactly the faces without mate, under their own simplex
     if (m_boundary.size() != mateless)
-        return Refusal{RefusalCode::invalid_mesh, "invariant 7.5 (boundary map): it holds " + std::to_string(m_boundary.size()) +
-                       " faces but " + std::to_string(mateless) + " faces have no mate"};
+        return Refusal{RefusalCode::invalid_mesh, "invariant 7.5 (boundary map): it holds " +
+                                                      std::to_string(m_boundary.size()) +
+                                                      " faces but " + std::to_string(mateless) +
+                                                      " faces have no mate"};
     std::string boundary_problem;
     m_boundary.for_each([&](const detail::BoundaryMap::Key& key, FaceId f) {
         if (!boundary_problem.empty()) return;
@@ -182,9 +206,11 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
     if (!boundary_problem.empty()) return Refusal{RefusalCode::invalid_mesh, boundary_problem};
     for (FaceId f = 0; f < m_faces.size(); ++f)
         if (is_face(f) && m_faces[f].mate == invalid_id && m_boundary.find(face_simplex(f)) != f)
-            return Refusal{RefusalCode::invalid_mesh, "invariant 7.5 (boundary map): boundary face " + std::to_string(f) + " " +
-                               to_text(face_simplex(f)) + " of element " +
-                               std::to_string(m_faces[f].element) + " is missing from the boundary map",
+            return Refusal{RefusalCode::invalid_mesh,
+                           "invariant 7.5 (boundary map): boundary face " + std::to_string(f) +
+                               " " + to_text(face_simplex(f)) + " of element " +
+                               std::to_string(m_faces[f].element) +
+                               " is missing from the boundary map",
                            m_faces[f].element};
 
     // vertex anchors and face-connected stars (§7.3: star(v) must be (v, {})-connected)
@@ -198,12 +224,14 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         const ElementId a = m_vertex_element[v];
         if (incidence[v] == 0) {
             if (a != invalid_id)
-                return Refusal{RefusalCode::invalid_mesh, "vertex anchor: vertex " + std::to_string(v) +
+                return Refusal{RefusalCode::invalid_mesh,
+                               "vertex anchor: vertex " + std::to_string(v) +
                                " is in no element but names element " + std::to_string(a)};
             continue;
         }
         if (!is_element(a) || !m_elements[a].simplex.contains(v))
-            return Refusal{RefusalCode::invalid_mesh, "vertex anchor: vertex " + std::to_string(v) + " names element " +
+            return Refusal{RefusalCode::invalid_mesh,
+                           "vertex anchor: vertex " + std::to_string(v) + " names element " +
                            (a == invalid_id ? std::string("none") : std::to_string(a)) +
                            ", which does not contain it"};
         std::uint32_t reached = 0;
@@ -223,10 +251,12 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
             }
         }
         if (reached != incidence[v])
-            return Refusal{RefusalCode::invalid_mesh, "star connectivity: the star of vertex " + std::to_string(v) + " is not face-connected (" +
-                           std::to_string(reached) + " of its " + std::to_string(incidence[v]) +
-                           " elements are reachable from element " + std::to_string(a) +
-                           "; the mesh is pinched at this vertex)"};
+            return Refusal{RefusalCode::invalid_mesh,
+                           "star connectivity: the star of vertex " + std::to_string(v) +
+                               " is not face-connected (" + std::to_string(reached) + " of its " +
+                               std::to_string(incidence[v]) +
+                               " elements are reachable from element " + std::to_string(a) +
+                               "; the mesh is pinched at this vertex)"};
     }
     if (options.orientation && m_dimension == m_ambient)
         return check_orientation(*this, options.flat_is_invalid);

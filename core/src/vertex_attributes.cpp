@@ -25,11 +25,13 @@ std::pair<Point, Point> Mesh::interpolated_positions(std::span<const VertexId> v
 Outcome<VertexId> Mesh::add_interpolated_vertex(std::span<const VertexId> parents,
                                                 std::span<const double> weights) {
     if (parents.empty() || parents.size() != weights.size())
-        return Refusal{RefusalCode::bad_argument, "add_interpolated_vertex: " + std::to_string(parents.size()) +
+        return Refusal{RefusalCode::bad_argument,
+                       "add_interpolated_vertex: " + std::to_string(parents.size()) +
                        " parents but " + std::to_string(weights.size()) + " weights"};
     for (std::size_t i = 0; i < parents.size(); ++i)
         if (parents[i] >= vertex_count())
-            return Refusal{RefusalCode::not_found, "add_interpolated_vertex: parent " + std::to_string(parents[i]) +
+            return Refusal{RefusalCode::not_found,
+                           "add_interpolated_vertex: parent " + std::to_string(parents[i]) +
                                " is not a vertex",
                            i};
     const auto [reference, deformed] = interpolated_positions(parents, weights);
@@ -52,10 +54,12 @@ Outcome<VertexId> Mesh::add_interpolated_vertex(std::span<const VertexId> parent
 }
 
 Outcome<Done> Mesh::remove_last_vertex() {
-    if (m_reference.empty()) return Refusal{RefusalCode::not_found, "remove_last_vertex: the mesh has no vertex"};
+    if (m_reference.empty())
+        return Refusal{RefusalCode::not_found, "remove_last_vertex: the mesh has no vertex"};
     const auto last = static_cast<VertexId>(m_reference.size() - 1);
     if (m_vertex_element[last] != invalid_id)
-        return Refusal{RefusalCode::not_applicable, "remove_last_vertex: vertex " + std::to_string(last) + " is in element " +
+        return Refusal{RefusalCode::not_applicable,
+                       "remove_last_vertex: vertex " + std::to_string(last) + " is in element " +
                        std::to_string(m_vertex_element[last])};
     m_reference.pop_back();
     m_deformed.pop_back();
@@ -67,15 +71,19 @@ Outcome<Done> Mesh::remove_last_vertex() {
 
 Outcome<AttributeId> Mesh::add_vertex_attribute(std::string name, int components,
                                                 std::span<const double> default_value) {
-    if (name.empty()) return Refusal{RefusalCode::bad_argument, "add_vertex_attribute: the name is empty"};
+    if (name.empty())
+        return Refusal{RefusalCode::bad_argument, "add_vertex_attribute: the name is empty"};
     if (find_vertex_attribute(name) != invalid_id)
-        return Refusal{RefusalCode::not_applicable, "add_vertex_attribute: an attribute called \"" + name + "\" exists"};
+        return Refusal{RefusalCode::not_applicable,
+                       "add_vertex_attribute: an attribute called \"" + name + "\" exists"};
     if (components < 1)
-        return Refusal{RefusalCode::bad_argument, "add_vertex_attribute: \"" + name + "\" needs at least one component, not " +
+        return Refusal{RefusalCode::bad_argument,
+                       "add_vertex_attribute: \"" + name + "\" needs at least one component, not " +
                        std::to_string(components)};
     const auto n = static_cast<std::size_t>(components);
     if (!default_value.empty() && default_value.size() != n)
-        return Refusal{RefusalCode::bad_argument, "add_vertex_attribute: \"" + name + "\" has " + std::to_string(n) +
+        return Refusal{RefusalCode::bad_argument,
+                       "add_vertex_attribute: \"" + name + "\" has " + std::to_string(n) +
                        " components but a default value of " + std::to_string(default_value.size())};
     VertexAttribute attribute;
     attribute.name = std::move(name);
@@ -99,7 +107,8 @@ AttributeId Mesh::find_vertex_attribute(std::string_view name) const {
 
 Outcome<Done> Mesh::remove_vertex_attribute(AttributeId attribute) {
     if (!is_vertex_attribute(attribute))
-        return Refusal{RefusalCode::not_found, "remove_vertex_attribute: " + std::to_string(attribute) +
+        return Refusal{RefusalCode::not_found,
+                       "remove_vertex_attribute: " + std::to_string(attribute) +
                        " is not a vertex attribute"};
     // the slot stays, empty, so that other ids keep their meaning
     m_attributes[attribute] = VertexAttribute{};

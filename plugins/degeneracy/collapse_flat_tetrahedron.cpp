@@ -82,7 +82,8 @@ Refused execute(Mesh& mesh, const Move& move, const Options& options) {
                     break;
                 }
             }
-            if (face == invalid_id) return Refusal(RefusalCode::not_found, "the face to split is gone");
+            if (face == invalid_id) return Refusal(RefusalCode::not_found,
+                                                   "the face to split is gone");
             const std::array<VertexId, 1> vanishing{move.v[3]};
             const auto split = split_face(mesh, face, move.w, SplitOptions{vanishing});
             if (!split) return split.refusal();
@@ -223,7 +224,8 @@ std::vector<Move> moves_for(const Mesh& mesh, ElementId t, const Options& option
 Refused collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
                                   MoveJournal& journal, Effort effort, MoveJournal* inner) {
     const std::vector<Move> moves = moves_for(mesh, t, options);
-    if (moves.empty()) return Refusal(RefusalCode::not_applicable, "no split or collapse fits its shape");
+    if (moves.empty()) return Refusal(RefusalCode::not_applicable,
+                                      "no split or collapse fits its shape");
     return try_moves_of(
         mesh, t, std::span<const Move>(moves), options, tally, journal, effort, inner,
         [&](const Move& move) { return execute(mesh, move, options); }, count, collapse_flat_tetrahedron);

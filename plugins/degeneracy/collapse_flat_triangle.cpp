@@ -47,7 +47,8 @@ Refused execute(Mesh& mesh, const Move& move, const Options& options) {
             return collapse_one_way(mesh, move.a, move.b, move.reverse, options);
         case Move::Kind::flip_edge: {
             const FaceId edge = edge_opposite(mesh, move.a, move.b, move.v);
-            if (edge == invalid_id) return Refusal(RefusalCode::not_found, "the flat triangle is gone");
+            if (edge == invalid_id) return Refusal(RefusalCode::not_found,
+                                                   "the flat triangle is gone");
             const auto flipped = flip_edge(mesh, edge);
             if (flipped) return std::nullopt;
             return flipped.refusal();
@@ -107,7 +108,8 @@ Refused collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, 
         if (rank(m1) != rank(m2)) return rank(m1) < rank(m2);
         return m1.distance < m2.distance;
     });
-    if (moves.empty()) return Refusal(RefusalCode::not_applicable, "no flip, split or collapse fits its shape");
+    if (moves.empty()) return Refusal(RefusalCode::not_applicable,
+                                      "no flip, split or collapse fits its shape");
     std::vector<Move> both;
     for (const Move& move : moves) {
         both.push_back(move);

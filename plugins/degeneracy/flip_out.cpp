@@ -101,7 +101,8 @@ std::vector<Flip> flips_for(const Mesh& mesh, ElementId t, const Options& option
 Refused flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally) {
     const std::vector<Flip> flips = flips_for(mesh, t, options);
     if (flips.empty())
-        return Refusal(RefusalCode::not_applicable, "no flip removes it without making another degenerate element");
+        return Refusal(RefusalCode::not_applicable,
+                       "no flip removes it without making another degenerate element");
     Refused why;
     for (const Flip& flip : flips) {
         bool done = false;

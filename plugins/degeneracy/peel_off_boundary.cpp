@@ -23,8 +23,10 @@ Refused peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
     std::vector<Simplex> boundary, exposed;
     for (int i = 0; i < tau.count(); ++i)
         (mesh.neighbor(t, i) == invalid_id ? boundary : exposed).push_back(tau.subn(i));
-    if (boundary.empty()) return Refusal(RefusalCode::not_applicable, "it has no face on the boundary");
-    if (exposed.empty()) return Refusal(RefusalCode::not_applicable, "it is a whole component (no interior face)");
+    if (boundary.empty()) return Refusal(RefusalCode::not_applicable,
+                                         "it has no face on the boundary");
+    if (exposed.empty()) return Refusal(RefusalCode::not_applicable,
+                                        "it is a whole component (no interior face)");
     for (const Simplex& face : boundary)
         for (const VertexId v : tau.vertices()) {
             if (face.contains(v)) continue;
@@ -37,8 +39,8 @@ Refused peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
                     position(mesh, v, positions));
                 if (!(d <= options.boundary_tolerance))
                     return Refusal(RefusalCode::moves_boundary,
-                                   "peeling it off would move the boundary face " + to_text(face) + " by " +
-                                       std::to_string(d) + " of its longest edge");
+                                   "peeling it off would move the boundary face " + to_text(face) +
+                                       " by " + std::to_string(d) + " of its longest edge");
             }
         }
     int label = 0;

@@ -156,14 +156,16 @@ Refused try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const Verte
                     count(moves[i]);
                     return std::nullopt;
                 }
-                refusal = Refusal(RefusalCode::not_applicable,
-                                  "every move leaves a degenerate element (this one: aspect ratio " +
-                                      std::to_string(made.worst) + ")");
+                refusal =
+                    Refusal(RefusalCode::not_applicable,
+                            "every move leaves a degenerate element (this one: aspect ratio " +
+                                std::to_string(made.worst) + ")");
             } else {
                 refused[i] = 1;
             }
             if (journal.changed() && !journal.undo())
-                return Refusal(RefusalCode::internal_error, "a refused move could not be undone: " + refusal->reason);
+                return Refusal(RefusalCode::internal_error,
+                               "a refused move could not be undone: " + refusal->reason);
             why = std::move(refusal);
         }
     return why;

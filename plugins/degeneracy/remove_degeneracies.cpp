@@ -56,18 +56,23 @@ std::size_t vertices_in_elements(const Mesh& mesh) {
 
 std::optional<Refusal> check(const Mesh& mesh, const Options& options) {
     if (!(options.aspect_ratio > 0 && options.aspect_ratio < 1))
-        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: aspect ratio threshold must be in (0, 1), not " +
+        return Refusal{RefusalCode::bad_argument,
+                       "remove_degeneracies: aspect ratio threshold must be in (0, 1), not " +
                 std::to_string(options.aspect_ratio)};
     if (!(options.large_angle > pi / 2 && options.large_angle < pi))
-        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: large angle must be in (pi/2, pi) radians, not " +
+        return Refusal{RefusalCode::bad_argument,
+                       "remove_degeneracies: large angle must be in (pi/2, pi) radians, not " +
                 std::to_string(options.large_angle)};
     if (!(options.boundary_tolerance >= 0 && options.boundary_tolerance < 1))
-        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: boundary tolerance must be in [0, 1), not " +
+        return Refusal{RefusalCode::bad_argument,
+                       "remove_degeneracies: boundary tolerance must be in [0, 1), not " +
                 std::to_string(options.boundary_tolerance)};
     if (options.max_passes == 0)
-        return Refusal{RefusalCode::bad_argument, "remove_degeneracies: max passes must be at least 1"};
+        return Refusal{RefusalCode::bad_argument,
+                       "remove_degeneracies: max passes must be at least 1"};
     if (mesh.topological_dimension() != 2 && mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, "remove_degeneracies: not a triangle or tetrahedral mesh"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "remove_degeneracies: not a triangle or tetrahedral mesh"};
     return std::nullopt;
 }
 
@@ -168,7 +173,8 @@ private:
     };
     Why reason(ElementId t) const {
         const auto found = m_reasons.find(key(t));
-        if (found == m_reasons.end()) return {"not tried (the passes stopped: the list no longer shrank)", {}};
+        if (found == m_reasons.end())
+            return {"not tried (the passes stopped: the list no longer shrank)", {}};
         Why why;
         const char* names[] = {"collapse: ", "flip: ", "peel: ", "cut free: "};
         for (std::size_t i = 0; i < 4; ++i) {

@@ -51,7 +51,8 @@ TEST(RefusalCode, AnOutcomeReportsTheCodeReasonAndItem) {
 }
 
 TEST(RefusalCode, APrefixedRefusalKeepsItsCodeAndDropsTheInnerItem) {
-    const Refusal inner(RefusalCode::pinched_star, "star connectivity: vertex 4 would be pinched", 3);
+    const Refusal inner(RefusalCode::pinched_star, "star connectivity: vertex 4 would be pinched",
+                        3);
     const Refusal outer = inner.prefixed("flip_edge: ");
     EXPECT_EQ(outer.code, RefusalCode::pinched_star);
     EXPECT_EQ(outer.reason, "flip_edge: star connectivity: vertex 4 would be pinched");

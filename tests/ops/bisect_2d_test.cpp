@@ -135,9 +135,12 @@ TEST(Bisect2d, SimpleBisectRefusals) {
     expect_simple_bisect_refused(
         mesh, 0, 1, RefusalCode::not_applicable,
         "simple_bisect: +<0,1> is not the hypotenuse of element 0 (its hypotenuse is +<0,3>)");
-    expect_simple_bisect_refused(mesh, 1, 2, RefusalCode::not_found, "simple_bisect: +<1,2> is not an edge");
-    expect_simple_bisect_refused(mesh, 0, 9, RefusalCode::not_found, "simple_bisect: 9 is not a vertex");
-    expect_simple_bisect_refused(mesh, 2, 2, RefusalCode::bad_argument, "simple_bisect: the two ends are the same vertex");
+    expect_simple_bisect_refused(mesh, 1, 2, RefusalCode::not_found,
+                                 "simple_bisect: +<1,2> is not an edge");
+    expect_simple_bisect_refused(mesh, 0, 9, RefusalCode::not_found,
+                                 "simple_bisect: 9 is not a vertex");
+    expect_simple_bisect_refused(mesh, 2, 2, RefusalCode::bad_argument,
+                                 "simple_bisect: the two ends are the same vertex");
     Mesh cube = test::kuhn_cube(1);
     expect_simple_bisect_refused(cube, 0, 7, RefusalCode::wrong_dimension,
                                  "simple_bisect: needs a triangle mesh (topological dimension 2)");
@@ -228,7 +231,8 @@ TEST(Bisect2d, BisectEdgeRefusals) {
     Mesh mesh = test::planar_grid(2);
     expect_bisect_refused(mesh, 0, 8, RefusalCode::not_found, "bisect_edge: +<0,8> is not an edge");
     expect_bisect_refused(mesh, 0, 9, RefusalCode::not_found, "bisect_edge: 9 is not a vertex");
-    expect_bisect_refused(mesh, 3, 3, RefusalCode::bad_argument, "bisect_edge: the two ends are the same vertex");
+    expect_bisect_refused(mesh, 3, 3, RefusalCode::bad_argument,
+                          "bisect_edge: the two ends are the same vertex");
     Mesh cube = test::kuhn_cube(1);
     expect_bisect_refused(cube, 0, 7, RefusalCode::wrong_dimension,
                           "bisect_edge: needs a triangle mesh (topological dimension 2)");
@@ -295,12 +299,14 @@ void expect_refine_refused(Mesh& mesh, const Point& x, double h, RefusalCode cod
 
 TEST(Bisect2d, RefineAroundRefusals) {
     Mesh mesh = test::planar_grid(2);
-    expect_refine_refused(mesh, {2, 3, 0}, 0.5, RefusalCode::not_found, "refine_around: point (2, 3) is not in the mesh");
+    expect_refine_refused(mesh, {2, 3, 0}, 0.5, RefusalCode::not_found,
+                          "refine_around: point (2, 3) is not in the mesh");
     expect_refine_refused(mesh, {-0.25, 1, 0}, 0.5, RefusalCode::not_found,
                           "refine_around: point (-0.25, 1) is not in the mesh");
     expect_refine_refused(mesh, {NAN, 1, 0}, 0.5, RefusalCode::not_found,
                           "refine_around: point (nan, 1) is not in the mesh");
-    expect_refine_refused(mesh, {1, 1, 0}, 0, RefusalCode::bad_argument, "refine_around: size h = 0 is not a positive number");
+    expect_refine_refused(mesh, {1, 1, 0}, 0, RefusalCode::bad_argument,
+                          "refine_around: size h = 0 is not a positive number");
     expect_refine_refused(mesh, {1, 1, 0}, -1, RefusalCode::bad_argument,
                           "refine_around: size h = -1 is not a positive number");
     expect_refine_refused(mesh, {1, 1, 0}, NAN, RefusalCode::bad_argument,

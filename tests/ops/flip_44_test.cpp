@@ -159,7 +159,8 @@ TEST(Flip44, RefusesTheDiagonalOutsideANonConvexRing) {
             EXPECT_TRUE(trial.simplex((*result)[0]).contains(1));
         } else {
             EXPECT_EQ(result.reason().rfind("flip_44: new tetrahedron ", 0), 0u) << result.reason();
-            EXPECT_TRUE(result.code() == RefusalCode::would_invert || result.code() == RefusalCode::would_flatten)
+            EXPECT_TRUE(result.code() == RefusalCode::would_invert ||
+                        result.code() == RefusalCode::would_flatten)
                 << to_string(result.code());
             expect_same_state(trial, mesh);
             ASSERT_TRUE(trial.validate().ok());

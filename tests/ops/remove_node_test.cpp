@@ -293,7 +293,8 @@ TEST(RemoveNode, RefusesMixedLabels) {
     const std::vector<ElementId> around = star(mesh, 12);
     mesh.set_label(around[2], 5);
     mesh.set_label(around[4], -1);
-    expect_refused(mesh, 12, RefusalCode::label_conflict, "remove_node: the star of vertex 12 mixes element labels -1 and 5");
+    expect_refused(mesh, 12, RefusalCode::label_conflict,
+                   "remove_node: the star of vertex 12 mixes element labels -1 and 5");
 }
 
 // The interior edge from v = 12 = (2,2) to (3,2) carries a face label (say an interface drawn

@@ -202,7 +202,8 @@ public:
         for (const Edge& e : m_splits) {
             auto split = split_edge(mesh, e.a, e.b, 0.5);
             if (!split)
-                return Refusal{RefusalCode::internal_error, operation + ": internal error, a planned bisection was refused: " +
+                return Refusal{RefusalCode::internal_error,
+                               operation + ": internal error, a planned bisection was refused: " +
                                split.reason()};
             results.push_back(std::move(*split));
         }
@@ -252,8 +253,7 @@ private:
                     if (after == Sign::zero || after != before) {
                         m_reference.pop_back();
                         m_deformed.pop_back();
-                        return Refusal{after == Sign::zero ? RefusalCode::would_flatten
-                                                           : RefusalCode::would_invert,
+                        return Refusal{orientation_code(after),
                                        operation + ": new element " + to_text(child) +
                                            (after == Sign::zero ? " would be flat"
                                                                 : " would be inverted") +

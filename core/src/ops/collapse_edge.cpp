@@ -54,11 +54,16 @@ std::string in_the(Positions positions) {
 Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail::MovedVertex& moved,
                            const CollapseOptions& options) {
     if (!(options.boundary_tolerance >= 0 && options.boundary_tolerance < 1))
-        return Refusal{RefusalCode::bad_argument, "collapse_edge: boundary tolerance must be in [0, 1)"};
+        return Refusal{RefusalCode::bad_argument,
+                       "collapse_edge: boundary tolerance must be in [0, 1)"};
     const std::size_t n = mesh.vertex_count();
     if (from >= n || to >= n)
-        return Refusal{RefusalCode::not_found, "collapse_edge: " + std::to_string(from >= n ? from : to) + " is not a vertex"};
-    if (from == to) return Refusal{RefusalCode::bad_argument, "collapse_edge: the two ends are the same vertex"};
+        return Refusal{
+            RefusalCode::not_found,
+            "collapse_edge: " + std::to_string(from >= n ? from : to) + " is not a vertex"};
+    if (from == to)
+        return Refusal{RefusalCode::bad_argument,
+                       "collapse_edge: the two ends are the same vertex"};
     // Both stars are walked once (in sxk::star order) and serve every check and the edit.
     Star star_from, star_to;
     detail::star_into(mesh, from, star_from);
@@ -66,22 +71,25 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
     const Simplex edge(+1, {from, to});
     if (std::none_of(star_from.begin(), star_from.end(),
                      [&](ElementId t) { return mesh.simplex(t).contains(to); }))
-        return Refusal{RefusalCode::not_found, "collapse_edge: " + to_text(edge) + " is not an edge"};
+        return Refusal{RefusalCode::not_found,
+                       "collapse_edge: " + to_text(edge) + " is not an edge"};
 
     // The boundary keeps its shape (thesis §3.2.3: collapses must not change the domain): a
     // boundary vertex may only slide along the boundary, i.e. along a boundary edge.
     if (on_boundary(mesh, star_from, from) && !on_boundary(mesh, star_from, from, to))
-        return Refusal{RefusalCode::moves_boundary, "collapse_edge: " + to_text(edge) +
-                       " is interior but vertex " + std::to_string(from) +
-                       " is on the boundary: the collapse would move the boundary"};
+        return Refusal{RefusalCode::moves_boundary,
+                       "collapse_edge: " + to_text(edge) + " is interior but vertex " +
+                           std::to_string(from) +
+                           " is on the boundary: the collapse would move the boundary"};
 
     // Link condition (thesis Fig. 3.10): otherwise the result is not a manifold. Triangle meshes
     // test it on the two stars directly (split_collapse_checks.hpp: the same answer).
     if (!(mesh.topological_dimension() == 2
               ? detail::link_condition_holds_2d(mesh, star_from, star_to, from, to)
               : detail::link_condition_holds(mesh, star_from, star_to, from, to)))
-        return Refusal{RefusalCode::link_condition, "collapse_edge: " + to_text(edge) +
-                       " violates the link condition (the result would not be a manifold)"};
+        return Refusal{RefusalCode::link_condition,
+                       "collapse_edge: " + to_text(edge) +
+                           " violates the link condition (the result would not be a manifold)"};
 
     // Boundary faces whose vertex moves must keep their line / plane: for from, the faces of
     // star(from) not containing to (they get `to` in place of `from`); for the point overload
@@ -99,7 +107,8 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                     const Simplex face = tau.subn(i);  // invariant 7.1
                     if (!face.contains(mover) || (face.contains(from) && face.contains(to))) continue;
                     if (!on_hull_of(face, mesh, target, positions, options.boundary_tolerance))
-                        return Refusal{RefusalCode::moves_boundary, "collapse_edge: boundary face " + to_text(face) +
+                        return Refusal{RefusalCode::moves_boundary,
+                                       "collapse_edge: boundary face " + to_text(face) +
                                        " would leave its " + (face.count() == 2 ? "line" : "plane") +
                                        in_the(positions) + ": the collapse would move the boundary"};
                 }
@@ -137,7 +146,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
             if (!surface) {
                 const Sign s = detail::simplex_orientation(mesh, reshaped(i), positions, moved);
                 if (s != Sign::positive)
-                    return Refusal{s == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                    return Refusal{detail::orientation_code(s),
                                    "collapse_edge: element " + to_text(reshaped(i)) +
                                        (s == Sign::zero ? " would be flat" : " would be inverted") +
                                        in_the(positions),
@@ -161,7 +170,8 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
             const detail::TriangleNormal new_normal =
                 detail::triangle_normal(new_points[0], new_points[1], new_points[2]);
             if (detail::collinear_filtered(new_points[0], new_points[1], new_points[2], new_normal))
-                return Refusal{RefusalCode::would_flatten, "collapse_edge: element " + to_text(reshaped(i)) + " would be flat" +
+                return Refusal{RefusalCode::would_flatten,
+                               "collapse_edge: element " + to_text(reshaped(i)) + " would be flat" +
                                    in_the(positions),
                                i};
             const detail::TriangleNormal old_normal =
@@ -169,8 +179,9 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
             if (detail::normal_alignment_filtered(old_points[0], old_points[1], old_points[2], old_normal,
                                                   new_points[0], new_points[1], new_points[2],
                                                   new_normal) != Sign::positive)
-                return Refusal{RefusalCode::would_invert, "collapse_edge: triangle " + to_text(reshaped(i)) + " would turn over" +
-                                   in_the(positions),
+                return Refusal{RefusalCode::would_invert,
+                               "collapse_edge: triangle " + to_text(reshaped(i)) +
+                                   " would turn over" + in_the(positions),
                                i};
         }
 

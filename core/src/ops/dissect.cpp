@@ -43,15 +43,18 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
         const Simplex& sigma = cut_faces[i];
         const std::string name = "dissect: cut face " + std::to_string(i);
         if (sigma.count() != d)
-            return Refusal{RefusalCode::bad_argument, name + " has " + std::to_string(sigma.count()) + " vertices, not " +
+            return Refusal{RefusalCode::bad_argument,
+                           name + " has " + std::to_string(sigma.count()) + " vertices, not " +
                                std::to_string(d),
                            i};
         bool known = sigma.has_distinct_vertices();
         for (VertexId v : sigma.vertices()) known = known && v < mesh.vertex_count();
         if (!known)
-            return Refusal{RefusalCode::bad_argument, name + " " + to_text(sigma) + " has a repeated or unknown vertex", i};
+            return Refusal{RefusalCode::bad_argument,
+                           name + " " + to_text(sigma) + " has a repeated or unknown vertex", i};
         if (!is_mesh_face(mesh, sigma))
-            return Refusal{RefusalCode::not_found, name + " " + to_text(sigma) + " is not a face of the mesh", i};
+            return Refusal{RefusalCode::not_found,
+                           name + " " + to_text(sigma) + " is not a face of the mesh", i};
         cut.insert(unoriented(sigma));
         cut_vertices.insert(cut_vertices.end(), sigma.vertices().begin(), sigma.vertices().end());
     }

@@ -7,13 +7,16 @@
 namespace sxk {
 
 Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlipOptions& options) {
-    if (mesh.topological_dimension() != 3) return Refusal{RefusalCode::wrong_dimension, "flip_23: needs a tetrahedral mesh"};
+    if (mesh.topological_dimension() != 3)
+        return Refusal{RefusalCode::wrong_dimension, "flip_23: needs a tetrahedral mesh"};
     if (!mesh.is_face(face))
-        return Refusal{RefusalCode::not_found, "flip_23: " + std::to_string(face) + " is not a face"};
+        return Refusal{RefusalCode::not_found,
+                       "flip_23: " + std::to_string(face) + " is not a face"};
     const FaceId other = mesh.mate(face);
     if (other == invalid_id)
         return Refusal{RefusalCode::not_applicable, "flip_23: face " + std::to_string(face) + " " +
-                       to_text(mesh.face_simplex(face)) + " is on the boundary"};
+                                                        to_text(mesh.face_simplex(face)) +
+                                                        " is on the boundary"};
     const ElementId t0 = mesh.face_element(face);
     const ElementId t1 = mesh.face_element(other);
     const std::array<ElementId, 2> pair{t0, t1};
@@ -24,8 +27,8 @@ Outcome<std::array<ElementId, 3>> flip_23(Mesh& mesh, FaceId face, const TetFlip
     // Thesis Fig. 5.9: if p and q are already joined elsewhere, the flip would represent the
     // edge pq twice and the result would not be a manifold complex.
     if (!detail::embedding_proves_absence(options) && detail::edge_exists(mesh, p, q))
-        return Refusal{RefusalCode::not_manifold, "flip_23: edge " + to_text(Simplex(+1, {p, q})) +
-                       " already exists"};
+        return Refusal{RefusalCode::not_manifold,
+                       "flip_23: edge " + to_text(Simplex(+1, {p, q})) + " already exists"};
 
     // simplex(t0) = sigma.sup(p) with sigma = face_simplex(face); substituting q for one vertex
     // of sigma keeps the orientation consistent (kernel.md: substituted re-sorts with its sign),

@@ -31,7 +31,8 @@ Outcome<std::array<ElementId, 2>> flip_32(Mesh& mesh, FaceId entry, int j,
     // the flip would represent it three times.
     if (!detail::embedding_proves_absence(options) &&
         detail::star_has(mesh, c, [&](const Simplex& s) { return s.contains(d) && s.contains(e); }))
-        return Refusal{RefusalCode::not_manifold, "flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) + " already exists"};
+        return Refusal{RefusalCode::not_manifold,
+                       "flip_32: triangle " + to_text(Simplex(+1, {c, d, e})) + " already exists"};
     // Replacing b (resp. a) by e in <ab,c,d> gives the tetrahedron <cde,a> (resp. <cde,b>) with
     // the orientation the ring induces: exactly the inverse of flip_23's substitutions.
     const std::array<Simplex, 2> created{tau.substituted(b, e), tau.substituted(a, e)};

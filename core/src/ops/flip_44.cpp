@@ -11,7 +11,8 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     if (auto refused = detail::refuse_bad_edge_arguments(mesh, entry, j, "flip_44"))
         return *refused;
     if (diagonal != 0 && diagonal != 1)
-        return Refusal{RefusalCode::bad_argument, "flip_44: diagonal " + std::to_string(diagonal) + " is not 0 or 1"};
+        return Refusal{RefusalCode::bad_argument,
+                       "flip_44: diagonal " + std::to_string(diagonal) + " is not 0 or 1"};
     const Simplex edge = mesh.face_simplex(entry).subn(j);
     const VertexId a = edge.vertex(0);
     const VertexId b = edge.vertex(1);
@@ -32,8 +33,8 @@ Outcome<std::array<ElementId, 4>> flip_44(Mesh& mesh, FaceId entry, int j, int d
     const std::size_t m = static_cast<std::size_t>(diagonal);
     const VertexId u = v[m], w = v[m + 2];
     if (!detail::embedding_proves_absence(options) && detail::edge_exists(mesh, u, w))
-        return Refusal{RefusalCode::not_manifold, "flip_44: edge " + to_text(Simplex(+1, {u, w})) +
-                       " already exists"};
+        return Refusal{RefusalCode::not_manifold,
+                       "flip_44: edge " + to_text(Simplex(+1, {u, w})) + " already exists"};
 
     // As flip_23 on the face <a,b,v[m+1]> (apexes v[m], v[m+2]) then flip_32 on the edge ab
     // (ring v[m], v[m+2], v[m+3]); every tetrahedron is a vertex substitution of

@@ -35,10 +35,12 @@ const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
 
 Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipOptions& options) {
     if (mesh.topological_dimension() != 2)
-        return Refusal{RefusalCode::wrong_dimension, "flip_edge: needs a triangle mesh (topological dimension 2), this one has "
+        return Refusal{RefusalCode::wrong_dimension,
+                       "flip_edge: needs a triangle mesh (topological dimension 2), this one has "
                        "dimension " + std::to_string(mesh.topological_dimension())};
     if (!mesh.is_face(edge))
-        return Refusal{RefusalCode::not_found, "flip_edge: " + std::to_string(edge) + " is not a face of the mesh"};
+        return Refusal{RefusalCode::not_found,
+                       "flip_edge: " + std::to_string(edge) + " is not a face of the mesh"};
 
     // face_simplex(edge), c and d without Mesh::face_slot calls: t0's slot of `edge` is the
     // index of c (invariant 7.1)
@@ -50,7 +52,8 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     const VertexId b = edge_simplex.sign() > 0 ? edge_simplex.vertex(1) : edge_simplex.vertex(0);
     const FaceId mate = mesh.mate(edge);
     if (mate == invalid_id)
-        return Refusal{RefusalCode::not_applicable, "flip_edge: edge " + vertex_set(a, b) + " is on the boundary"};
+        return Refusal{RefusalCode::not_applicable,
+                       "flip_edge: edge " + vertex_set(a, b) + " is on the boundary"};
 
     const ElementId t1 = mesh.face_element(mate);
     const std::array<ElementId, 2> pair{t0, t1};
@@ -64,9 +67,10 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     // triangles, from t0) says what is actually wrong, and proves what replace_elements would
     // otherwise check (see below).
     if (detail::fan_has_edge(mesh, t0, c, d))
-        return Refusal{RefusalCode::not_manifold, "flip_edge: new edge " + vertex_set(c, d) +
-                       " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
-                       " is topologically impossible"};
+        return Refusal{RefusalCode::not_manifold,
+                       "flip_edge: new edge " + vertex_set(c, d) +
+                           " already exists (thesis Fig. 5.9), flipping edge " + vertex_set(a, b) +
+                           " is topologically impossible"};
 
     const std::array<std::array<VertexId, 3>, 2> new_triangles{{{a, d, c}, {d, b, c}}};
     for (Positions positions : {Positions::reference, Positions::deformed}) {
@@ -78,10 +82,10 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             for (const auto& triangle : new_triangles) {
                 const Sign s = orient2d(p(triangle[0]), p(triangle[1]), p(triangle[2]));
                 if (s != Sign::positive)
-                    return Refusal{s == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
-                                   "flip_edge: new triangle " + vertex_set(triangle) + " would be " +
-                                   (s == Sign::zero ? "flat" : "inverted") + " in the " +
-                                   positions_name(positions) + " positions"};
+                    return Refusal{detail::orientation_code(s),
+                                   "flip_edge: new triangle " + vertex_set(triangle) +
+                                       " would be " + (s == Sign::zero ? "flat" : "inverted") +
+                                       " in the " + positions_name(positions) + " positions"};
             }
         } else {
             // a triangle in space has no orientation of its own, but a collinear one has no
@@ -93,7 +97,8 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             for (std::size_t i = 0; i < 2; ++i) {
                 const auto& triangle = new_triangles[i];
                 if (detail::collinear_filtered(p(triangle[0]), p(triangle[1]), p(triangle[2]), normals[i]))
-                    return Refusal{RefusalCode::would_flatten, "flip_edge: new triangle " + vertex_set(triangle) +
+                    return Refusal{RefusalCode::would_flatten,
+                                   "flip_edge: new triangle " + vertex_set(triangle) +
                                    " would be degenerate (collinear vertices) in the " +
                                    positions_name(positions) + " positions"};
             }
@@ -103,9 +108,12 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
             if (!options.topology_only &&
                 detail::normal_alignment_filtered(p(a), p(d), p(c), normals[0], p(d), p(b), p(c),
                                                   normals[1]) == Sign::negative)
-                return Refusal{RefusalCode::would_invert, "flip_edge: flipping edge " + vertex_set(a, b) + " to " + vertex_set(c, d) +
-                               " would fold the surface (the new triangles' normals are opposite) in the " +
-                               positions_name(positions) + " positions"};
+                return Refusal{RefusalCode::would_invert,
+                               "flip_edge: flipping edge " + vertex_set(a, b) + " to " +
+                                   vertex_set(c, d) +
+                                   " would fold the surface (the new triangles' normals are "
+                                   "opposite) in the " +
+                                   positions_name(positions) + " positions"};
         }
     }
 
@@ -113,7 +121,8 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     // face, so the new elements have the orientation of the old ones
     const std::array<ElementId, 2> old_elements{t0, t1};
     const std::array<Simplex, 2> new_simplexes{Simplex(+1, {a, d, c}), Simplex(+1, {d, b, c})};
-    if (auto refused = detail::refuse_vanishing_label(mesh, old_elements, new_simplexes, "flip_edge"))
+    if (auto refused =
+            detail::refuse_vanishing_label(mesh, old_elements, new_simplexes, "flip_edge"))
         return *refused;
     // Both new triangles and the new edge pair contain the edge c-d, which is not in the mesh
     // (checked above), and the hull edges are reused: the star checks of replace_elements are

@@ -24,12 +24,14 @@ namespace sxk::detail {
 
 // A flip across an interface between materials (elements with different labels) would move
 // the interface: refused, so that flips keep every material region's shape.
-inline std::optional<Refusal> refuse_material_interface(const Mesh& mesh, std::span<const ElementId> elements,
+inline std::optional<Refusal> refuse_material_interface(const Mesh& mesh,
+                                                        std::span<const ElementId> elements,
                                                         const char* operation) {
     for (const ElementId t : elements)
         if (mesh.label(t) != mesh.label(elements[0]))
-            return Refusal{RefusalCode::label_conflict,
-                           std::string(operation) + ": elements have different labels (a material interface)"};
+            return Refusal{
+                RefusalCode::label_conflict,
+                std::string(operation) + ": elements have different labels (a material interface)"};
     return std::nullopt;
 }
 
@@ -56,12 +58,16 @@ inline std::optional<std::pair<Simplex, int>> vanishing_label(const Mesh& mesh,
 
 // "<operation>: face <a,b,c> carries label 7 (a constraint: an interface or a boundary patch)",
 // or nothing when no label would vanish.
-inline std::optional<Refusal> refuse_vanishing_label(const Mesh& mesh, std::span<const ElementId> old,
-                                                     std::span<const Simplex> created, const char* operation) {
+inline std::optional<Refusal> refuse_vanishing_label(const Mesh& mesh,
+                                                     std::span<const ElementId> old,
+                                                     std::span<const Simplex> created,
+                                                     const char* operation) {
     const auto vanishing = vanishing_label(mesh, old, created);
     if (!vanishing) return std::nullopt;
-    return Refusal{RefusalCode::label_conflict, std::string(operation) + ": face " + to_text(vanishing->first) + " carries label " +
-            std::to_string(vanishing->second) + " (a constraint: an interface or a boundary patch)"};
+    return Refusal{RefusalCode::label_conflict,
+                   std::string(operation) + ": face " + to_text(vanishing->first) +
+                       " carries label " + std::to_string(vanishing->second) +
+                       " (a constraint: an interface or a boundary patch)"};
 }
 
 }  // namespace sxk::detail

@@ -40,13 +40,15 @@ bool is_locally_delaunay(const Mesh& mesh, FaceId edge, Positions positions) {
 
 Outcome<std::size_t> make_delaunay_by_flips(Mesh& mesh, Positions positions) {
     if (!is_planar_triangle_mesh(mesh))
-        return Refusal{RefusalCode::wrong_dimension, "make_delaunay_by_flips: needs a planar triangle mesh (topological and "
+        return Refusal{RefusalCode::wrong_dimension,
+                       "make_delaunay_by_flips: needs a planar triangle mesh (topological and "
                        "ambient dimension 2)"};
     // Lawson's argument (every illegal edge has a convex quadrilateral) needs a proper
     // triangulation: check every triangle before touching anything, so refusals are clean
     for (ElementId t : elements(mesh))
         if (element_orientation(mesh, t, positions) != Sign::positive)
-            return Refusal{RefusalCode::not_applicable, "make_delaunay_by_flips: element " + std::to_string(t) +
+            return Refusal{RefusalCode::not_applicable,
+                           "make_delaunay_by_flips: element " + std::to_string(t) +
                                " is not counter-clockwise in the " +
                                (positions == Positions::reference ? "reference" : "deformed") + " positions",
                            t};

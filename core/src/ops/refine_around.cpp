@@ -105,14 +105,18 @@ ElementId locate_triangle(const Mesh& mesh, const Point& x, ElementId hint) {
 
 Outcome<RefineAroundResult> refine_around(Mesh& mesh, const Point& x, double h, ElementId hint) {
     if (mesh.topological_dimension() == 3)
-        return Refusal{RefusalCode::wrong_dimension, "refine_around: tetrahedral meshes use refine_around_tetrahedra"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "refine_around: tetrahedral meshes use refine_around_tetrahedra"};
     if (mesh.ambient_dimension() != 2)
-        return Refusal{RefusalCode::wrong_dimension, "refine_around: needs a planar triangle mesh (ambient dimension 2)"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "refine_around: needs a planar triangle mesh (ambient dimension 2)"};
     if (!(h > 0))
-        return Refusal{RefusalCode::bad_argument, "refine_around: size h = " + number_text(h) + " is not a positive number"};
+        return Refusal{RefusalCode::bad_argument,
+                       "refine_around: size h = " + number_text(h) + " is not a positive number"};
     const ElementId start = locate_triangle(mesh, x, hint);
     if (start == invalid_id)
-        return Refusal{RefusalCode::not_found, "refine_around: point (" + number_text(x[0]) + ", " + number_text(x[1]) +
+        return Refusal{RefusalCode::not_found,
+                       "refine_around: point (" + number_text(x[0]) + ", " + number_text(x[1]) +
                        ") is not in the mesh"};
 
     // refine-around's tail recursion as a loop, on the plan: after a bisection the triangle

@@ -77,18 +77,21 @@ ElementId locate_tetrahedron(const Mesh& mesh, const Point& x, ElementId start) 
 Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h) {
     Mesh& mesh = state.mesh();
     if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
     if (!(h > 0)) {  // negated so that NaN is refused too
         std::ostringstream out;
         out << "refine_around_tetrahedra: h = " << h << " is not positive";
         return Refusal{RefusalCode::bad_argument, out.str()};
     }
     if (state.is_stale())
-        return Refusal{RefusalCode::bad_marking, "refine_around_tetrahedra: the bisection state is stale: " +
+        return Refusal{RefusalCode::bad_marking,
+                       "refine_around_tetrahedra: the bisection state is stale: " +
                        state.stale_reason()};
     const ElementId t = locate_tetrahedron(mesh, x, state.last_child());
     if (t == invalid_id)
-        return Refusal{RefusalCode::not_found, "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+        return Refusal{RefusalCode::not_found,
+                       "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
 
     if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {
         // AMP: bisect the leaf containing x and close to conformity, until its refinement edge
@@ -116,7 +119,8 @@ Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& 
 
 Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h) {
     if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
     if (!(h > 0)) {
         std::ostringstream out;
         out << "refine_around_tetrahedra: h = " << h << " is not positive";
@@ -124,7 +128,8 @@ Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double
     }
     const ElementId t = locate_tetrahedron(mesh, x, invalid_id);
     if (t == invalid_id)
-        return Refusal{RefusalCode::not_found, "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+        return Refusal{RefusalCode::not_found,
+                       "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
     // The longest-edge rule needs no stored marks: the refinement edge of an element is a
     // function of its vertices' reference positions, computed when asked (the plan computes the
     // original elements' on first use and its children's from their planned positions). So
@@ -137,7 +142,8 @@ Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double
     if (!planned.ok()) return planned.refusal().prefixed("refine_around_tetrahedra: ");
     for (const auto& e : plan.splits())
         if (auto split = split_edge(mesh, e[0], e[1], 0.5); !split.ok())
-            return Refusal{RefusalCode::internal_error, "refine_around_tetrahedra: internal error, a planned bisection was "
+            return Refusal{RefusalCode::internal_error,
+                           "refine_around_tetrahedra: internal error, a planned bisection was "
                            "refused: " +
                            split.reason()};
     return planned;

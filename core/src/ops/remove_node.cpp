@@ -142,14 +142,17 @@ void make_hole_delaunay(const Mesh& mesh, std::vector<Triangle>& triangles, Posi
 
 Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions positions) {
     if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
-        return Refusal{RefusalCode::wrong_dimension,
+        return Refusal{
+            RefusalCode::wrong_dimension,
             "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)"};
     if (v >= mesh.vertex_count())
-        return Refusal{RefusalCode::not_found, "remove_node: " + std::to_string(v) + " is not a vertex"};
+        return Refusal{RefusalCode::not_found,
+                       "remove_node: " + std::to_string(v) + " is not a vertex"};
     const std::vector<ElementId> around = star(mesh, v);
     const std::string vertex_text = "vertex " + std::to_string(v);
     if (around.empty())
-        return Refusal{RefusalCode::not_applicable, "remove_node: " + vertex_text + " is in no element"};
+        return Refusal{RefusalCode::not_applicable,
+                       "remove_node: " + vertex_text + " is in no element"};
 
     const Link link = link_of(mesh, v, around);
     const bool interior = link.closed && link.vertices.size() == around.size();
@@ -157,9 +160,11 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
         !link.closed && link.vertices.size() == around.size() + 1 &&
         strictly_between(mesh, link.vertices.back(), v, link.vertices.front());
     if (!interior && !straight_boundary)
-        return Refusal{RefusalCode::moves_boundary, "remove_node: " + vertex_text +
-                       " is on the boundary and the boundary is not straight there (its removal "
-                       "would change the domain)"};
+        return Refusal{
+            RefusalCode::moves_boundary,
+            "remove_node: " + vertex_text +
+                " is on the boundary and the boundary is not straight there (its removal "
+                "would change the domain)"};
     // On a straight boundary the two boundary edges w_n-v and v-w_0 become one, w_n-w_0: a face
     // label (Medit/Gmsh boundary reference) they carry moves to it, if they agree.
     const auto edge_key = [](VertexId a, VertexId b) {
@@ -177,7 +182,8 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
             return label ? std::to_string(*label) : std::string("none");
         };
         if (before != after)
-            return Refusal{RefusalCode::label_conflict, "remove_node: the boundary edges at " + vertex_text +
+            return Refusal{RefusalCode::label_conflict,
+                           "remove_node: the boundary edges at " + vertex_text +
                            " carry different face labels (" + text(before) + " and " + text(after) +
                            ")"};
         boundary_label = before;
@@ -188,21 +194,24 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
         if (!link.closed && (i == 0 || i + 1 == link.vertices.size())) continue;
         const auto it = mesh.face_labels().find(edge_key(v, link.vertices[i]));
         if (it != mesh.face_labels().end())
-            return Refusal{RefusalCode::label_conflict, "remove_node: the edge " + to_text(it->first) + " at " + vertex_text +
+            return Refusal{RefusalCode::label_conflict,
+                           "remove_node: the edge " + to_text(it->first) + " at " + vertex_text +
                            " carries face label " + std::to_string(it->second) +
                            " (a constraint)"};
     }
     for (ElementId t : around)
         for (Positions s : both_positions)
             if (element_orientation(mesh, t, s) != Sign::positive)
-                return Refusal{RefusalCode::not_applicable, "remove_node: element " + std::to_string(t) + " of the star of " +
+                return Refusal{RefusalCode::not_applicable,
+                               "remove_node: element " + std::to_string(t) + " of the star of " +
                                vertex_text + " is not counter-clockwise in the " +
                                positions_name(s) + " positions"};
     const auto [lowest, highest] = std::minmax_element(
         around.begin(), around.end(),
         [&](ElementId s, ElementId t) { return mesh.label(s) < mesh.label(t); });
     if (mesh.label(*lowest) != mesh.label(*highest))
-        return Refusal{RefusalCode::label_conflict, "remove_node: the star of " + vertex_text + " mixes element labels " +
+        return Refusal{RefusalCode::label_conflict,
+                       "remove_node: the star of " + vertex_text + " mixes element labels " +
                        std::to_string(mesh.label(*lowest)) + " and " +
                        std::to_string(mesh.label(*highest))};
 
@@ -240,14 +249,16 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
             if (is_ear(i))
                 chosen = i;
         if (chosen == polygon.size())
-            return Refusal{RefusalCode::not_applicable, "remove_node: no ear of the link of " + vertex_text +
+            return Refusal{RefusalCode::not_applicable,
+                           "remove_node: no ear of the link of " + vertex_text +
                            " is valid in both the reference and the deformed positions"};
         triangles.push_back(ear_at(chosen));
         polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(chosen));
     }
     // the last three: v's degree-3 star becomes one triangle (positive: the polygon is simple)
     if (!turns_left_in_both(mesh, polygon[0], polygon[1], polygon[2]))
-        return Refusal{RefusalCode::not_applicable, "remove_node: no ear of the link of " + vertex_text +
+        return Refusal{RefusalCode::not_applicable,
+                       "remove_node: no ear of the link of " + vertex_text +
                        " is valid in both the reference and the deformed positions"};
     triangles.push_back({polygon[0], polygon[1], polygon[2]});
 

@@ -445,7 +445,8 @@ inline std::pair<Point, Point> interpolate(const Mesh& mesh, std::span<const Ver
 // and that is refused rather than built. Nothing when all children are fine.
 // Children of parents containing every vertex of `vanishing_with` (when not empty) are not
 // checked (SplitOptions: the caller removes them in its next edit).
-inline std::optional<Refusal> refuse_bad_children(const Mesh& mesh, std::span<const Simplex> children,
+inline std::optional<Refusal> refuse_bad_children(const Mesh& mesh,
+                                                  std::span<const Simplex> children,
                                                   std::span<const ElementId> parents_of_children,
                                                   const MovedVertex& moved, const char* operation,
                                                   std::span<const VertexId> vanishing_with = {}) {
@@ -466,7 +467,7 @@ inline std::optional<Refusal> refuse_bad_children(const Mesh& mesh, std::span<co
             }
             const Sign child = simplex_orientation(mesh, children[i], positions, moved);
             if (child == Sign::zero || child != parent)
-                return Refusal{child == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                return Refusal{orientation_code(child),
                                std::string(operation) + ": new element " + to_text(children[i]) +
                                    (child == Sign::zero ? " would be flat" : " would be inverted") +
                                    " in the " + positions_text(positions) + " positions",
@@ -503,7 +504,8 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
             parent_of_child.push_back(parent);
             labels.push_back(mesh.label(parent));
         }
-    if (auto refused = refuse_bad_children(mesh, children, parent_of_child, moved, operation, vanishing_with))
+    if (auto refused =
+            refuse_bad_children(mesh, children, parent_of_child, moved, operation, vanishing_with))
         return *refused;
     // Face labels (keyed by vertex set) on the faces of the parents that are split: a face in no
     // child (split_edge: those containing a and b; split_face: abc) passes its label to its

@@ -154,7 +154,8 @@ TetMarking longest_edge_marking(const Mesh& mesh, ElementId t) {
 
 Outcome<TetBisection> TetBisection::with_initial_marking(Mesh& mesh) {
     if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, "tet_bisection: the mesh has triangles, not tetrahedra"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "tet_bisection: the mesh has triangles, not tetrahedra"};
     std::vector<TetMarking> markings(mesh.element_capacity());
     for (ElementId t : elements(mesh)) markings[t] = longest_edge_marking(mesh, t);
     return TetBisection(mesh, std::move(markings), BisectionRule::longest_edge);
@@ -162,7 +163,8 @@ Outcome<TetBisection> TetBisection::with_initial_marking(Mesh& mesh) {
 
 Outcome<TetBisection> TetBisection::with_amp_marking(Mesh& mesh) {
     if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, "tet_bisection: the mesh has triangles, not tetrahedra"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "tet_bisection: the mesh has triangles, not tetrahedra"};
     // AMP's initial marking: the longest edge (one strict order) for the refinement edge and
     // every face mark, so neighbours agree on each shared face; flags unset
     std::vector<TetMarking> markings(mesh.element_capacity());
@@ -172,7 +174,8 @@ Outcome<TetBisection> TetBisection::with_amp_marking(Mesh& mesh) {
 
 Outcome<TetBisection> TetBisection::for_kuhn_mesh(Mesh& mesh) {
     if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, "tet_bisection: the mesh has triangles, not tetrahedra"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       "tet_bisection: the mesh has triangles, not tetrahedra"};
     std::vector<TetMarking> markings(mesh.element_capacity());
     for (ElementId t : elements(mesh)) {
         // Maubach's tuple: the vertices by increasing coordinate sum; consecutive ones must
@@ -206,7 +209,8 @@ Outcome<TetBisection> TetBisection::for_kuhn_mesh(Mesh& mesh) {
             axis_used[axis] = true;
         }
         if (!kuhn)
-            return Refusal{RefusalCode::not_applicable, "tet_bisection: element " + std::to_string(t) +
+            return Refusal{RefusalCode::not_applicable,
+                           "tet_bisection: element " + std::to_string(t) +
                                " is not a Kuhn tetrahedron",
                            t};
         // tag 3: refinement edge x0-x3; face x0x1x2 marked x0x2 (unmarked x1), face x1x2x3
@@ -229,7 +233,8 @@ Outcome<Done> TetBisection::check_marking() const {
         std::sort(sorted.begin(), sorted.end());
         const auto v = mesh.simplex(t).vertices();
         if (!std::equal(sorted.begin(), sorted.end(), v.begin()))
-            return Refusal{RefusalCode::bad_marking, "tet_bisection: the marking of element " + std::to_string(t) +
+            return Refusal{RefusalCode::bad_marking,
+                           "tet_bisection: the marking of element " + std::to_string(t) +
                                " names other vertices than the element",
                            t};
         for (int i = 0; i < 4; ++i) {
@@ -240,7 +245,8 @@ Outcome<Done> TetBisection::check_marking() const {
             const Edge mine = face_mark(marking, mesh.simplex(t).vertex(i));
             const Edge theirs = face_mark(m_markings[u], mesh.opposite_vertex(u, other));
             if (mine != theirs)
-                return Refusal{RefusalCode::bad_marking, "tet_bisection: elements " + std::to_string(t) + " and " +
+                return Refusal{RefusalCode::bad_marking,
+                               "tet_bisection: elements " + std::to_string(t) + " and " +
                                    std::to_string(u) + " disagree on the marked edge of face " +
                                    to_text(mesh.face_simplex(f)),
                                t};

@@ -123,7 +123,7 @@ std::optional<Refusal> AmpClosurePlan::bisect(int n, std::vector<int>& work) {
             const Sign after = orientation(children[i], positions);
             if (after == Sign::zero || after != before) {
                 if (created) m_new_vertices.pop_back();
-                return Refusal{after == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                return Refusal{orientation_code(after),
                                "new element " + to_text(children[i]) +
                                    (after == Sign::zero ? " would be flat" : " would be inverted") +
                                    " in the " + positions_text(positions) + " positions",
@@ -266,7 +266,8 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
         if (!added.ok() || mesh.reference(*added) != planned.reference ||
             mesh.deformed(*added) != planned.deformed) {
             undo_vertices();
-            return Refusal{RefusalCode::internal_error, "internal error, a planned vertex differs from the one added" +
+            return Refusal{RefusalCode::internal_error,
+                           "internal error, a planned vertex differs from the one added" +
                            (added.ok() ? std::string() : ": " + added.reason())};
         }
     }
@@ -275,7 +276,8 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
     TetBisectionAccess::set_own_edit(state, false);
     if (!replaced.ok()) {
         undo_vertices();
-        return Refusal{RefusalCode::internal_error, "internal error, the planned refinement was refused: " + replaced.reason()};
+        return Refusal{RefusalCode::internal_error,
+                       "internal error, the planned refinement was refused: " + replaced.reason()};
     }
     for (const Simplex& face : split_faces) mesh.face_labels().erase(face);
     for (const auto& [face, label] : moved_labels) mesh.face_labels()[face] = label;

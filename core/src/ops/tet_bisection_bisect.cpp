@@ -12,9 +12,11 @@ namespace sxk {
 Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t) {
     Mesh& mesh = *state.m_mesh;
     if (!mesh.is_element(t))
-        return Refusal{RefusalCode::not_found, "bisect_tetrahedron: " + std::to_string(t) + " is not an element"};
+        return Refusal{RefusalCode::not_found,
+                       "bisect_tetrahedron: " + std::to_string(t) + " is not an element"};
     if (state.is_stale())
-        return Refusal{RefusalCode::bad_marking, "bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
+        return Refusal{RefusalCode::bad_marking,
+                       "bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
 
     if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {
         auto bisected = detail::amp_bisect(state, t);

@@ -237,11 +237,12 @@ private:
                 if (after == Sign::zero || after != before) {
                     m_reference.pop_back();
                     m_deformed.pop_back();
-                    return Refusal{after == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
-                                   "split_edge: new element " + to_text(children[i]) +
-                                       (after == Sign::zero ? " would be flat" : " would be inverted") +
-                                       " in the " + positions_text(positions) + " positions",
-                                   i};
+                    return Refusal{
+                        orientation_code(after),
+                        "split_edge: new element " + to_text(children[i]) +
+                            (after == Sign::zero ? " would be flat" : " would be inverted") +
+                            " in the " + positions_text(positions) + " positions",
+                        i};
                 }
             }
         for (std::size_t i = 0; i < children.size(); ++i) {
@@ -323,7 +324,8 @@ struct TetBisectionAccess {
             auto result = split_edge(mesh, e[0], e[1], 0.5);
             state.m_own_edit = false;
             if (!result.ok())
-                return Refusal{RefusalCode::internal_error, operation + ": internal error, a planned bisection was refused: " +
+                return Refusal{RefusalCode::internal_error,
+                               operation + ": internal error, a planned bisection was refused: " +
                                result.reason()};
             if (state.m_markings.size() < mesh.element_capacity())
                 state.m_markings.resize(mesh.element_capacity());

@@ -50,7 +50,8 @@ Outcome<std::size_t> bisect_recursively(std::size_t element_count, std::array<Ve
         if (blocker != ring.end()) {
             if (stack.size() >= stack_limit) {
                 did_not_end = true;
-                return Refusal{RefusalCode::bad_marking, "the marking is not conforming: the recursion did not end"};
+                return Refusal{RefusalCode::bad_marking,
+                               "the marking is not conforming: the recursion did not end"};
             }
             stack.push_back(refinement_edge(*blocker));
             continue;

@@ -31,14 +31,16 @@ inline Sign tet_orientation(const Mesh& mesh, const Simplex& tau, Positions posi
 
 // Nothing when every new tetrahedron is strictly positive in both positions (or the caller
 // asked for topology only); otherwise a refusal naming the first offender and the positions.
-inline std::optional<Refusal> refuse_non_positive(const Mesh& mesh, std::span<const Simplex> created,
-                                                  const TetFlipOptions& options, const char* operation) {
+inline std::optional<Refusal> refuse_non_positive(const Mesh& mesh,
+                                                  std::span<const Simplex> created,
+                                                  const TetFlipOptions& options,
+                                                  const char* operation) {
     if (options.topology_only) return std::nullopt;
     for (const Positions positions : {Positions::reference, Positions::deformed})
         for (std::size_t i = 0; i < created.size(); ++i) {
             const Sign s = tet_orientation(mesh, created[i], positions);
             if (s != Sign::positive)
-                return Refusal{s == Sign::zero ? RefusalCode::would_flatten : RefusalCode::would_invert,
+                return Refusal{orientation_code(s),
                                std::string(operation) + ": new tetrahedron " + to_text(created[i]) +
                                    (s == Sign::zero ? " would be flat" : " would be inverted") +
                                    " in the " +
@@ -76,13 +78,14 @@ inline VertexId fourth_vertex(const Simplex& tau, VertexId a, VertexId b, Vertex
 inline std::optional<Refusal> refuse_bad_edge_arguments(const Mesh& mesh, FaceId entry, int j,
                                                         const char* operation) {
     if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension, std::string(operation) + ": needs a tetrahedral mesh"};
+        return Refusal{RefusalCode::wrong_dimension,
+                       std::string(operation) + ": needs a tetrahedral mesh"};
     if (!mesh.is_face(entry))
         return Refusal{RefusalCode::not_found,
                        std::string(operation) + ": " + std::to_string(entry) + " is not a face"};
     if (j < 0 || j > 2)
-        return Refusal{RefusalCode::bad_argument,
-                       std::string(operation) + ": edge index " + std::to_string(j) + " is not in 0..2"};
+        return Refusal{RefusalCode::bad_argument, std::string(operation) + ": edge index " +
+                                                      std::to_string(j) + " is not in 0..2"};
     return std::nullopt;
 }
 
@@ -132,10 +135,12 @@ inline Outcome<EdgeRing> interior_edge_ring(const Mesh& mesh, FaceId entry, int 
     SmallVector<ElementId, 64> ring;
     cycle_around_into(mesh, entry, j, ring);
     if (ring_touches_boundary(mesh, ring, a, b))
-        return Refusal{RefusalCode::not_applicable,
-                       std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) + " is on the boundary"};
+        return Refusal{RefusalCode::not_applicable, std::string(operation) + ": edge " +
+                                                        to_text(Simplex(+1, {a, b})) +
+                                                        " is on the boundary"};
     if (ring.size() != degree)
-        return Refusal{RefusalCode::not_applicable, std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) +
+        return Refusal{RefusalCode::not_applicable,
+                       std::string(operation) + ": edge " + to_text(Simplex(+1, {a, b})) +
                        " has degree " + std::to_string(ring.size()) + ", not " +
                        std::to_string(degree)};
     EdgeRing result;
