@@ -146,6 +146,8 @@ Refusal match_faces(std::span<const Simplex> simplexes, std::size_t vertex_count
 
 Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
                                     std::span<const int> labels) {
+    if (m_undo != nullptr) return Refusal{"assign_elements: not inside an EditJournal step"};
+    ++m_revision;
     const int k = m_dimension + 1;
     const std::size_t n = simplexes.size();
     if (m_element_count != 0) return Refusal{"assign_elements needs a mesh without elements"};
@@ -254,6 +256,8 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
 
 Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes,
                                               std::span<const int> labels) {
+    if (m_undo != nullptr) return Refusal{"assign_elements: not inside an EditJournal step"};
+    ++m_revision;
     const int k = m_dimension + 1;
     if (m_element_count != 0) return Refusal{"assign_elements needs a mesh without elements"};
     if (!labels.empty() && labels.size() != simplexes.size())
