@@ -92,7 +92,7 @@ private:
 struct Snapshot {
     std::vector<std::uint64_t> positions;  // bit patterns, reference then deformed per vertex
     std::vector<ElementId> anchors;
-    std::vector<std::int64_t> elements;  // per slot: live, sign, vertices, label, faces
+    std::vector<std::int64_t> elements;  // per slot: live, sign, vertices, label, faces, neighbours
     std::vector<FaceId> faces;           // per slot: element, mate
     std::vector<FaceId> boundary;
     FaceLabels face_labels;
@@ -115,6 +115,7 @@ inline Snapshot snapshot(const Mesh& mesh) {
         for (const VertexId v : tau.vertices()) s.elements.push_back(v);
         s.elements.push_back(mesh.label(t));
         for (const FaceId f : mesh.faces(t)) s.elements.push_back(f);
+        for (int i = 0; i < tau.count(); ++i) s.elements.push_back(mesh.neighbor(t, i));
     }
     for (FaceId f = 0; f < mesh.face_capacity(); ++f) {
         s.faces.push_back(mesh.is_face(f) ? mesh.face_element(f) : invalid_id);

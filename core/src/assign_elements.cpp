@@ -149,6 +149,10 @@ std::optional<Refusal> match_faces(std::span<const Simplex> simplexes, std::size
 
 Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
                                     std::span<const int> labels) {
+    if (m_undo != nullptr)
+        return Refusal{RefusalCode::not_applicable,
+                       "assign_elements: not inside an EditJournal step"};
+    ++m_revision;
     const int k = m_dimension + 1;
     const std::size_t n = simplexes.size();
     if (m_element_count != 0)
@@ -262,6 +266,10 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
 
 Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes,
                                               std::span<const int> labels) {
+    if (m_undo != nullptr)
+        return Refusal{RefusalCode::not_applicable,
+                       "assign_elements: not inside an EditJournal step"};
+    ++m_revision;
     const int k = m_dimension + 1;
     if (m_element_count != 0)
         return Refusal{RefusalCode::not_applicable,

@@ -97,6 +97,7 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
 
     // ---- the change -----------------------------------------------------------------------------
     m_boundary.reserve(m_boundary.size() + m * uk);
+    ++m_revision;
     detail::EditLog log(!m_watchers.empty());
     auto is_changed = [&](ElementId t) {
         return std::binary_search(changed_sorted.begin(), changed_sorted.end(), t);
@@ -116,7 +117,7 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
     for (const ElementSubstitution& s : substitution)
         for (int j = 0; j < k; ++j) {
             const FaceId f = m_elements[s.element].faces[static_cast<std::size_t>(j)];
-            if (m_faces[f].mate == invalid_id) m_boundary.erase(m_elements[s.element].simplex.subn(j));
+            if (m_faces[f].mate == invalid_id) boundary_erase(m_elements[s.element].simplex.subn(j));
         }
     for (const ElementSubstitution& s : substitution)
         for (int j = 0; j < k; ++j) {
@@ -125,16 +126,16 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
             if (mate_face == invalid_id) continue;
             if (!is_changed(m_faces[mate_face].element)) {
                 log.touch(*this, mate_face);
-                m_boundary.insert(face_simplex(mate_face), mate_face);
+                boundary_insert(face_simplex(mate_face), mate_face);
                 unlink_neighbor(mate_face);
             }
-            m_faces[mate_face].mate = invalid_id;
-            m_faces[f].mate = invalid_id;
+            face_for_write(mate_face).mate = invalid_id;
+            face_for_write(f).mate = invalid_id;
         }
 
     // substitute: the face opposite vertex a_j is opposite pi(a_j) afterwards
     for (std::size_t i = 0; i < m; ++i) {
-        ElementRecord& e = m_elements[substitution[i].element];
+        ElementRecord& e = element_for_write(substitution[i].element);
         log.element_changed(substitution[i].element, e.simplex);
         std::array<FaceId, 4> faces{invalid_id, invalid_id, invalid_id, invalid_id};
         for (int j = 0; j < k; ++j)
@@ -154,11 +155,11 @@ Outcome<Done> Mesh::change_elements(std::span<const ElementSubstitution> substit
             const FaceId b = m_boundary.find(sigma);
             if (b != invalid_id && face_simplex(b) == sigma.mate()) {
                 log.touch(*this, b);
-                m_faces[f].mate = b;
-                m_faces[b].mate = f;
-                m_boundary.erase(sigma);
+                face_for_write(f).mate = b;
+                face_for_write(b).mate = f;
+                boundary_erase(sigma);
             } else {
-                m_boundary.insert(sigma, f);
+                boundary_insert(sigma, f);
             }
         }
     }

@@ -3,6 +3,8 @@
 #include "sxk/mesh.hpp"
 
 #include <algorithm>
+
+#include "undo_log.hpp"
 #include <stdexcept>
 #include <string>
 
@@ -36,8 +38,11 @@ Mesh::Mesh(const Mesh& other)
 
 Mesh& Mesh::operator=(const Mesh& other) {
     if (this != &other) {
+        if (m_undo != nullptr) throw std::logic_error("Mesh: assigned to inside an open EditJournal step");
         Mesh copy(other);
         copy.m_watchers = std::move(m_watchers);
+        copy.m_journal = m_journal;
+        copy.m_revision = m_revision + 1;  // a history of the old content no longer fits
         *this = std::move(copy);
         // the watchers stay with this mesh, whose content is new to them
         for (Watcher* w : m_watchers) w->init(*this);
@@ -50,6 +55,8 @@ Mesh& Mesh::operator=(Mesh&& other) noexcept = default;
 Mesh::~Mesh() = default;
 
 VertexId Mesh::add_vertex(const Point& reference, const Point& deformed) {
+    if (m_undo != nullptr) m_undo->vertex_added();
+    ++m_revision;
     m_reference.push_back(reference);
     m_deformed.push_back(deformed);
     m_vertex_element.push_back(invalid_id);
@@ -110,18 +117,20 @@ ElementId Mesh::allocate_element() {
     if (m_free_element != invalid_id) {
         const ElementId t = m_free_element;
         m_free_element = m_elements[t].faces[0];
-        m_elements[t] = ElementRecord{};
+        element_for_write(t) = ElementRecord{};
         ++m_element_count;
         return t;
     }
+    // a fresh id needs no record: a rollback cuts the pool back to its size (note_pools)
     m_elements.emplace_back();
     ++m_element_count;
     return static_cast<ElementId>(m_elements.size() - 1);
 }
 
 void Mesh::free_element(ElementId t) {
-    m_elements[t] = ElementRecord{};
-    m_elements[t].faces[0] = m_free_element;
+    ElementRecord& e = element_for_write(t);
+    e = ElementRecord{};
+    e.faces[0] = m_free_element;
     m_free_element = t;
     --m_element_count;
 }
@@ -130,7 +139,7 @@ FaceId Mesh::allocate_face() {
     if (m_free_face != invalid_id) {
         const FaceId f = m_free_face;
         m_free_face = m_faces[f].mate;
-        m_faces[f] = FaceRecord{};
+        face_for_write(f) = FaceRecord{};
         return f;
     }
     m_faces.emplace_back();
@@ -138,7 +147,7 @@ FaceId Mesh::allocate_face() {
 }
 
 void Mesh::free_face(FaceId f) {
-    m_faces[f] = FaceRecord{invalid_id, m_free_face};
+    face_for_write(f) = FaceRecord{invalid_id, m_free_face};
     m_free_face = f;
 }
 
@@ -163,7 +172,7 @@ std::size_t Mesh::memory_bytes() const {
 }
 
 void Mesh::link_neighbor(ElementId t, int i) {
-    ElementRecord& e = m_elements[t];
+    ElementRecord& e = element_for_write(t);
     const FaceId g = m_faces[e.faces[static_cast<std::size_t>(i)]].mate;
     if (g == invalid_id) {
         e.neighbors[static_cast<std::size_t>(i)] = invalid_id;
@@ -171,9 +180,9 @@ void Mesh::link_neighbor(ElementId t, int i) {
     }
     const ElementId n = m_faces[g].element;
     e.neighbors[static_cast<std::size_t>(i)] = n;
-    ElementRecord& other = m_elements[n];
+    const ElementRecord& other = m_elements[n];
     for (int j = 0; j <= m_dimension; ++j)
-        if (other.faces[static_cast<std::size_t>(j)] == g) other.neighbors[static_cast<std::size_t>(j)] = t;
+        if (other.faces[static_cast<std::size_t>(j)] == g) element_for_write(n).neighbors[static_cast<std::size_t>(j)] = t;
 }
 
 void Mesh::link_neighbors(ElementId t) {
@@ -181,9 +190,10 @@ void Mesh::link_neighbors(ElementId t) {
 }
 
 void Mesh::unlink_neighbor(FaceId f) {
-    ElementRecord& e = m_elements[m_faces[f].element];
+    const ElementId t = m_faces[f].element;
     for (int j = 0; j <= m_dimension; ++j)
-        if (e.faces[static_cast<std::size_t>(j)] == f) e.neighbors[static_cast<std::size_t>(j)] = invalid_id;
+        if (m_elements[t].faces[static_cast<std::size_t>(j)] == f)
+            element_for_write(t).neighbors[static_cast<std::size_t>(j)] = invalid_id;
 }
 
 void Mesh::repair_anchors(std::span<const Simplex> added, std::span<const ElementId> added_ids,
@@ -200,16 +210,17 @@ void Mesh::repair_anchors(std::span<const Simplex> added, std::span<const Elemen
     };
     for (std::size_t i = 0; i < added.size(); ++i)
         for (VertexId v : added[i].vertices())
-            if (!holds(m_vertex_element[v], v)) m_vertex_element[v] = added_ids[i];
+            if (!holds(m_vertex_element[v], v)) set_anchor(v, added_ids[i]);
     for (VertexId v : old_vertices) {
         const ElementId a = m_vertex_element[v];
         if (holds(a, v)) continue;
-        m_vertex_element[v] = invalid_id;
+        ElementId anchor = invalid_id;
         for (ElementId n : neighbours)
             if (m_elements[n].simplex.contains(v)) {
-                m_vertex_element[v] = n;
+                anchor = n;
                 break;
             }
+        set_anchor(v, anchor);
     }
 }
 

@@ -17,6 +17,7 @@ std::string_view to_string(RefusalCode code) {
         case RefusalCode::label_conflict: return "label_conflict";
         case RefusalCode::not_applicable: return "not_applicable";
         case RefusalCode::bad_marking: return "bad_marking";
+        case RefusalCode::stale: return "stale";
         case RefusalCode::invalid_mesh: return "invalid_mesh";
         case RefusalCode::too_large: return "too_large";
         case RefusalCode::internal_error: return "internal_error";

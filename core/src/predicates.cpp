@@ -3,6 +3,8 @@
 // operations more than the naive determinant.
 #include "sxk/predicates.hpp"
 
+#include <array>
+
 #include "cgal_kernel.hpp"
 
 namespace sxk {
@@ -45,26 +47,28 @@ Sign normal_alignment(const Point& a, const Point& b, const Point& c, const Poin
     return to_sign(CGAL::sign(n0 * n1));
 }
 
-Sign element_orientation(const Mesh& mesh, ElementId t, Positions positions) {
-    const Simplex& s = mesh.simplex(t);
-    auto point = [&](int j) -> const Point& {
-        return positions == Positions::reference ? mesh.reference(s.vertex(j)) : mesh.deformed(s.vertex(j));
-    };
+Sign simplex_orientation(const Simplex& s, int ambient_dimension, std::span<const Point* const> points) {
     Sign raw;
-    if (mesh.topological_dimension() == 3) {
-        raw = orient3d(point(0), point(1), point(2), point(3));
-    } else if (mesh.ambient_dimension() == 2) {
-        raw = orient2d(point(0), point(1), point(2));
+    if (s.count() == 4) {
+        raw = orient3d(*points[0], *points[1], *points[2], *points[3]);
+    } else if (ambient_dimension == 2) {
+        raw = orient2d(*points[0], *points[1], *points[2]);
     } else {
         // a triangle in space has no orientation of its own: only flatness (collinearity) is
         // decidable; collinear exactly when all three coordinate projections are collinear
-        const Point& a = point(0);
-        const Point& b = point(1);
-        const Point& c = point(2);
-        return collinear(a, b, c) ? Sign::zero : Sign::positive;
+        return collinear(*points[0], *points[1], *points[2]) ? Sign::zero : Sign::positive;
     }
     if (raw == Sign::zero) return raw;
     return (static_cast<int>(raw) * s.sign() > 0) ? Sign::positive : Sign::negative;
+}
+
+Sign element_orientation(const Mesh& mesh, ElementId t, Positions positions) {
+    const Simplex& s = mesh.simplex(t);
+    std::array<const Point*, 4> points{};
+    for (int j = 0; j < s.count(); ++j)
+        points[static_cast<std::size_t>(j)] =
+            positions == Positions::reference ? &mesh.reference(s.vertex(j)) : &mesh.deformed(s.vertex(j));
+    return simplex_orientation(s, mesh.ambient_dimension(), {points.data(), static_cast<std::size_t>(s.count())});
 }
 
 }  // namespace sxk

@@ -408,6 +408,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     make_room(m_elements, m);
     make_room(m_faces, m * uk);
     m_boundary.reserve(m_boundary.size() + m * uk);
+    note_pools();
+    ++m_revision;
     detail::EditLog log(!m_watchers.empty());
     const int default_label = old_elements.empty() ? 0 : m_elements[old_elements[0]].label;
 
@@ -444,12 +446,12 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     for (FaceId g : discard) {
         const FaceId mate_face = m_faces[g].mate;
         if (mate_face == invalid_id) {
-            m_boundary.erase(face_simplex(g));
+            boundary_erase(face_simplex(g));
         } else if (!discarded(mate_face)) {
             // the mate stays (in an element that stays, or reused): it is boundary for now
             log.touch(*this, mate_face);
-            m_faces[mate_face].mate = invalid_id;
-            m_boundary.insert(face_simplex(mate_face), mate_face);
+            face_for_write(mate_face).mate = invalid_id;
+            boundary_insert(face_simplex(mate_face), mate_face);
             unlink_neighbor(mate_face);
         }
         log.freed(*this, g);
@@ -469,8 +471,8 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
         other->face = allocate_face();
         log.created(nf.face);
         log.created(other->face);
-        m_faces[nf.face].mate = other->face;
-        m_faces[other->face].mate = nf.face;
+        face_for_write(nf.face).mate = other->face;
+        face_for_write(other->face).mate = nf.face;
         nf.paired = other->paired = true;
     }
 
@@ -480,12 +482,13 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     for (std::size_t i = 0; i < m; ++i) {
         const ElementId t = allocate_element();
         created[i] = t;
-        m_elements[t].simplex = new_simplexes[i];
-        m_elements[t].label = labels.empty() ? default_label : labels[i];
+        ElementRecord& e = element_for_write(t);
+        e.simplex = new_simplexes[i];
+        e.label = labels.empty() ? default_label : labels[i];
         for (int j = 0; j < k; ++j) {
             const NewFace& nf = new_faces[i * uk + static_cast<std::size_t>(j)];
-            m_elements[t].faces[static_cast<std::size_t>(j)] = nf.face;
-            if (nf.face != invalid_id) m_faces[nf.face].element = t;
+            e.faces[static_cast<std::size_t>(j)] = nf.face;
+            if (nf.face != invalid_id) face_for_write(nf.face).element = t;
         }
         log.element_added(t);
     }
@@ -496,16 +499,16 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
             if (nf.face != invalid_id) continue;
             const FaceId f = allocate_face();
             log.created(f);
-            m_faces[f].element = t;
-            m_elements[t].faces[static_cast<std::size_t>(j)] = f;
+            face_for_write(f).element = t;
+            element_for_write(t).faces[static_cast<std::size_t>(j)] = f;
             const FaceId b = m_boundary.find(nf.sigma);
             if (b != invalid_id && face_simplex(b) == nf.sigma.mate()) {
                 log.touch(*this, b);
-                m_faces[f].mate = b;
-                m_faces[b].mate = f;
-                m_boundary.erase(nf.sigma);
+                face_for_write(f).mate = b;
+                face_for_write(b).mate = f;
+                boundary_erase(nf.sigma);
             } else {
-                m_boundary.insert(nf.sigma, f);
+                boundary_insert(nf.sigma, f);
             }
         }
     }
@@ -518,9 +521,9 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
         for (std::size_t j = 0; j < uk; ++j) {
             const NewFace& nf = new_faces[i * uk + j];
             if (nf.reused && nf.across != invalid_id && !sorted_contains(old_sorted, nf.across)) {
-                m_elements[t].neighbors[j] = nf.across;
+                element_for_write(t).neighbors[j] = nf.across;
                 const FaceId g = m_faces[nf.face].mate;
-                ElementRecord& across = m_elements[nf.across];
+                ElementRecord& across = element_for_write(nf.across);
                 for (std::size_t s = 0; s < uk; ++s)
                     if (across.faces[s] == g) across.neighbors[s] = t;
             } else {

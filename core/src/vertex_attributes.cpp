@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sxk/mesh.hpp"
+#include "undo_log.hpp"
 
 namespace sxk {
 
@@ -35,6 +36,8 @@ Outcome<VertexId> Mesh::add_interpolated_vertex(std::span<const VertexId> parent
                                " is not a vertex",
                            i};
     const auto [reference, deformed] = interpolated_positions(parents, weights);
+    if (m_undo != nullptr) m_undo->vertex_added();
+    ++m_revision;
     m_reference.push_back(reference);
     m_deformed.push_back(deformed);
     m_vertex_element.push_back(invalid_id);
@@ -61,6 +64,8 @@ Outcome<Done> Mesh::remove_last_vertex() {
         return Refusal{RefusalCode::not_applicable,
                        "remove_last_vertex: vertex " + std::to_string(last) + " is in element " +
                        std::to_string(m_vertex_element[last])};
+    if (m_undo != nullptr) m_undo->vertex_removed(*this);
+    ++m_revision;
     m_reference.pop_back();
     m_deformed.pop_back();
     m_vertex_element.pop_back();
@@ -71,6 +76,9 @@ Outcome<Done> Mesh::remove_last_vertex() {
 
 Outcome<AttributeId> Mesh::add_vertex_attribute(std::string name, int components,
                                                 std::span<const double> default_value) {
+    if (m_undo != nullptr)
+        return Refusal{RefusalCode::not_applicable,
+                       "add_vertex_attribute: not inside an EditJournal step"};
     if (name.empty())
         return Refusal{RefusalCode::bad_argument, "add_vertex_attribute: the name is empty"};
     if (find_vertex_attribute(name) != invalid_id)
@@ -106,12 +114,35 @@ AttributeId Mesh::find_vertex_attribute(std::string_view name) const {
 }
 
 Outcome<Done> Mesh::remove_vertex_attribute(AttributeId attribute) {
+    if (m_undo != nullptr)
+        return Refusal{RefusalCode::not_applicable,
+                       "remove_vertex_attribute: not inside an EditJournal step"};
     if (!is_vertex_attribute(attribute))
         return Refusal{RefusalCode::not_found,
                        "remove_vertex_attribute: " + std::to_string(attribute) +
                        " is not a vertex attribute"};
     // the slot stays, empty, so that other ids keep their meaning
     m_attributes[attribute] = VertexAttribute{};
+    return Done{};
+}
+
+Outcome<Done> Mesh::set_vertex_attribute(AttributeId attribute, VertexId v, std::span<const double> value) {
+    if (!is_vertex_attribute(attribute))
+        return Refusal{RefusalCode::not_found, "set_vertex_attribute: " +
+                                                   std::to_string(attribute) +
+                                                   " is not a vertex attribute"};
+    if (v >= vertex_count())
+        return Refusal{RefusalCode::not_found,
+                       "set_vertex_attribute: vertex " + std::to_string(v) + " does not exist"};
+    const std::span<double> held = vertex_attribute(attribute, v);
+    if (value.size() != held.size())
+        return Refusal{RefusalCode::bad_argument,
+                       "set_vertex_attribute: \"" + m_attributes[attribute].name + "\" has " +
+                           std::to_string(held.size()) + " components, not " +
+                           std::to_string(value.size())};
+    if (m_undo != nullptr) m_undo->attribute(*this, attribute, v);
+    ++m_revision;
+    std::copy(value.begin(), value.end(), held.begin());
     return Done{};
 }
 

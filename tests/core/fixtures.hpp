@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <random>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -140,6 +142,90 @@ struct CountingWatcher : Watcher {
     void expect_in_step_with(const Mesh& mesh) {
         std::sort(boundary.begin(), boundary.end());
         EXPECT_EQ(boundary, mesh.boundary_faces());
+    }
+};
+
+// Keeps its own copy of what the events say (live elements with their simplexes, boundary
+// faces with theirs, positions) and checks each event against it: an element removed must be
+// known with the simplex `was`, an element added must be new, and so on. expect_mirrors(mesh)
+// then compares the copy with the mesh: together "every net change told exactly once".
+struct MirrorWatcher : Watcher {
+    std::map<ElementId, Simplex> elements;
+    std::map<FaceId, Simplex> boundary;
+    std::vector<Point> reference, deformed;
+    int moves = 0;  // vertices_moved calls
+
+    void init(const Mesh& mesh) override {
+        elements.clear();
+        boundary.clear();
+        for (ElementId t : sxk::elements(mesh)) elements[t] = mesh.simplex(t);
+        for (FaceId f : mesh.boundary_faces()) boundary[f] = mesh.face_simplex(f);
+        reference.assign(mesh.reference_positions().begin(), mesh.reference_positions().end());
+        deformed.assign(mesh.deformed_positions().begin(), mesh.deformed_positions().end());
+    }
+    void element_removed(const Mesh&, ElementId t, const Simplex& was) override {
+        const auto it = elements.find(t);
+        ASSERT_NE(it, elements.end()) << "element " << t << " removed but not known";
+        EXPECT_EQ(it->second, was) << "element " << t << " removed with another simplex";
+        elements.erase(it);
+    }
+    void element_changed(const Mesh& mesh, ElementId t, const Simplex& was) override {
+        const auto it = elements.find(t);
+        ASSERT_NE(it, elements.end()) << "element " << t << " changed but not known";
+        EXPECT_EQ(it->second, was) << "element " << t << " changed from another simplex";
+        it->second = mesh.simplex(t);
+    }
+    void element_added(const Mesh& mesh, ElementId t) override {
+        EXPECT_TRUE(elements.emplace(t, mesh.simplex(t)).second) << "element " << t << " added twice";
+    }
+    void boundary_removed(const Mesh&, FaceId f, const Simplex& was) override {
+        const auto it = boundary.find(f);
+        ASSERT_NE(it, boundary.end()) << "face " << f << " left the boundary but was not on it";
+        EXPECT_EQ(it->second, was);
+        boundary.erase(it);
+    }
+    void boundary_changed(const Mesh& mesh, FaceId f, const Simplex& was) override {
+        const auto it = boundary.find(f);
+        ASSERT_NE(it, boundary.end()) << "boundary face " << f << " changed but not known";
+        EXPECT_EQ(it->second, was);
+        it->second = mesh.face_simplex(f);
+    }
+    void boundary_added(const Mesh& mesh, FaceId f) override {
+        EXPECT_TRUE(boundary.emplace(f, mesh.face_simplex(f)).second) << "face " << f << " joined the boundary twice";
+    }
+    void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) override {
+        ++moves;
+        grow(mesh);
+        std::vector<VertexId> sorted(vertices.begin(), vertices.end());
+        std::sort(sorted.begin(), sorted.end());
+        EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a vertex listed twice";
+        for (VertexId v : vertices) {
+            if (writes_reference(which)) reference[v] = mesh.reference(v);
+            if (writes_deformed(which)) deformed[v] = mesh.deformed(v);
+        }
+    }
+    // Vertices have no event of their own: new ones are taken as the mesh has them.
+    void grow(const Mesh& mesh) {
+        for (std::size_t v = reference.size(); v < mesh.vertex_count(); ++v) {
+            reference.push_back(mesh.reference(static_cast<VertexId>(v)));
+            deformed.push_back(mesh.deformed(static_cast<VertexId>(v)));
+        }
+        reference.resize(mesh.vertex_count());
+        deformed.resize(mesh.vertex_count());
+    }
+    void expect_mirrors(const Mesh& mesh) {
+        std::map<ElementId, Simplex> live;
+        for (ElementId t : sxk::elements(mesh)) live[t] = mesh.simplex(t);
+        EXPECT_EQ(elements, live) << "the elements told differ from the mesh's";
+        std::map<FaceId, Simplex> faces;
+        for (FaceId f : mesh.boundary_faces()) faces[f] = mesh.face_simplex(f);
+        EXPECT_EQ(boundary, faces) << "the boundary told differs from the mesh's";
+        const std::size_t known = std::min<std::size_t>(reference.size(), mesh.vertex_count());
+        for (std::size_t v = 0; v < known; ++v) {
+            EXPECT_EQ(reference[v], mesh.reference(static_cast<VertexId>(v))) << "vertex " << v;
+            EXPECT_EQ(deformed[v], mesh.deformed(static_cast<VertexId>(v))) << "vertex " << v;
+        }
+        grow(mesh);
     }
 };
 

@@ -26,6 +26,7 @@ TEST(RefusalCode, EveryCodeHasItsName) {
         {RefusalCode::label_conflict, "label_conflict"},
         {RefusalCode::not_applicable, "not_applicable"},
         {RefusalCode::bad_marking, "bad_marking"},
+        {RefusalCode::stale, "stale"},
         {RefusalCode::invalid_mesh, "invalid_mesh"},
         {RefusalCode::too_large, "too_large"},
         {RefusalCode::internal_error, "internal_error"},

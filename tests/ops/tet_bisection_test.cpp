@@ -844,12 +844,12 @@ TEST(TetBisection, ForeignEditMakesTheStateStale) {
     auto refused = refine_around_tetrahedra(*state, {0.5, 0.5, 0.5}, 0.1);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: the bisection state is stale: " + why);
-    EXPECT_EQ(refused.code(), RefusalCode::bad_marking);
+    EXPECT_EQ(refused.code(), RefusalCode::stale);
     ElementId any = *elements(mesh).begin();
     refused = bisect_tetrahedron(*state, any);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(), "bisect_tetrahedron: the bisection state is stale: " + why);
-    EXPECT_EQ(refused.code(), RefusalCode::bad_marking);
+    EXPECT_EQ(refused.code(), RefusalCode::stale);
     expect_same_state(mesh, before);
 
     // a fresh state works again

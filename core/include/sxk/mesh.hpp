@@ -56,6 +56,11 @@ namespace sxk {
 
 using Point = std::array<double, 3>;
 
+class EditJournal;
+namespace detail {
+class UndoLog;
+}
+
 // Identifies a vertex attribute of one mesh (Mesh::add_vertex_attribute).
 using AttributeId = std::uint32_t;
 
@@ -71,6 +76,14 @@ struct ElementSubstitution {
 // the formats that have them. The key is Simplex(+1, sorted vertices) whatever the orientation
 // of the face in the mesh or in the file: a label belongs to the vertex set, not to one side.
 using FaceLabels = std::unordered_map<Simplex, int, SimplexHash>;
+
+// Checks Mesh::move_vertices makes before moving, with the exact orientation predicates, in each
+// position set the move writes, on every element around a moved vertex (where the topological
+// dimension equals the ambient one; a triangle in space can only become flat: collinear).
+struct MoveCheck {
+    bool refuse_inverted = false;  // an element would be inverted
+    bool refuse_flat = false;      // an element would be flat (orientation exactly zero)
+};
 
 // What Mesh::validate checks besides the connectivity invariants.
 struct ValidateOptions {
@@ -103,8 +116,27 @@ public:
     VertexId add_vertex(const Point& position) { return add_vertex(position, position); }
     const Point& reference(VertexId v) const { return m_reference[v]; }
     const Point& deformed(VertexId v) const { return m_deformed[v]; }
-    void set_reference(VertexId v, const Point& p) { m_reference[v] = p; }
-    void set_deformed(VertexId v, const Point& p) { m_deformed[v] = p; }
+    // Gives vertices[i] the position points[i] in the sets `which`, and tells every watcher once
+    // (Watcher::vertices_moved); inside an EditJournal step the old positions are kept for
+    // rollback. Refuses (nothing moves, nobody is told) when the sizes differ, a vertex is
+    // unknown or listed twice, a coordinate is not finite, a planar mesh (ambient dimension 2)
+    // gets z != 0, or `check` finds an element that would be inverted or flat ("element 7 would
+    // be inverted in the deformed positions", item = the element). An empty list does nothing.
+    // Cost: O(moved vertices), plus their stars when checking.
+    Outcome<Done> move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,
+                                PositionSet which, const MoveCheck& check = {});
+    // One vertex, one set, no check. While neither a watcher nor an EditJournal step watches
+    // the mesh this is the bulk path (a plain store: readers and generators set millions of
+    // positions); otherwise it is move_vertices of one vertex, so nothing goes unobserved.
+    // The point is stored as given (the caller keeps z == 0 in a planar mesh).
+    void set_reference(VertexId v, const Point& p) {
+        if (observed()) set_position(v, p, PositionSet::reference);
+        else m_reference[v] = p;
+    }
+    void set_deformed(VertexId v, const Point& p) {
+        if (observed()) set_position(v, p, PositionSet::deformed);
+        else m_deformed[v] = p;
+    }
     std::span<const Point> reference_positions() const { return m_reference; }
     std::span<const Point> deformed_positions() const { return m_deformed; }
     // Some element containing v, or invalid_id for a vertex in no element.
@@ -138,7 +170,8 @@ public:
                                               std::span<const double> default_value = {});
     // The id of the live attribute called `name`, or invalid_id.
     AttributeId find_vertex_attribute(std::string_view name) const;
-    // Refuses when `attribute` is not a live attribute.
+    // Refuses when `attribute` is not a live attribute. Adding and removing attributes is
+    // refused while an EditJournal step is open (a rollback restores values, not the schema).
     Outcome<Done> remove_vertex_attribute(AttributeId attribute);
     bool is_vertex_attribute(AttributeId attribute) const {
         return attribute < m_attributes.size() && m_attributes[attribute].components > 0;
@@ -155,8 +188,13 @@ public:
     std::span<const double> vertex_attribute_default(AttributeId attribute) const {
         return m_attributes[attribute].default_value;
     }
+    // Sets the value of a live attribute at vertex v, kept for rollback inside an EditJournal
+    // step. Refuses when the attribute or the vertex does not exist or the size is wrong.
+    Outcome<Done> set_vertex_attribute(AttributeId attribute, VertexId v, std::span<const double> value);
     // The value of a live attribute at vertex v (v < vertex_count()): `components` doubles,
-    // writable in place. The span is invalidated by adding or removing vertices.
+    // writable in place: the unobserved bulk path (an EditJournal does not see writes through
+    // the span; use set_vertex_attribute inside a step). The span is invalidated by adding or
+    // removing vertices.
     std::span<double> vertex_attribute(AttributeId attribute, VertexId v) {
         VertexAttribute& a = m_attributes[attribute];
         const auto n = static_cast<std::size_t>(a.components);
@@ -181,7 +219,12 @@ public:
         return {m_elements[t].faces.data(), static_cast<std::size_t>(m_dimension + 1)};
     }
     int label(ElementId t) const { return m_elements[t].label; }
-    void set_label(ElementId t, int label) { m_elements[t].label = label; }
+    // Kept for rollback inside an EditJournal step (labels have no watcher event).
+    void set_label(ElementId t, int label) {
+        if (m_undo != nullptr) note_element(t);
+        m_elements[t].label = label;
+        ++m_revision;
+    }
     // The vertex of t not in face f (f must be a face of t).
     VertexId opposite_vertex(ElementId t, FaceId f) const;
     // The face of t not containing vertex v (v must be a vertex of t).
@@ -274,8 +317,21 @@ public:
     void remove_watcher(Watcher& watcher);
 
     // ---- labels -------------------------------------------------------------------------------
+    // The labels of the (d-1)-faces; `face` is any orientation of the face (the key is its
+    // sorted vertices). set/erase are kept for rollback inside an EditJournal step; the mutable
+    // map is the unobserved bulk path for readers.
+    std::optional<int> face_label(const Simplex& face) const;
+    void set_face_label(const Simplex& face, int label);
+    // True when the face had a label.
+    bool erase_face_label(const Simplex& face);
     FaceLabels& face_labels() { return m_face_labels; }
     const FaceLabels& face_labels() const { return m_face_labels; }
+
+    // ---- revisions ----------------------------------------------------------------------------
+    // Changes with every observed change of the mesh (edits, vertex additions and removals,
+    // moves, labels, attribute values set through set_vertex_attribute); never repeats. An undo
+    // history uses it to refuse undoing over changes made outside it.
+    std::uint64_t revision() const { return m_revision; }
 
     // Bytes held by the connectivity, geometry and vertex attribute arrays (capacity, not size).
     std::size_t memory_bytes() const;
@@ -304,6 +360,8 @@ private:
     };
 
     friend class EditContext;
+    friend class EditJournal;
+    friend class detail::UndoLog;
     // core/src/mesh_checks.hpp: the operations' door to replace_elements_impl(..., true).
     friend class ProvenEdit;
     // replace_elements' body. proven == true skips the checks that walk vertex stars (a new
@@ -329,20 +387,46 @@ private:
     std::optional<Refusal> refuse_pinched_stars(std::vector<VertexId> touched,
                                                 std::span<const ElementId> removed,
                                                 std::span<const Simplex> added) const;
-    // After an edit: vertices of the elements `added` (ids `added_ids`) get an anchor if theirs
-    // no longer holds them; vertices of `old_vertices` that lost theirs take one of
-    // `neighbours` (elements next to the edited ones) that contains them, or none.
     // Recomputes neighbors[] of t from its faces' mates, and the entry of each mate's element
     // that points back (the edit primitives call it for every element whose faces they set).
     void link_neighbors(ElementId t);
     void link_neighbor(ElementId t, int i);  // the same for slot i only
     // f lost its mate (it is on the boundary now): its element's neighbour entry is cleared.
     void unlink_neighbor(FaceId f);
+    // After an edit: vertices of the elements `added` (ids `added_ids`) get an anchor if theirs
+    // no longer holds them; vertices of `old_vertices` that lost theirs take one of
+    // `neighbours` (elements next to the edited ones) that contains them, or none.
     // `edited_sorted`: the ids the edit removed or substituted (sorted); other anchors hold.
     void repair_anchors(std::span<const Simplex> added, std::span<const ElementId> added_ids,
                         std::span<const VertexId> old_vertices,
                         std::span<const ElementId> neighbours,
                         std::span<const ElementId> edited_sorted);
+    // ---- the EditJournal's record (core/src/undo_log.hpp), non-null only inside a step ------
+    // True when a position store must be observed (watchers, or a step recording).
+    bool observed() const { return m_undo != nullptr || !m_watchers.empty(); }
+    void set_position(VertexId v, const Point& p, PositionSet which);
+    // Each keeps the state that is about to change; the mesh calls them before every store into
+    // its pools, anchors and boundary map while a step is open.
+    void note_element(ElementId t);
+    void note_face(FaceId f);
+    void note_anchor(VertexId v);
+    void note_pools();  // free lists, counts and pool sizes, at the start of every edit
+    // The boundary map's stores, recorded.
+    void boundary_insert(const Simplex& sigma, FaceId f);
+    void boundary_erase(const Simplex& sigma);
+    // Writable records, recorded first (the edit primitives store through these).
+    ElementRecord& element_for_write(ElementId t) {
+        if (m_undo != nullptr) note_element(t);
+        return m_elements[t];
+    }
+    FaceRecord& face_for_write(FaceId f) {
+        if (m_undo != nullptr) note_face(f);
+        return m_faces[f];
+    }
+    void set_anchor(VertexId v, ElementId t) {
+        if (m_undo != nullptr) note_anchor(v);
+        m_vertex_element[v] = t;
+    }
 
     int m_dimension;
     int m_ambient;
@@ -358,6 +442,9 @@ private:
     FaceLabels m_face_labels;
     std::vector<VertexAttribute> m_attributes;
     std::vector<Watcher*> m_watchers;
+    EditJournal* m_journal = nullptr;   // the journal attached, not copied
+    detail::UndoLog* m_undo = nullptr;  // its open step's record, not copied
+    std::uint64_t m_revision = 0;
 };
 
 // Iterates the ids of live elements: for (ElementId t : elements(mesh)).

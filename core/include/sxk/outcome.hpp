@@ -43,8 +43,10 @@ enum class RefusalCode : std::uint8_t {
     label_conflict,
     // the configuration does not allow it: a boundary edge (flips), no valid ear (remove_node), ...
     not_applicable,
-    // the bisection marks do not fit the mesh: inconsistent, endless recursion, or the state stale
+    // the bisection marks do not fit the mesh: inconsistent, or a recursion that does not end
     bad_marking,
+    // a state beside the mesh is out of date, the mesh was edited outside it (TetBisection, undo)
+    stale,
     // Mesh::validate found a broken invariant or an inverted (flat_is_invalid: flat) element
     invalid_mesh,
     // the mesh would pass a size limit: 32-bit face ids (assign_elements)

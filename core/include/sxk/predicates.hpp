@@ -2,6 +2,8 @@
 // internal header: no CGAL type appears here). Inputs are doubles; results are exact signs.
 #pragma once
 
+#include <span>
+
 #include "sxk/config.hpp"
 #include "sxk/mesh.hpp"
 
@@ -37,5 +39,8 @@ enum class Positions { reference, deformed };
 // vertices: Sign::zero).
 SXK_API Sign element_orientation(const Mesh& mesh, ElementId t,
                                  Positions positions = Positions::deformed);
+// The same for a simplex at given points: points[j] is the position of s.vertex(j). What moves
+// and cuts use to ask how an element would be oriented after a change of positions.
+SXK_API Sign simplex_orientation(const Simplex& s, int ambient_dimension, std::span<const Point* const> points);
 
 }  // namespace sxk

@@ -13,10 +13,17 @@
 //   boundary_changed  a boundary face kept its identity and stays on the boundary, but its
 //                     simplex changed (change_elements)
 //   boundary_added    a face that was not on the boundary now is
+//   vertices_moved    Mesh::move_vertices (or a position setter) gave vertices new positions
+//                     in one or both position sets: one call per move, listing each vertex once
 //
 // Transient boundary changes inside one edit (the thesis' remove-then-add of faces that end up
-// where they were) are not reported. A refused edit reports nothing.
+// where they were) are not reported. A refused edit reports nothing. An EditJournal rollback or
+// undo reports the net change back to the state of its checkpoint the same way, as one edit
+// (edit_journal.hpp).
 #pragma once
+
+#include <cstdint>
+#include <span>
 
 #include "sxk/ids.hpp"
 #include "sxk/simplex.hpp"
@@ -24,6 +31,13 @@
 namespace sxk {
 
 class Mesh;
+
+// The position sets a move writes: the reference (material) positions, the deformed
+// (simulated) ones, or both.
+enum class PositionSet : std::uint8_t { reference = 1, deformed = 2, both = 3 };
+
+inline bool writes_reference(PositionSet which) { return (static_cast<int>(which) & 1) != 0; }
+inline bool writes_deformed(PositionSet which) { return (static_cast<int>(which) & 2) != 0; }
 
 class Watcher {
 public:
@@ -40,6 +54,9 @@ public:
     virtual void boundary_changed(const Mesh& /*mesh*/, FaceId /*face*/,
                                   const Simplex& /*was*/) {}
     virtual void boundary_added(const Mesh& /*mesh*/, FaceId /*face*/) {}
+    // `vertices` (distinct) have new positions in `which`; the mesh already holds them.
+    virtual void vertices_moved(const Mesh& /*mesh*/, std::span<const VertexId> /*vertices*/,
+                                PositionSet /*which*/) {}
 };
 
 }  // namespace sxk

@@ -227,8 +227,9 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                       ? ProvenEdit::replace(mesh, star_from, survivors, labels)
                       : mesh.replace_elements(star_from, survivors, labels);
     if (!result.ok()) return result.refusal().prefixed("collapse_edge: ");
-    for (const Simplex& face : gone_labels) mesh.face_labels().erase(face);
-    for (const auto& [face, label] : moved_labels) mesh.face_labels().try_emplace(face, label);
+    for (const Simplex& face : gone_labels) mesh.erase_face_label(face);
+    for (const auto& [face, label] : moved_labels)
+        if (!mesh.face_label(face)) mesh.set_face_label(face, label);
     if (moves_to) {
         // Attributes follow the position: the parameter s of the new reference position
         // projected onto the edge (to = 0, from = 1, clamped), the same rule as a split at s.
@@ -242,10 +243,12 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
         const double s = length2 > 0 ? std::clamp(along / length2, 0.0, 1.0) : 0.0;
         if (s > 0)
             for (const AttributeId attribute : mesh.vertex_attributes()) {
-                const std::span<double> survivor = mesh.vertex_attribute(attribute, to);
+                const std::span<const double> survivor = mesh.vertex_attribute(attribute, to);
                 const std::span<const double> merged = std::as_const(mesh).vertex_attribute(attribute, from);
+                std::vector<double> value(survivor.size());
                 for (std::size_t c = 0; c < survivor.size(); ++c)
-                    survivor[c] = (1 - s) * survivor[c] + s * merged[c];
+                    value[c] = (1 - s) * survivor[c] + s * merged[c];
+                (void)mesh.set_vertex_attribute(attribute, to, value);  // a live attribute, a vertex: cannot refuse
             }
         mesh.set_reference(to, moved.reference);
         mesh.set_deformed(to, moved.deformed);

@@ -156,9 +156,10 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
         for (std::size_t i = 0; i < result.new_vertices.size(); ++i) (void)mesh.remove_last_vertex();
         return Refusal{changed.code(), "dissect: " + changed.reason(), changed.refusal().item};
     }
-    for (const Relabel& r : relabel) mesh.face_labels().try_emplace(r.after, r.label);
     for (const Relabel& r : relabel)
-        if (!is_mesh_face(mesh, r.before)) mesh.face_labels().erase(r.before);
+        if (!mesh.face_label(r.after)) mesh.set_face_label(r.after, r.label);
+    for (const Relabel& r : relabel)
+        if (!is_mesh_face(mesh, r.before)) mesh.erase_face_label(r.before);
     return result;
 }
 

@@ -85,7 +85,7 @@ Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& 
         return Refusal{RefusalCode::bad_argument, out.str()};
     }
     if (state.is_stale())
-        return Refusal{RefusalCode::bad_marking,
+        return Refusal{RefusalCode::stale,
                        "refine_around_tetrahedra: the bisection state is stale: " +
                        state.stale_reason()};
     const ElementId t = locate_tetrahedron(mesh, x, state.last_child());

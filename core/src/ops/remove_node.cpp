@@ -273,9 +273,9 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
     if (!replaced)
         return replaced.refusal().prefixed("remove_node: ");
     if (boundary_label) {
-        mesh.face_labels().erase(edge_key(link.vertices.back(), v));
-        mesh.face_labels().erase(edge_key(v, link.vertices.front()));
-        mesh.face_labels()[edge_key(link.vertices.back(), link.vertices.front())] = *boundary_label;
+        mesh.erase_face_label(edge_key(link.vertices.back(), v));
+        mesh.erase_face_label(edge_key(v, link.vertices.front()));
+        mesh.set_face_label(edge_key(link.vertices.back(), link.vertices.front()), *boundary_label);
     }
     return std::move(*replaced);
 }

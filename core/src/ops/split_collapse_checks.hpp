@@ -541,8 +541,8 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
         (void)mesh.remove_last_vertex();  // m is in no element: the refused edit added nothing
         return result.refusal().prefixed(std::string(operation) + ": ");
     }
-    for (const Simplex& face : split_faces) mesh.face_labels().erase(face);
-    for (const auto& [face, label] : moved_labels) mesh.face_labels()[face] = label;
+    for (const Simplex& face : split_faces) mesh.erase_face_label(face);
+    for (const auto& [face, label] : moved_labels) mesh.set_face_label(face, label);
     return SplitResult{m, std::move(*result)};
 }
 

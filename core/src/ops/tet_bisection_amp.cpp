@@ -279,8 +279,8 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
         return Refusal{RefusalCode::internal_error,
                        "internal error, the planned refinement was refused: " + replaced.reason()};
     }
-    for (const Simplex& face : split_faces) mesh.face_labels().erase(face);
-    for (const auto& [face, label] : moved_labels) mesh.face_labels()[face] = label;
+    for (const Simplex& face : split_faces) mesh.erase_face_label(face);
+    for (const auto& [face, label] : moved_labels) mesh.set_face_label(face, label);
     std::vector<TetMarking>& markings = TetBisectionAccess::markings(state);
     if (markings.size() < mesh.element_capacity()) markings.resize(mesh.element_capacity());
     for (std::size_t i = 0; i < leaves.size(); ++i)

@@ -15,7 +15,7 @@ Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t) {
         return Refusal{RefusalCode::not_found,
                        "bisect_tetrahedron: " + std::to_string(t) + " is not an element"};
     if (state.is_stale())
-        return Refusal{RefusalCode::bad_marking,
+        return Refusal{RefusalCode::stale,
                        "bisect_tetrahedron: the bisection state is stale: " + state.stale_reason()};
 
     if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {

@@ -1,0 +1,106 @@
+// Steps, rollback and the undo/redo history over the mesh's record (edit_journal.hpp,
+// undo_log.hpp).
+#include "sxk/edit_journal.hpp"
+
+#include <stdexcept>
+
+#include "undo_log.hpp"
+
+namespace sxk {
+
+struct EditJournal::Log : detail::UndoLog {};
+
+EditJournal::EditJournal(Mesh& mesh) : m_mesh(mesh), m_open(std::make_unique<Log>()) {
+    if (mesh.m_journal != nullptr) throw std::logic_error("EditJournal: the mesh already has a journal");
+    mesh.m_journal = this;
+    m_history_revision = mesh.revision();
+}
+
+EditJournal::~EditJournal() {
+    // steps that were not committed did not happen
+    if (!m_marks.empty()) {
+        m_mesh.m_undo = nullptr;
+        m_open->undo(m_mesh, 0, nullptr);
+    }
+    m_mesh.m_journal = nullptr;
+}
+
+void EditJournal::checkpoint() {
+    if (m_marks.empty()) {
+        m_open->clear();
+        m_revision_at_open = m_mesh.revision();
+        m_mesh.m_undo = m_open.get();
+    }
+    m_marks.push_back(m_open->size());
+}
+
+std::size_t EditJournal::recorded() const { return m_marks.empty() ? 0 : m_open->size(); }
+
+Outcome<Done> EditJournal::commit() {
+    if (m_marks.empty()) return Refusal{RefusalCode::not_applicable, "commit: no step is open"};
+    m_marks.pop_back();
+    if (!m_marks.empty()) return Done{};
+    m_mesh.m_undo = nullptr;
+    if (m_open->empty()) return Done{};  // nothing happened: no step to undo
+    // the history holds only if nothing changed between its last step and this one
+    if (m_revision_at_open != m_history_revision) clear_history();
+    m_redo.clear();
+    if (m_history_limit > 0) {
+        m_undo.push_back(std::move(m_open));
+        m_open = std::make_unique<Log>();
+        while (m_undo.size() > m_history_limit) m_undo.pop_front();
+    }
+    m_history_revision = m_mesh.revision();
+    return Done{};
+}
+
+Outcome<Done> EditJournal::rollback() {
+    if (m_marks.empty()) return Refusal{RefusalCode::not_applicable, "rollback: no step is open"};
+    const std::size_t mark = m_marks.back();
+    m_marks.pop_back();
+    // replaying must not record itself
+    m_mesh.m_undo = nullptr;
+    m_open->undo(m_mesh, mark, nullptr);
+    if (!m_marks.empty()) {
+        m_mesh.m_undo = m_open.get();
+    } else if (m_revision_at_open == m_history_revision) {
+        // the mesh is exactly as after the history's last step again
+        m_history_revision = m_mesh.revision();
+    }
+    return Done{};
+}
+
+void EditJournal::set_history_limit(std::size_t steps) {
+    m_history_limit = steps;
+    while (m_undo.size() > steps) m_undo.pop_front();
+    while (m_redo.size() > steps) m_redo.pop_front();
+}
+
+void EditJournal::clear_history() {
+    m_undo.clear();
+    m_redo.clear();
+}
+
+Outcome<Done> EditJournal::replay_history(std::deque<std::unique_ptr<Log>>& from,
+                                          std::deque<std::unique_ptr<Log>>& to, const char* what) {
+    if (!m_marks.empty())
+        return Refusal{RefusalCode::not_applicable, std::string(what) + ": a step is open"};
+    if (from.empty())
+        return Refusal{RefusalCode::not_applicable, std::string(what) + ": nothing to " + what};
+    if (m_mesh.revision() != m_history_revision)
+        return Refusal{RefusalCode::stale,
+                       std::string(what) +
+                           ": the mesh changed outside the journal since its last step"};
+    std::unique_ptr<Log> step = std::move(from.back());
+    from.pop_back();
+    auto inverse = std::make_unique<Log>();
+    step->undo(m_mesh, 0, inverse.get());
+    to.push_back(std::move(inverse));
+    m_history_revision = m_mesh.revision();
+    return Done{};
+}
+
+Outcome<Done> EditJournal::undo() { return replay_history(m_undo, m_redo, "undo"); }
+Outcome<Done> EditJournal::redo() { return replay_history(m_redo, m_undo, "redo"); }
+
+}  // namespace sxk

@@ -1,0 +1,230 @@
+// Property test of EditJournal (issue 13, "Tests"): seeded random steps of 1-6 random local
+// operations of the operation driver (flips, splits, collapses, dissections, bisections, Lawson
+// flipping, node removal) mixed with checked vertex moves, element and face labels and attribute
+// values, each step then committed, rolled back, undone or redone at random, on the four start
+// meshes of the driver (planar grid, planar random points, octahedron surface, Kuhn cube).
+//
+// After every rollback and undo the mesh must be the snapshot of its checkpoint bit for bit
+// (every slot, free list and neighbour, fuzz/ops_driver.hpp), every redo the snapshot after the
+// step; validate() is clean; a MirrorWatcher, which applies each event to its own copy, agrees
+// with the mesh (every net change told exactly once). Every 16th rollback also writes the mesh
+// in each format before the step and after the rollback: the files are byte for byte equal.
+// The seed is printed; SXK_SEED=<n> replays a run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../../fuzz/ops_driver.hpp"
+#include "core/fixtures.hpp"
+#include "sxk/edit_journal.hpp"
+#include "sxk/io.hpp"
+
+namespace sxk {
+namespace {
+
+namespace fs = std::filesystem;
+using ops_driver::Snapshot;
+using ops_driver::snapshot;
+
+std::string bytes_of(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The mesh written in every format that holds it, as one string per file.
+std::vector<std::string> files_of(const Mesh& mesh, const fs::path& dir) {
+    std::vector<std::string> names{"m.mesh", "m.msh", "m.vtu", "m.node"};
+    if (mesh.topological_dimension() == 2 && mesh.ambient_dimension() == 3) names.push_back("m.off");
+    std::vector<std::string> files;
+    for (const std::string& name : names) {
+        write_mesh(mesh, dir / name);
+        files.push_back(bytes_of(dir / name));
+        if (name == "m.node") files.push_back(bytes_of(dir / "m.ele"));
+    }
+    return files;
+}
+
+// Moves 1-3 random vertices by a small random offset, refusing inversions and flat elements
+// (the driver's oracle wants every element strictly positive in both sets), and keeps the
+// driver's "where" attribute on the reference position. Both position sets move alike (the
+// deformed offset doubled where the driver doubled the deformed positions): make_delaunay_by_flips
+// flips by one set only and may invert the other when the two are not similar (its header).
+void random_move(Mesh& mesh, std::mt19937_64& rng) {
+    if (mesh.vertex_count() == 0) return;
+    std::uniform_int_distribution<VertexId> vertex(0, static_cast<VertexId>(mesh.vertex_count() - 1));
+    std::uniform_real_distribution<double> offset(-0.05, 0.05);
+    std::vector<VertexId> vertices;
+    std::vector<Point> reference, deformed, old_reference;
+    const int count = 1 + static_cast<int>(rng() % 3);
+    for (int i = 0; i < count; ++i) {
+        const VertexId v = vertex(rng);
+        if (std::find(vertices.begin(), vertices.end(), v) != vertices.end()) continue;
+        const double scale = mesh.deformed(v) == mesh.reference(v) ? 1 : 2;
+        Point r = mesh.reference(v), d = mesh.deformed(v);
+        for (std::size_t c = 0; c < static_cast<std::size_t>(mesh.ambient_dimension()); ++c) {
+            const double delta = offset(rng);
+            r[c] += delta;
+            d[c] += scale * delta;
+        }
+        vertices.push_back(v);
+        old_reference.push_back(mesh.reference(v));
+        reference.push_back(r);
+        deformed.push_back(d);
+    }
+    const MoveCheck check{true, true};
+    if (!mesh.move_vertices(vertices, reference, PositionSet::reference, check).ok()) return;
+    if (!mesh.move_vertices(vertices, deformed, PositionSet::deformed, check).ok()) {
+        ASSERT_TRUE(mesh.move_vertices(vertices, old_reference, PositionSet::reference).ok());
+        return;
+    }
+    const AttributeId where = mesh.find_vertex_attribute("where");
+    if (where == invalid_id) return;
+    for (const VertexId v : vertices) ASSERT_TRUE(mesh.set_vertex_attribute(where, v, mesh.reference(v)).ok());
+}
+
+// Labels: an element label, or a face label on a boundary face.
+void random_label(Mesh& mesh, std::mt19937_64& rng) {
+    if (mesh.element_count() == 0) return;
+    ElementId t = static_cast<ElementId>(rng() % mesh.element_capacity());
+    while (!mesh.is_element(t)) t = static_cast<ElementId>((t + 1) % mesh.element_capacity());
+    if (rng() % 2 == 0) {
+        mesh.set_label(t, static_cast<int>(rng() % 4));
+        return;
+    }
+    const int slot = static_cast<int>(rng() % static_cast<std::uint64_t>(mesh.element_vertex_count()));
+    if (mesh.neighbor(t, slot) == invalid_id) mesh.set_face_label(mesh.simplex(t).subn(slot), 20 + static_cast<int>(rng() % 3));
+}
+
+struct Counts {
+    int steps = 0, operations = 0, done = 0, commits = 0, rollbacks = 0, undos = 0, redos = 0, files = 0;
+};
+
+void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
+    const std::uint64_t seed = test::seed_for(name);
+    SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
+    std::mt19937_64 rng(seed);
+    bool forced = true;
+    ops_driver::Choices choices([&]() -> int {
+        if (forced) {
+            forced = false;
+            return static_cast<int>(kind);
+        }
+        return static_cast<int>(rng() & 0xff);
+    });
+    const fs::path dir = fs::path(SXK_BINARY_DIR) / "test-ops-scratch" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    constexpr int restart = 500;  // steps per start mesh (dissections shred a mesh over time)
+    for (int first = 0; first < steps; first += restart) {
+        forced = true;
+        Mesh mesh = ops_driver::start_mesh(choices, 6, 3);
+        test::MirrorWatcher mirror;
+        mesh.add_watcher(mirror);
+        EditJournal journal(mesh);
+        journal.set_history_limit(restart);
+        // the snapshots before and after each step still in the history, newest last
+        std::vector<std::pair<Snapshot, Snapshot>> history;
+        std::vector<std::pair<Snapshot, Snapshot>> redo;
+        for (int i = first; i < std::min(steps, first + restart); ++i) {
+            ++counts.steps;
+            const Snapshot before = snapshot(mesh);
+            const bool compare_files = counts.rollbacks % 16 == 0;
+            const std::vector<std::string> files = compare_files ? files_of(mesh, dir) : std::vector<std::string>{};
+            journal.checkpoint();
+            const int operations = 1 + static_cast<int>(rng() % 6);
+            for (int o = 0; o < operations; ++o) {
+                switch (rng() % 5) {
+                    case 0: random_move(mesh, rng); break;
+                    case 1: random_label(mesh, rng); break;
+                    default: {
+                        const ops_driver::Step op = ops_driver::run_step(mesh, choices, 600);
+                        ++counts.operations;
+                        counts.done += op.done;
+                        ASSERT_TRUE(op.finding.empty()) << "step " << i << ": " << op.finding;
+                    }
+                }
+                if (::testing::Test::HasFatalFailure()) return;
+            }
+            const std::uint64_t choice = rng() % 10;
+            if (choice < 4) {
+                ASSERT_TRUE(journal.rollback().ok());
+                ++counts.rollbacks;
+                ASSERT_TRUE(snapshot(mesh) == before) << "step " << i << ": the rollback left another mesh";
+                if (compare_files) {
+                    ++counts.files;
+                    ASSERT_EQ(files_of(mesh, dir), files) << "step " << i << ": the files differ after the rollback";
+                }
+            } else {
+                ASSERT_TRUE(journal.commit().ok());
+                ++counts.commits;
+                if (journal.undo_count() == history.size() + 1) {  // a step that recorded nothing is none
+                    history.emplace_back(before, snapshot(mesh));
+                    redo.clear();
+                }
+                ASSERT_EQ(journal.undo_count(), history.size());
+                if (choice == 8 && !history.empty()) {
+                    ASSERT_TRUE(journal.undo().ok()) << "step " << i;
+                    ++counts.undos;
+                    ASSERT_TRUE(snapshot(mesh) == history.back().first) << "step " << i << ": undo";
+                    redo.push_back(history.back());
+                    history.pop_back();
+                } else if (choice == 9 && !redo.empty()) {
+                    ASSERT_TRUE(journal.redo().ok()) << "step " << i;
+                    ++counts.redos;
+                    ASSERT_TRUE(snapshot(mesh) == redo.back().second) << "step " << i << ": redo";
+                    history.push_back(redo.back());
+                    redo.pop_back();
+                }
+            }
+            const auto valid = mesh.validate();
+            ASSERT_TRUE(valid.ok()) << "step " << i << ": " << valid.reason();
+            mirror.expect_mirrors(mesh);
+            if (::testing::Test::HasFailure()) FAIL() << "step " << i;
+        }
+        mesh.remove_watcher(mirror);
+    }
+}
+
+void expect_all_kinds(const Counts& c) {
+    std::cout << "[ done     ] steps " << c.steps << ", operations " << c.operations << " (" << c.done
+              << " done), commits " << c.commits << ", rollbacks " << c.rollbacks << ", undos " << c.undos
+              << ", redos " << c.redos << ", file comparisons " << c.files << "\n";
+    EXPECT_GT(c.rollbacks, c.steps / 4);
+    EXPECT_GT(c.undos, 0);
+    EXPECT_GT(c.redos, 0);
+    EXPECT_GT(c.files, 0);
+}
+
+TEST(EditJournalRandom, JitteredPlanarGrid) {
+    Counts counts;
+    run(0, 3000, "EditJournalRandom.JitteredPlanarGrid", counts);
+    expect_all_kinds(counts);
+}
+
+TEST(EditJournalRandom, PlanarRandomPoints) {
+    Counts counts;
+    run(1, 2000, "EditJournalRandom.PlanarRandomPoints", counts);
+    expect_all_kinds(counts);
+}
+
+TEST(EditJournalRandom, OctahedronSurface) {
+    Counts counts;
+    run(2, 2000, "EditJournalRandom.OctahedronSurface", counts);
+    expect_all_kinds(counts);
+}
+
+TEST(EditJournalRandom, JitteredKuhnCube) {
+    Counts counts;
+    run(3, 3000, "EditJournalRandom.JitteredKuhnCube", counts);
+    expect_all_kinds(counts);
+}
+
+}  // namespace
+}  // namespace sxk
