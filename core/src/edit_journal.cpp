@@ -100,6 +100,26 @@ Outcome<Done> EditJournal::replay_history(std::deque<std::unique_ptr<Log>>& from
     return Done{};
 }
 
+EditStep::~EditStep() {
+    if (m_closed) return;
+    while (m_journal.depth() > m_depth) (void)m_journal.rollback();
+}
+
+Outcome<Done> EditStep::commit() {
+    if (m_closed || m_journal.depth() <= m_depth)
+        return Refusal{RefusalCode::not_applicable, "commit: the step is closed"};
+    while (m_journal.depth() > m_depth) (void)m_journal.commit();
+    m_closed = true;
+    return Done{};
+}
+
+JournalScope::JournalScope(Mesh& mesh) : m_journal(EditJournal::of(mesh)) {
+    if (m_journal == nullptr) {
+        m_own = std::make_unique<EditJournal>(mesh);
+        m_journal = m_own.get();
+    }
+}
+
 Outcome<Done> EditJournal::undo() { return replay_history(m_undo, m_redo, "undo"); }
 Outcome<Done> EditJournal::redo() { return replay_history(m_redo, m_undo, "redo"); }
 

@@ -13,14 +13,14 @@
 // orientation in either position set), the other moves are tried by increasing distance, up to
 // detail::longest_move times the longest edge, each collapse both ways. Beyond the thesis, a
 // move must pay (try_moves in removal_steps.hpp: no new flat element, or fewer, or better
-// shapes, or new ones that follow-up moves remove); one that does not is undone (MoveJournal)
+// shapes, or new ones that follow-up moves remove); one that does not is undone (a rolled-back MoveStep)
 // and the next is tried. Every failed try leaves the mesh as it was, up to element ids.
 #include <algorithm>
 #include <array>
 #include <utility>
 #include <vector>
 
-#include "move_journal.hpp"
+#include "move_step.hpp"
 #include "removal_steps.hpp"
 #include "sxk/ops/split_edge.hpp"
 #include "sxk/ops/split_face.hpp"
@@ -47,7 +47,7 @@ struct Move {
 constexpr std::array<std::pair<int, int>, 6> edges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
 // Does the move's edits; nothing on success. A refusal part way (the collapse after the
-// split) leaves the split: the caller's journal undoes it.
+// split) leaves the split: the caller's step rolls it back.
 Refused execute(Mesh& mesh, const Move& move, const Options& options) {
     switch (move.kind) {
         case Move::Kind::collapse_edge:
@@ -222,12 +222,12 @@ std::vector<Move> moves_for(const Mesh& mesh, ElementId t, const Options& option
 }  // namespace
 
 Refused collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                                  MoveJournal& journal, Effort effort, MoveJournal* inner) {
+                                  MoveStep& step, Effort effort, MoveStep* inner) {
     const std::vector<Move> moves = moves_for(mesh, t, options);
     if (moves.empty()) return Refusal(RefusalCode::not_applicable,
                                       "no split or collapse fits its shape");
     return try_moves_of(
-        mesh, t, std::span<const Move>(moves), options, tally, journal, effort, inner,
+        mesh, t, std::span<const Move>(moves), options, tally, step, effort, inner,
         [&](const Move& move) { return execute(mesh, move, options); }, count, collapse_flat_tetrahedron);
 }
 

@@ -75,7 +75,7 @@ void count(const Move& move, Tally& tally) {
 }  // namespace
 
 Refused collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                               MoveJournal& journal, Effort effort, MoveJournal* inner) {
+                               MoveStep& step, Effort effort, MoveStep* inner) {
     const Simplex tau = mesh.simplex(t);
     std::array<VertexId, 3> p{};
     std::array<Point, 3> x{};
@@ -118,7 +118,7 @@ Refused collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, 
         both.back().reverse = true;
     }
     return try_moves_of(
-        mesh, t, std::span<const Move>(both), options, tally, journal, effort, inner,
+        mesh, t, std::span<const Move>(both), options, tally, step, effort, inner,
         [&](const Move& move) { return execute(mesh, move, options); }, count, collapse_flat_triangle);
 }
 

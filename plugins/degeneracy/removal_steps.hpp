@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "move_journal.hpp"
+#include "move_step.hpp"
 #include "remove_degeneracies.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/predicates.hpp"
@@ -35,20 +35,22 @@ enum class Effort {
     clean,      // only moves that make no degenerate element
     paying,     // also moves that leave fewer degenerates, or none worse than the element
     follow_up,  // also moves whose new degenerates each go by a clean move right after
+    any,        // also any move that succeeds, as the thesis keeps every collapse: the last
+                // stage before cutting free, for what even follow-ups could not remove
 };
 
 // Removes the flat tetrahedron t by a collapse, after one or two splits where its shape asks
 // for them (collapse_flat_tetrahedron.cpp). Returns nothing when t is gone, else why the last
-// attempt was refused (the mesh is then as before, up to element ids).
-// With Effort::follow_up, `inner` is the journal of the follow-up moves.
+// attempt was refused (the mesh is then as before, ids included).
+// With Effort::follow_up, `inner` is the step of the follow-up moves (nested in `move`'s).
 Refused collapse_flat_tetrahedron(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                                      MoveJournal& journal, Effort effort = Effort::paying,
-                                      MoveJournal* inner = nullptr);
+                                  MoveStep& step, Effort effort = Effort::paying,
+                                  MoveStep* inner = nullptr);
 // The same for a flat triangle (collapse_flat_triangle.cpp): a collapse, an edge flip, or a
 // split and a collapse.
 Refused collapse_flat_triangle(Mesh& mesh, ElementId t, const Options& options, Tally& tally,
-                               MoveJournal& journal, Effort effort = Effort::paying,
-                                   MoveJournal* inner = nullptr);
+                               MoveStep& step, Effort effort = Effort::paying,
+                               MoveStep* inner = nullptr);
 // Removes tetrahedron t by the 2-3, 3-2 or 4-4 flip whose new elements are best shaped, if
 // none of them is degenerate (flip_out.cpp). Nothing on success.
 Refused flip_out(Mesh& mesh, ElementId t, const Options& options, Tally& tally);
@@ -107,52 +109,47 @@ Shapes shapes_of(const Mesh& mesh, std::span<const Simplex> simplexes, const Opt
 // Some element containing all these vertices (a face's, an element's), or invalid_id: found in
 // the star of the first one.
 ElementId element_containing(const Mesh& mesh, std::span<const VertexId> vertices);
-// The element with these vertices (sorted, sign +1), or invalid_id. An undone move gives the
-// elements it puts back new ids; vertices stay.
+// The element with these vertices (sorted, sign +1), or invalid_id.
 ElementId element_with(const Mesh& mesh, const Simplex& vertices);
-// The vertices of the elements around `vertices` (their stars), sorted: the region a removal
-// and the removals of what it made can touch.
-std::vector<VertexId> ring_of(const Mesh& mesh, std::span<const VertexId> vertices);
 
-// Tries the moves in order, each undone by the journal when refused part way or when it does
-// not pay. Beyond the thesis, which keeps every collapse that succeeds: a removal that makes
+// Tries the moves in order, each one step (MoveStep) rolled back when refused part way or when
+// it does not pay. Beyond the thesis, which keeps every collapse that succeeds: a removal that makes
 // another degenerate only moves the problem, and repeated passes then churn. Round 1 keeps a
 // move only if it makes no degenerate element; when every move does, round 2 keeps the first
 // move that leaves fewer degenerates than it removed, or none worse than the element itself
 // (`before`); round 3 (Effort::follow_up, for what the passes could not remove) keeps a move
 // whose new degenerates `follow_up` (their vertex sets) removes by clean moves at once, the
-// journal then undoing move and follow-ups together if that fails. `execute(move)` returns a
-// refusal or nothing; `count(move)` books a kept move. Returns nothing when a move was kept,
-// else the last refusal.
+// rollback then undoing move and follow-ups together if that fails; round 4 (Effort::any) keeps
+// the first move that succeeds. `execute(move)` returns a refusal or nothing; `count(move)`
+// books a kept move. Returns nothing when a move was kept, else the last refusal.
 template <class Move, class Execute, class Count, class FollowUp>
-Refused try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const VertexId> vertices,
-                      double before, const Options& options, MoveJournal& journal, Effort effort,
-                      Execute execute, Count count, FollowUp follow_up) {
+Refused try_moves(Mesh& mesh, std::span<const Move> moves, double before, const Options& options, MoveStep& step, Effort effort,
+                  Execute execute, Count count, FollowUp follow_up) {
     std::vector<char> refused(moves.size(), 0);  // by an operation: later rounds skip them
-    const int rounds = effort == Effort::clean ? 1 : effort == Effort::paying ? 2 : 3;
-    std::vector<VertexId> region;
-    if (rounds == 3) region = ring_of(mesh, vertices);
+    const int rounds = effort == Effort::clean ? 1 : effort == Effort::paying ? 2 : effort == Effort::follow_up ? 3 : 4;
     Refused why;
     for (int round = 0; round < rounds; ++round)
         for (std::size_t i = 0; i < moves.size(); ++i) {
             if (refused[i]) continue;
-            journal.begin(round == 2 ? std::span<const VertexId>(region) : vertices);
+            step.begin();
             Refused refusal = execute(moves[i]);
             if (!refusal) {
-                const std::vector<ElementId> created = journal.created();
+                const std::vector<ElementId> created = step.created();
                 const Shapes made = shapes_of(mesh, created, options);
                 bool pays = made.degenerate == 0;
                 if (round == 1)
-                    pays = made.degenerate < shapes_of(mesh, journal.removed(), options).degenerate ||
+                    pays = made.degenerate < shapes_of(mesh, step.removed(), options).degenerate ||
                            made.worst > before;
+                if (round == 3) pays = true;
                 if (round == 2) {
                     std::vector<Simplex> flat;
                     for (const ElementId t : created)
                         if (element_aspect_ratio(mesh, t, options.positions) < options.aspect_ratio)
                             flat.emplace_back(+1, mesh.simplex(t).vertices());
-                    pays = follow_up(flat) && shapes_of(mesh, journal.created(), options).degenerate == 0;
+                    pays = follow_up(flat) && shapes_of(mesh, step.created(), options).degenerate == 0;
                 }
                 if (pays) {
+                    step.keep();
                     count(moves[i]);
                     return std::nullopt;
                 }
@@ -163,26 +160,20 @@ Refused try_moves(Mesh& mesh, std::span<const Move> moves, std::span<const Verte
             } else {
                 refused[i] = 1;
             }
-            if (journal.changed() && !journal.undo())
-                return Refusal(RefusalCode::internal_error,
-                               "a refused move could not be undone: " + refusal->reason);
+            step.undo();
             why = std::move(refusal);
         }
     return why;
 }
 
-// try_moves for a removal step `remove(mesh, element, options, tally, journal, effort, inner)`
+// try_moves for a removal step `remove(mesh, element, options, tally, step, effort, inner)`
 // (collapse_flat_tetrahedron, collapse_flat_triangle) on element t: its follow-ups are the same
-// step with Effort::clean on the inner journal, and what they do is booked with the move they
+// removal with Effort::clean in the inner step, and what they do is booked with the move they
 // follow. Effort::follow_up needs `inner`; without it the step tries no harder than paying.
 template <class Move, class Execute, class Count, class Remove>
 Refused try_moves_of(Mesh& mesh, ElementId t, std::span<const Move> moves, const Options& options,
-                         Tally& tally, MoveJournal& journal, Effort effort, MoveJournal* inner,
+                     Tally& tally, MoveStep& step, Effort effort, MoveStep* inner,
                          Execute execute, Count count, Remove remove) {
-    const Simplex& tau = mesh.simplex(t);
-    std::array<VertexId, 4> vertices{};
-    std::copy(tau.vertices().begin(), tau.vertices().end(), vertices.begin());
-    const std::span<const VertexId> own(vertices.data(), static_cast<std::size_t>(tau.count()));
     const double before = element_aspect_ratio(mesh, t, options.positions);
     Tally follow_ups;
     auto follow_up = [&](const std::vector<Simplex>& flat) {
@@ -195,7 +186,7 @@ Refused try_moves_of(Mesh& mesh, ElementId t, std::span<const Move> moves, const
         return true;
     };
     return try_moves(
-        mesh, moves, own, before, options, journal, inner ? effort : std::min(effort, Effort::paying), execute,
+        mesh, moves, before, options, step, inner ? effort : std::min(effort, Effort::paying), execute,
         [&](const Move& move) {
             count(move, tally);
             tally.collapses += follow_ups.collapses;

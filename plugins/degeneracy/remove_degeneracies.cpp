@@ -16,32 +16,11 @@
 #include "removal_steps.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
+#include "sxk/edit_journal.hpp"
 #include "sxk/watcher.hpp"
 
 namespace sxk::degeneracy {
 namespace {
-
-// Records the elements edits create or change: where new degenerates can appear (an element
-// no edit touches keeps its shape, so the thesis' "new list" needs to look only here).
-class Touched final : public Watcher {
-public:
-    void element_added(const Mesh&, ElementId element) override { ids.push_back(element); }
-    void element_changed(const Mesh&, ElementId element, const Simplex&) override { ids.push_back(element); }
-    std::vector<ElementId> ids;
-};
-
-// Registers a watcher for the lifetime of the object (also on early returns).
-class WatchGuard {
-public:
-    WatchGuard(Mesh& mesh, Watcher& watcher) : m_mesh(mesh), m_watcher(watcher) { mesh.add_watcher(watcher); }
-    ~WatchGuard() { m_mesh.remove_watcher(m_watcher); }
-    WatchGuard(const WatchGuard&) = delete;
-    WatchGuard& operator=(const WatchGuard&) = delete;
-
-private:
-    Mesh& m_mesh;
-    Watcher& m_watcher;
-};
 
 void sort_unique(std::vector<ElementId>& ids) {
     std::sort(ids.begin(), ids.end());
@@ -82,7 +61,14 @@ public:
         : m_mesh(mesh), m_options(options), m_whole_mesh(whole_mesh) {}
 
     Report run(std::vector<ElementId> candidates) {
-        const WatchGuard guard(m_mesh, m_touched);
+        // the run is one step of the mesh's journal (an application's, or one of its own), each
+        // move a step inside it; an exception takes the whole run back
+        JournalScope journal(m_mesh);
+        EditStep run_step(journal.journal());
+        detail::MoveStep move(m_mesh, journal.journal(), m_log), follow_up(m_mesh, journal.journal(), m_log);
+        m_move = &move;
+        m_follow_up = &follow_up;
+        const ScopedWatcher watching(m_mesh, m_log);
         Report report;
         report.elements_before = m_mesh.element_count();
         report.vertices_before = vertices_in_elements(m_mesh);
@@ -103,35 +89,47 @@ public:
 
         std::size_t collapse_passes = 0;
         std::size_t previous = std::numeric_limits<std::size_t>::max();
-        while (!list.empty()) {
-            // collapse passes while the list shrinks (thesis), or (beyond the thesis) while it
-            // holds elements no collapse pass has tried yet: a pass may remove some and create
-            // as many new ones, which the thesis' rule would leave to be cut free untried
-            while (!list.empty() && (list.size() < previous || has_untried(list)) &&
-                   collapse_passes < m_options.max_passes) {
-                previous = list.size();
-                ++collapse_passes;
-                list = pass(PassReport::Kind::collapse, list, report);
+        for (;;) {
+            while (!list.empty()) {
+                // collapse passes while the list shrinks (thesis), or (beyond the thesis) while it
+                // holds elements no collapse pass has tried yet: a pass may remove some and create
+                // as many new ones, which the thesis' rule would leave to be cut free untried
+                while (!list.empty() && (list.size() < previous || has_untried(list)) &&
+                       collapse_passes < m_options.max_passes) {
+                    previous = list.size();
+                    ++collapse_passes;
+                    list = pass(PassReport::Kind::collapse, list, report);
+                }
+                if (list.empty() || !m_options.flips || m_mesh.topological_dimension() != 3) break;
+                // then flips, and after any flip the collapse passes again
+                const std::size_t flips_before = report.flips;
+                list = pass(PassReport::Kind::flip, list, report);
+                if (report.flips == flips_before || collapse_passes >= m_options.max_passes) break;
+                previous = std::numeric_limits<std::size_t>::max();
             }
-            if (list.empty() || !m_options.flips || m_mesh.topological_dimension() != 3) break;
-            // then flips, and after any flip the collapse passes again
-            const std::size_t flips_before = report.flips;
-            list = pass(PassReport::Kind::flip, list, report);
-            if (report.flips == flips_before || collapse_passes >= m_options.max_passes) break;
-            previous = std::numeric_limits<std::size_t>::max();
-        }
-        // what resisted: moves whose new degenerates go by clean moves right after
-        if (!list.empty() && collapse_passes < m_options.max_passes) {
-            m_effort = detail::Effort::follow_up;
-            previous = std::numeric_limits<std::size_t>::max();
-            m_follow_up_tried.clear();
-            while (!list.empty() && (list.size() < previous || has_untried_follow_up(list)) &&
-                   collapse_passes < m_options.max_passes) {
-                previous = list.size();
-                ++collapse_passes;
-                list = pass(PassReport::Kind::collapse, list, report);
+            // what resisted: moves whose new degenerates go by clean moves right after
+            if (!list.empty() && collapse_passes < m_options.max_passes) {
+                m_effort = detail::Effort::follow_up;
+                previous = std::numeric_limits<std::size_t>::max();
+                m_follow_up_tried.clear();
+                while (!list.empty() && (list.size() < previous || has_untried_follow_up(list)) &&
+                       collapse_passes < m_options.max_passes) {
+                    previous = list.size();
+                    ++collapse_passes;
+                    list = pass(PassReport::Kind::collapse, list, report);
+                }
+                m_effort = detail::Effort::paying;
             }
+            // what still resists: one pass keeping any move that succeeds, as the thesis keeps
+            // every collapse; what it makes goes through the stages above again
+            if (list.empty() || collapse_passes >= m_options.max_passes) break;
+            const std::size_t resisting = list.size();
+            m_effort = detail::Effort::any;
+            ++collapse_passes;
+            list = pass(PassReport::Kind::collapse, list, report);
             m_effort = detail::Effort::paying;
+            if (list.size() >= resisting && !has_untried(list)) break;
+            previous = std::numeric_limits<std::size_t>::max();
         }
         if (!list.empty() && m_options.peel) list = pass(PassReport::Kind::peel, list, report);
         if (!list.empty() && m_options.cut_free) list = pass(PassReport::Kind::cut_free, list, report);
@@ -145,6 +143,7 @@ public:
         }
         report.elements_after = m_mesh.element_count();
         report.vertices_after = vertices_in_elements(m_mesh);
+        (void)run_step.commit();
         return report;
     }
 
@@ -207,7 +206,7 @@ private:
         p.elements_before = m_mesh.element_count();
         p.vertices_before = report.passes.empty() ? report.vertices_before : report.passes.back().vertices_after;
         for (const ElementId t : list) ++p.found[static_cast<std::size_t>(detail::classify_element(m_mesh, t, m_options))];
-        m_touched.ids.clear();
+        m_log.touched.clear();
         detail::Tally tally;
         std::vector<ElementId> next;
         if (kind == PassReport::Kind::cut_free) {
@@ -219,7 +218,8 @@ private:
                 next = list;
             }
         } else {
-            // By vertices, not ids: an undone move gives the elements it put back new ids.
+            // By vertices, not ids: a move kept earlier in the pass may have removed an element
+            // and given its id to a new one.
             std::vector<Simplex> keys;
             for (const ElementId t : list) keys.push_back(key(t));
             for (const Simplex& vertices : keys) {
@@ -233,8 +233,8 @@ private:
                 } else if (kind == PassReport::Kind::flip) {
                     why = detail::flip_out(m_mesh, t, m_options, tally);
                 } else if (m_mesh.topological_dimension() == 2) {
-                    why = detail::collapse_flat_triangle(m_mesh, t, m_options, tally, m_journal, m_effort,
-                                                         &m_inner_journal);
+                    why = detail::collapse_flat_triangle(m_mesh, t, m_options, tally, *m_move, m_effort,
+                                                         m_follow_up);
                 } else {
                     // A sliver's own move puts a vertex where its diagonals cross and splits
                     // every element around both: about five elements more per sliver (the
@@ -243,14 +243,14 @@ private:
                     if (m_options.flips && detail::classify_element(m_mesh, t, m_options) == DegenerateClass::sliver &&
                         !detail::flip_out(m_mesh, t, m_options, tally))
                         continue;
-                    why = detail::collapse_flat_tetrahedron(m_mesh, t, m_options, tally, m_journal, m_effort,
-                                                            &m_inner_journal);
+                    why = detail::collapse_flat_tetrahedron(m_mesh, t, m_options, tally, *m_move, m_effort,
+                                                            m_follow_up);
                 }
                 if (why) m_reasons[vertices][static_cast<std::size_t>(kind)] = std::move(why);
             }
             for (const Simplex& vertices : keys)
                 if (const ElementId t = detail::element_with(m_mesh, vertices); t != invalid_id) next.push_back(t);
-            next.insert(next.end(), m_touched.ids.begin(), m_touched.ids.end());
+            next.insert(next.end(), m_log.touched.begin(), m_log.touched.end());
             next = degenerates_among(next);
         }
         p.collapses = tally.collapses;
@@ -321,8 +321,8 @@ private:
             std::sort(shapes.begin(), shapes.end());
             walk(shapes, [](ElementId) { return true; });
         } else {
-            for (const ElementId t : m_touched.ids) m_made.insert(t);
-            m_touched_ever.insert(m_touched.ids.begin(), m_touched.ids.end());
+            for (const ElementId t : m_log.touched) m_made.insert(t);
+            m_touched_ever.insert(m_log.touched.begin(), m_log.touched.end());
             std::erase_if(m_made, [&](ElementId t) { return !m_mesh.is_element(t); });
             for (const ElementId t : m_made)
                 shapes.emplace_back(detail::element_aspect_ratio(m_mesh, t, m_options.positions), t);
@@ -339,9 +339,9 @@ private:
     Mesh& m_mesh;
     const Options& m_options;
     bool m_whole_mesh;
-    Touched m_touched;
-    detail::MoveJournal m_journal{m_mesh, m_touched.ids};
-    detail::MoveJournal m_inner_journal{m_mesh, m_touched.ids};  // follow-up moves
+    detail::MoveLog m_log;
+    detail::MoveStep* m_move = nullptr;       // a removal move (run() owns it)
+    detail::MoveStep* m_follow_up = nullptr;  // the follow-up moves inside it
     detail::Effort m_effort = detail::Effort::paying;
     std::unordered_set<Simplex, SimplexHash> m_follow_up_tried;
     // local runs: the candidates by aspect ratio (ascending), the elements edits made that are

@@ -32,7 +32,7 @@
 // the thesis:
 //   - a move is kept only if it pays (detail::try_moves): first only moves that make no new
 //     degenerate, then moves that leave fewer degenerates or better shapes; a move that does
-//     not pay is undone (MoveJournal), so passes do not churn (the thesis keeps every collapse
+//     not pay is rolled back (one EditJournal step per move), so passes do not churn (the thesis keeps every collapse
 //     and its cube and femur runs then went on for dozens of passes);
 //   - a pass also runs while the list holds elements no pass has tried (a pass may remove
 //     some and make as many new ones);

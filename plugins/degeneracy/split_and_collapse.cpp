@@ -29,17 +29,6 @@ ElementId element_with(const Mesh& mesh, const Simplex& vertices) {
     return element_containing(mesh, vertices.vertices());
 }
 
-std::vector<VertexId> ring_of(const Mesh& mesh, std::span<const VertexId> vertices) {
-    std::vector<VertexId> ring(vertices.begin(), vertices.end());
-    for (const VertexId v : vertices)
-        if (mesh.vertex_element(v) != invalid_id)
-            for (const ElementId t : star(mesh, v))
-                for (const VertexId w : mesh.simplex(t).vertices()) ring.push_back(w);
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    return ring;
-}
-
 Shapes shapes_of(const Mesh& mesh, std::span<const ElementId> elements, const Options& options) {
     Shapes shapes;
     for (const ElementId t : elements) {

@@ -81,6 +81,9 @@ public:
     Outcome<Done> redo();
     void clear_history();
 
+    // The journal attached to `mesh`, or nullptr.
+    static EditJournal* of(Mesh& mesh) { return mesh.m_journal; }
+
 private:
     struct Log;
     Outcome<Done> replay_history(std::deque<std::unique_ptr<Log>>& from,
@@ -94,6 +97,41 @@ private:
     std::size_t m_history_limit = 100;
     std::uint64_t m_revision_at_open = 0;  // the mesh's revision when the outermost step opened
     std::uint64_t m_history_revision = 0;  // the mesh's revision after the history's last change
+};
+
+// A step for the length of a scope: opened at construction, committed by commit(), rolled back
+// by the destructor otherwise (an early return or an exception undoes the step, and the steps
+// still open inside it).
+class SXK_API EditStep {
+public:
+    explicit EditStep(EditJournal& journal) : m_journal(journal), m_depth(journal.depth()) { journal.checkpoint(); }
+    ~EditStep();
+    EditStep(const EditStep&) = delete;
+    EditStep& operator=(const EditStep&) = delete;
+    // Closes inner steps left open (kept), then this one. Refuses when already closed.
+    Outcome<Done> commit();
+
+private:
+    EditJournal& m_journal;
+    std::size_t m_depth;  // the journal's depth outside this step
+    bool m_closed = false;
+};
+
+// The journal of a mesh for the length of a scope: the one attached (an application's, whose
+// open step then holds what the scope does), or one of its own, attached until the scope ends.
+// What needs several edits to be one (a plug-in's multi-edit move, a tool step) uses it whether
+// or not the application journals the mesh.
+class SXK_API JournalScope {
+public:
+    explicit JournalScope(Mesh& mesh);
+    JournalScope(const JournalScope&) = delete;
+    JournalScope& operator=(const JournalScope&) = delete;
+    EditJournal& journal() { return *m_journal; }
+    EditJournal* operator->() { return m_journal; }
+
+private:
+    std::unique_ptr<EditJournal> m_own;
+    EditJournal* m_journal;
 };
 
 }  // namespace sxk

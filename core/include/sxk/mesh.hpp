@@ -447,6 +447,19 @@ private:
     std::uint64_t m_revision = 0;
 };
 
+// Attaches a watcher for the lifetime of the object, early returns and exceptions included.
+class ScopedWatcher {
+public:
+    ScopedWatcher(Mesh& mesh, Watcher& watcher) : m_mesh(mesh), m_watcher(watcher) { mesh.add_watcher(watcher); }
+    ~ScopedWatcher() { m_mesh.remove_watcher(m_watcher); }
+    ScopedWatcher(const ScopedWatcher&) = delete;
+    ScopedWatcher& operator=(const ScopedWatcher&) = delete;
+
+private:
+    Mesh& m_mesh;
+    Watcher& m_watcher;
+};
+
 // Iterates the ids of live elements: for (ElementId t : elements(mesh)).
 class ElementRange {
 public:
