@@ -305,6 +305,26 @@ Plugin* PluginHost::find(std::string_view name) const {
     return nullptr;
 }
 
+Outcome<void*> PluginHost::find_service(std::string_view service_id, std::uint32_t version,
+                                        std::string_view plugin) const {
+    for (const auto& entry : m_state->entries) {
+        if (!plugin.empty() && entry.loaded.name != plugin) continue;
+        const ServiceOffer offer = entry.loaded.plugin->offer(service_id);
+        if (offer.version == 0 || offer.object == nullptr) continue;
+        if (offer.version != version)
+            return Refusal{RefusalCode::not_found, "plug-in " + entry.loaded.name + " offers " +
+                                                       std::string(service_id) + " version " +
+                                                       std::to_string(offer.version) +
+                                                       ", not version " + std::to_string(version)};
+        return offer.object;
+    }
+    if (!plugin.empty() && find(plugin) == nullptr)
+        return Refusal{RefusalCode::not_found, "no plug-in called " + std::string(plugin)};
+    return Refusal{RefusalCode::not_found,
+                   (plugin.empty() ? std::string("no plug-in") : "plug-in " + std::string(plugin)) +
+                       " offers " + std::string(service_id)};
+}
+
 FoundCommand PluginHost::find_command(std::span<const std::string> args) const {
     FoundCommand best;
     for (const auto& command : m_state->commands) {

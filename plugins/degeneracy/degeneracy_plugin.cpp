@@ -167,18 +167,21 @@ struct CommandOptions {
     bool json = false;
 };
 
-// Parses the command's arguments; nullopt with `code` set when the command is done already
-// (--help printed: 0; usage error reported: 2).
+// Parses the command's arguments (without IN and OUT when `with_files` is false:
+// run_on_mutable_mesh); nullopt with `code` set when the command is done already (--help
+// printed: 0; usage error reported: 2).
 std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostream& out,
-                                    std::ostream& err, int& code) {
+                                    std::ostream& err, int& code, bool with_files = true) {
     CommandOptions options;
     CLI::App app("Removes degenerate (flat) elements by splits, edge collapses and flips; what "
                  "remains is cut free (thesis §3.2.3)",
                  "sxk degeneracies");
-    app.add_option("IN", options.input, "Input mesh file")->required();
-    app.add_option("OUT", options.output,
-                   "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
-        ->required();
+    if (with_files) {
+        app.add_option("IN", options.input, "Input mesh file")->required();
+        app.add_option("OUT", options.output,
+                       "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+            ->required();
+    }
     app.add_option("--aspect", options.removal.aspect_ratio,
                    "Aspect ratio threshold A, 0 < A < 1: below it an element is degenerate")
         ->check(number_in(0, false, 1, false, "(0, 1)"))
@@ -202,7 +205,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
         ->check(number_in(0, true, 1, false, "[0, 1)"))
         ->capture_default_str();
     app.add_flag("--json", options.json, "Print one JSON object instead of the table");
-    add_read_options(app, options.reading);
+    if (with_files) add_read_options(app, options.reading);
     if (const std::optional<int> done = parse_command_line(app, args, "degeneracies", out, err)) {
         code = *done;
         return std::nullopt;
@@ -257,47 +260,73 @@ public:
         if (!save_mesh_for_command(*mesh, options->output, err))
             return 1;
 
-        const bool tetrahedra = mesh->topological_dimension() == 3;
-        if (options->json) {
+        print_result(*mesh, *options, *report, options->input + " -> " + options->output, out);
+        return 0;
+    }
+
+    // The removal on a mesh the application holds: one step of its journal when it has one.
+    bool edits_mesh() const override { return true; }
+    int run_on_mutable_mesh(Mesh& mesh, std::string_view mesh_name, std::span<const std::string> args,
+                            std::ostream& out, std::ostream& err) override {
+        int code = 0;
+        std::optional<CommandOptions> options = parse(args, out, err, code, false);
+        if (!options)
+            return code;
+        options->input = std::string(mesh_name);
+        const Outcome<Report> report = remove_degeneracies(mesh, options->removal);
+        if (!report) {
+            err << "sxk: " << mesh_name << ": " << report.reason() << '\n';
+            return 1;
+        }
+        print_result(mesh, *options, *report, std::string(mesh_name), out);
+        return 0;
+    }
+
+private:
+    // The report: JSON (with "file", "output" when there are files) or the table, the first
+    // remaining elements and a last line "WHAT: N tetrahedra, M vertices in elements".
+    static void print_result(const Mesh& mesh, const CommandOptions& options, const Report& report,
+                             const std::string& what, std::ostream& out) {
+        const bool tetrahedra = mesh.topological_dimension() == 3;
+        if (options.json) {
             nlohmann::ordered_json json;
-            json["file"] = options->input;
-            json["output"] = options->output;
-            json["options"] = options_json(options->removal);
-            const nlohmann::ordered_json body = to_json(*report);  // named: items() is a view
+            json["file"] = options.input;
+            if (!options.output.empty()) json["output"] = options.output;
+            json["options"] = options_json(options.removal);
+            const nlohmann::ordered_json body = to_json(report);  // named: items() is a view
             for (const auto& [key, value] : body.items())
                 json[key] = value;
             out << json.dump(2) << '\n';
-            return 0;
+            return;
         }
-        print_report(out, *report, tetrahedra);
-        const std::size_t listed = std::min(remaining_listed, report->remaining_elements.size());
+        print_report(out, report, tetrahedra);
+        const std::size_t listed = std::min(remaining_listed, report.remaining_elements.size());
         for (std::size_t index = 0; index < listed; ++index) {
-            out << "  remaining: element " << report->remaining_elements[index];
-            if (index < report->remaining_reasons.size())
-                out << ": " << report->remaining_reasons[index];
+            out << "  remaining: element " << report.remaining_elements[index];
+            if (index < report.remaining_reasons.size())
+                out << ": " << report.remaining_reasons[index];
             out << '\n';
         }
-        if (report->remaining_elements.size() > listed)
-            out << "  ... and " << report->remaining_elements.size() - listed << " more\n";
-        out << options->input << " -> " << options->output << ": "
-            << plural(mesh->element_count(), tetrahedra ? "tetrahedron" : "triangle",
+        if (report.remaining_elements.size() > listed)
+            out << "  ... and " << report.remaining_elements.size() - listed << " more\n";
+        out << what << ": "
+            << plural(mesh.element_count(), tetrahedra ? "tetrahedron" : "triangle",
                       tetrahedra ? "tetrahedra" : "triangles")
-            << ", " << plural(report->vertices_after, "vertex", "vertices") << " in elements\n";
-        return 0;
+            << ", " << plural(report.vertices_after, "vertex", "vertices") << " in elements\n";
     }
 };
 
 class DegeneracyPlugin final : public Plugin {
 public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
-    void* service(std::string_view name) override {
-        return name == service_name ? &m_service : nullptr;
+    ServiceOffer offer(std::string_view service_id) override {
+        return service_id == DegeneracyService::service_id ? offer_of(&m_service) : ServiceOffer{};
     }
 
 private:
     DegeneraciesCommand m_degeneracies;
     PluginCommand* m_commands[1] = {&m_degeneracies};
-    Service m_service{
+    DegeneracyService m_service{
         static_cast<Outcome<Report> (*)(Mesh&, const Options&)>(&remove_degeneracies),
         static_cast<Outcome<Report> (*)(Mesh&, std::span<const ElementId>, const Options&)>(
             &remove_degeneracies),

@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "degeneracy_service.hpp"
 #include "remove_degeneracies.hpp"
 #include "sxk/plugin.hpp"
 
@@ -26,19 +27,6 @@
 extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_degeneracy();
 
 namespace sxk::degeneracy {
-
-// The service the plug-in offers through Plugin::service(service_name): remove_degeneracies()
-// for applications that load degeneracy.so at run time instead of linking
-// sxk_plugin_degeneracy_static. The pointers call the functions of remove_degeneracies.hpp.
-// The number changes with the layout of what the pointers pass (2: refusals carry a code,
-// Report::remaining_codes).
-inline constexpr const char* service_name = "sxk.degeneracy/2";
-struct Service {
-    Outcome<Report> (*remove)(Mesh& mesh, const Options& options);
-    Outcome<Report> (*remove_among)(Mesh& mesh, std::span<const ElementId> candidates,
-                                    const Options& options);
-    DegenerateClass (*classify)(const Mesh& mesh, ElementId t, const Options& options);
-};
 
 // Degenerates removed: those found on the first list minus those remaining at the end (0 when
 // the removal created more than it removed).

@@ -123,8 +123,8 @@ ElementId element_with(const Mesh& mesh, const Simplex& vertices);
 // the first move that succeeds. `execute(move)` returns a refusal or nothing; `count(move)`
 // books a kept move. Returns nothing when a move was kept, else the last refusal.
 template <class Move, class Execute, class Count, class FollowUp>
-Refused try_moves(Mesh& mesh, std::span<const Move> moves, double before, const Options& options, MoveStep& step, Effort effort,
-                  Execute execute, Count count, FollowUp follow_up) {
+Refused try_moves(Mesh& mesh, std::span<const Move> moves, double before, const Options& options,
+                  MoveStep& step, Effort effort, Execute execute, Count count, FollowUp follow_up) {
     std::vector<char> refused(moves.size(), 0);  // by an operation: later rounds skip them
     const int rounds = effort == Effort::clean ? 1 : effort == Effort::paying ? 2 : effort == Effort::follow_up ? 3 : 4;
     Refused why;

@@ -1,7 +1,7 @@
 // sxk degeneracies IN OUT (the degeneracy plug-in, thesis §3.2.3) through the binary: usage and
 // input errors (exit 2), an unwritable output (exit 1), a cap removed by split + collapse, a
 // flat triangle removed, a boundary spindle cut free or listed as remaining, the JSON report;
-// and the plug-in's service "sxk.degeneracy/2" called in process through a PluginHost.
+// and the plug-in's service "sxk.degeneracy" called in process through a PluginHost.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -12,6 +12,7 @@
 #include "../../plugins/degeneracy/degeneracy_plugin.hpp"
 #include "core/fixtures.hpp"
 #include "run_sxk.hpp"
+#include "sxk/edit_journal.hpp"
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/plugin_host.hpp"
@@ -460,16 +461,56 @@ TEST(SxkDegeneracies, CleanMeshIsCopied) {
     EXPECT_EQ(result.vertex_count(), 5u);
 }
 
+// An interface of another version than the plug-in's, and one nobody offers, are refused.
+struct OldDegeneracyService {
+    static constexpr std::string_view service_id = "sxk.degeneracy";
+    static constexpr std::uint32_t service_version = 1;
+};
+struct CutterService {
+    static constexpr std::string_view service_id = "sxk.cutter";
+    static constexpr std::uint32_t service_version = 1;
+};
+
+TEST(DegeneracyService, AServiceOfAnotherVersionIsRefused) {
+    PluginHost host;
+    host.load_folder(SXK_PLUGIN_BUILD_DIR);
+    EXPECT_EQ(host.service<OldDegeneracyService>().reason(),
+              "plug-in degeneracy offers sxk.degeneracy version 3, not version 1");
+    EXPECT_EQ(host.service<CutterService>().reason(), "no plug-in offers sxk.cutter");
+    EXPECT_EQ(host.service<degeneracy::DegeneracyService>("stats").reason(), "plug-in stats offers sxk.degeneracy");
+    EXPECT_EQ(host.service<degeneracy::DegeneracyService>("nothing").reason(), "no plug-in called nothing");
+    EXPECT_EQ(host.service<OldDegeneracyService>().code(), RefusalCode::not_found);
+    EXPECT_EQ(host.service<CutterService>().code(), RefusalCode::not_found);
+}
+
+// A command that edits may edit the application's mesh in place, as one step of its journal.
+TEST(DegeneracyService, TheCommandEditsAMeshInMemoryAsOneStep) {
+    PluginHost host;
+    host.load_folder(SXK_PLUGIN_BUILD_DIR);
+    const FoundCommand found = host.find_command(std::vector<std::string>{"degeneracies"});
+    ASSERT_NE(found.command, nullptr);
+    ASSERT_TRUE(found.command->edits_mesh());
+    std::istringstream text(cap_mesh);
+    Mesh mesh = read_mesh(text, Format::medit, "cap.mesh");
+    const Mesh before = mesh;
+    EditJournal journal(mesh);
+    std::ostringstream out, err;
+    EXPECT_EQ(found.command->run_on_mutable_mesh(mesh, "cap", {}, out, err), 0) << err.str();
+    EXPECT_NE(out.str().find("\ncap: 6 tetrahedra, 6 vertices in elements\n"), std::string::npos) << out.str();
+    EXPECT_EQ(journal.undo_count(), 1u);
+    ASSERT_TRUE(journal.undo().ok());
+    EXPECT_EQ(mesh.element_count(), before.element_count());
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 // An application loads degeneracy.so and calls remove_degeneracies through the service.
 TEST(DegeneracyService, RemovesTheCapInProcess) {
     PluginHost host;
     host.load_folder(SXK_PLUGIN_BUILD_DIR);
-    Plugin* plugin = host.find("degeneracy");
-    ASSERT_NE(plugin, nullptr);
-    EXPECT_EQ(plugin->service("sxk.degeneracy/0"), nullptr);
-    auto* service =
-        static_cast<const degeneracy::Service*>(plugin->service(degeneracy::service_name));
-    ASSERT_NE(service, nullptr);
+    ASSERT_NE(host.find("degeneracy"), nullptr);
+    const auto found = host.service<degeneracy::DegeneracyService>();
+    ASSERT_TRUE(found.ok()) << found.reason();
+    const degeneracy::DegeneracyService* service = *found;
 
     std::istringstream text(cap_mesh);
     Mesh mesh = read_mesh(text, Format::medit, "cap.mesh");

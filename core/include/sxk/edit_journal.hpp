@@ -128,6 +128,8 @@ public:
     JournalScope& operator=(const JournalScope&) = delete;
     EditJournal& journal() { return *m_journal; }
     EditJournal* operator->() { return m_journal; }
+    // True when the scope attached the journal (the mesh had none).
+    bool owned() const { return m_own != nullptr; }
 
 private:
     std::unique_ptr<EditJournal> m_own;

@@ -23,7 +23,7 @@ namespace sxk {
 enum class RefusalCode : std::uint8_t {
     // malformed call: wrong sizes or counts, an id twice, a bad simplex, a parameter out of range
     bad_argument,
-    // an argument names nothing: no such vertex, element, face, edge, attribute, or point's element
+    // an argument names nothing: no such vertex, element, face, edge, attribute, plug-in service
     not_found,
     // the mesh has another dimension than the operation needs (2D ops on tetrahedra, and so on)
     wrong_dimension,

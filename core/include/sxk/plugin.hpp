@@ -30,7 +30,9 @@
 #include <string>
 #include <string_view>
 
-#define SXK_PLUGIN_ABI_VERSION 1u
+// 2: typed services (Plugin::offer with an interface id and version), run_on_mesh for a mesh
+//    the command may edit.
+#define SXK_PLUGIN_ABI_VERSION 2u
 
 // Entry points must be visible although the project builds with hidden visibility.
 #if defined(_WIN32)
@@ -70,7 +72,41 @@ public:
         err << "sxk: " << name() << ": this command needs a mesh file\n";
         return 2;
     }
+
+    // Commands that change a mesh (IN OUT on the command line) may change one the application
+    // holds instead: `args` are then the arguments without IN and OUT, and the command edits
+    // `mesh` in place (as one EditJournal step when the mesh has a journal, sxk/edit_journal.hpp,
+    // so the application can undo it). The default refuses with exit code 2.
+    virtual bool edits_mesh() const { return false; }
+    virtual int run_on_mutable_mesh(Mesh& /*mesh*/, std::string_view /*mesh_name*/,
+                                    std::span<const std::string> /*args*/, std::ostream& /*out*/,
+                                    std::ostream& err) {
+        err << "sxk: " << name() << ": this command does not edit a mesh in memory\n";
+        return 2;
+    }
 };
+
+// What a plug-in offers for an interface id: the version of the interface it implements and the
+// object. Applications do not see this: PluginHost::service<Interface>() checks id and version
+// and returns a typed pointer (plugin_host.hpp).
+struct ServiceOffer {
+    std::uint32_t version = 0;  // 0: not offered
+    void* object = nullptr;
+};
+
+// An interface a plug-in can offer names itself and its version:
+//
+//     struct CutterService {
+//         static constexpr std::string_view service_id = "sxk.cutter";
+//         static constexpr std::uint32_t service_version = 1;  // bumped on any change
+//         ...function pointers or virtual functions...
+//     };
+//
+// and the plug-in answers offer("sxk.cutter") with offer_of(&its_object).
+template <class Interface>
+ServiceOffer offer_of(Interface* object) {
+    return ServiceOffer{Interface::service_version, object};
+}
 
 // A loaded plug-in. It owns its commands; they stay valid as long as the plug-in object.
 class Plugin {
@@ -79,10 +115,9 @@ public:
 
     virtual std::span<PluginCommand* const> commands() = 0;
 
-    // Other services (a cutter's step API, a watcher factory, ...), looked up by a name the
-    // plug-in and the application agree on, e.g. "sxk.cutter/1"; the application casts the
-    // result to the interface that name documents. nullptr: not offered.
-    virtual void* service(std::string_view /*name*/) { return nullptr; }
+    // Other services (a tool-session factory, the degeneracy removal, ...) by interface id;
+    // {} when not offered. Implement with offer_of; look up with PluginHost::service.
+    virtual ServiceOffer offer(std::string_view /*service_id*/) { return {}; }
 };
 
 }  // namespace sxk

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "sxk/config.hpp"
+#include "sxk/outcome.hpp"
 #include "sxk/plugin.hpp"
 
 namespace sxk {
@@ -93,6 +94,21 @@ public:
     FoundCommand find_command(std::span<const std::string> args) const;
     // All commands, in loading order.
     std::vector<FoundCommand> commands() const;
+
+    // The first loaded plug-in (or the one called `plugin`, when given) offering Interface
+    // (Interface::service_id, Interface::service_version; plugin.hpp). Refuses when no plug-in
+    // offers the id ("no plug-in offers sxk.cutter"), or the one found offers another version
+    // ("plug-in snapcut offers sxk.cutter version 1, not version 2"): the host never hands out an
+    // interface the plug-in was not built against.
+    template <class Interface>
+    Outcome<Interface*> service(std::string_view plugin = {}) const {
+        auto found = find_service(Interface::service_id, Interface::service_version, plugin);
+        if (!found) return found.refusal();
+        return static_cast<Interface*>(*found);
+    }
+    // The untyped lookup behind service<Interface>().
+    Outcome<void*> find_service(std::string_view service_id, std::uint32_t version,
+                                std::string_view plugin = {}) const;
 
 private:
     struct State;

@@ -1,0 +1,108 @@
+// ToolSession (tool_session.hpp): each step one EditJournal step, and the session's undo.
+#include "sxk/tool_session.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace sxk {
+
+namespace {
+
+// What a step's edits did, as their events tell it.
+class StepWatcher final : public Watcher {
+public:
+    void element_changed(const Mesh&, ElementId t, const Simplex&) override { elements.push_back(t); }
+    void element_added(const Mesh&, ElementId t) override {
+        elements.push_back(t);
+        added.push_back(t);
+    }
+    void vertices_moved(const Mesh&, std::span<const VertexId> moved, PositionSet) override {
+        vertices.insert(vertices.end(), moved.begin(), moved.end());
+    }
+    std::vector<ElementId> elements;
+    std::vector<VertexId> vertices;
+    std::vector<ElementId> added;
+};
+
+template <class T>
+void sort_unique(std::vector<T>& ids) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
+}  // namespace
+
+ToolSession::ToolSession(Mesh& mesh) : m_mesh(mesh), m_journal(mesh), m_revision(mesh.revision()) {
+    // a journal of its own keeps every step, so that abort() can take them all back
+    if (m_journal.owned()) m_journal->set_history_limit(std::numeric_limits<std::size_t>::max());
+}
+
+ToolSession::~ToolSession() = default;
+
+Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
+    if (m_ended) return Refusal{RefusalCode::not_applicable, "step: the session has ended"};
+    EditJournal& journal = m_journal.journal();
+    const bool outermost = journal.depth() == 0;
+    const std::size_t vertices_before = m_mesh.vertex_count();
+    const std::size_t elements_before = m_mesh.element_count();
+    const bool in_step = m_mesh.revision() == m_revision;  // nothing changed since our last step
+    StepReport report;
+    StepWatcher watcher;
+    Outcome<Done> applied = Done{};
+    {
+        EditStep step(journal);
+        const ScopedWatcher watching(m_mesh, watcher);
+        applied = apply(pose, report);
+        if (applied) (void)step.commit();
+    }  // a refusal is rolled back here
+    if (!applied) {
+        if (in_step) m_revision = m_mesh.revision();  // the mesh is as after our last step again
+        return applied.refusal();
+    }
+    m_kept.push_back(outermost);
+    m_revision = m_mesh.revision();
+    report.elements = std::move(watcher.elements);
+    sort_unique(report.elements);
+    std::erase_if(report.elements, [&](ElementId t) { return !m_mesh.is_element(t); });
+    // after = before - removed + made, counting only the made elements still there
+    sort_unique(watcher.added);
+    const auto made = static_cast<std::size_t>(
+        std::count_if(watcher.added.begin(), watcher.added.end(), [&](ElementId t) { return m_mesh.is_element(t); }));
+    report.elements_removed = elements_before + made - m_mesh.element_count();
+    report.vertices = std::move(watcher.vertices);
+    for (std::size_t v = vertices_before; v < m_mesh.vertex_count(); ++v)
+        report.vertices.push_back(static_cast<VertexId>(v));
+    sort_unique(report.vertices);
+    std::erase_if(report.vertices, [&](VertexId v) { return v >= m_mesh.vertex_count(); });
+    return report;
+}
+
+Outcome<Done> ToolSession::undo_step() {
+    if (m_kept.empty())
+        return Refusal{RefusalCode::not_applicable, "undo_step: the session has no step to undo"};
+    if (!m_kept.back())
+        return Refusal{RefusalCode::not_applicable,
+                       "undo_step: the step is part of the application's open step"};
+    if (m_mesh.revision() != m_revision)
+        return Refusal{RefusalCode::stale,
+                       "undo_step: the mesh changed since the session's last step"};
+    if (Outcome<Done> undone = m_journal.journal().undo(); !undone)
+        return undone.refusal().prefixed("undo_step: ");
+    m_kept.pop_back();
+    m_revision = m_mesh.revision();
+    return Done{};
+}
+
+Outcome<Done> ToolSession::abort() {
+    std::size_t undone = 0;
+    while (!m_kept.empty()) {
+        if (Outcome<Done> one = undo_step(); !one)
+            return one.refusal().prefixed("abort: " + std::to_string(undone) +
+                                          " steps taken back, then ");
+        ++undone;
+    }
+    m_ended = true;
+    return Done{};
+}
+
+}  // namespace sxk

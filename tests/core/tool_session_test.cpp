@@ -1,0 +1,136 @@
+// ToolSession: each step one transaction (a refusal after several edits leaves the mesh as it
+// was), the step report, undo_step and abort, a session on an application's journal. The tool
+// here is a test tool: it splits an edge at the dragged vertex (one to a vertex of the vertex's
+// anchor element) and drags the vertex to the pose,
+// refusing a pose whose z axis points down only after both edits, so that a refusal has to undo
+// them.
+#include <gtest/gtest.h>
+
+#include "../../fuzz/ops_driver.hpp"
+#include "fixtures.hpp"
+#include "sxk/edit_journal.hpp"
+#include "sxk/ops/split_edge.hpp"
+#include "sxk/tool_session.hpp"
+
+namespace sxk {
+namespace {
+
+using ops_driver::snapshot;
+
+class DragTool final : public ToolSession {
+public:
+    DragTool(Mesh& mesh, VertexId dragged) : ToolSession(mesh), m_dragged(dragged) {}
+
+protected:
+    Outcome<Done> apply(const ToolPose& pose, StepReport& report) override {
+        const Simplex& anchor = mesh().simplex(mesh().vertex_element(m_dragged));
+        const VertexId other = anchor.vertex(0) == m_dragged ? anchor.vertex(1) : anchor.vertex(0);
+        if (auto split = split_edge(mesh(), m_dragged, other, 0.5); !split) return split.refusal();
+        report.actions.push_back("split an edge");
+        const std::array<VertexId, 1> v{m_dragged};
+        const std::array<Point, 1> p{pose.position};
+        if (auto moved = mesh().move_vertices(v, p, PositionSet::deformed, MoveCheck{true, true}); !moved)
+            return moved.refusal();
+        report.actions.push_back("dragged a vertex");
+        if (pose.axes[2][2] < 0)
+            return Refusal{RefusalCode::not_applicable, "the tool points away from the mesh"};
+        return Done{};
+    }
+
+private:
+    VertexId m_dragged;
+};
+
+TEST(ToolSession, AStepIsOneTransaction) {
+    Mesh mesh = test::planar_grid(4);
+    test::MirrorWatcher mirror;
+    mesh.add_watcher(mirror);
+    DragTool tool(mesh, 6);
+    const auto start = snapshot(mesh);
+
+    ToolPose pose;
+    pose.position = mesh.deformed(6);
+    pose.position[0] += 0.01;
+    const auto report = tool.step(pose);
+    ASSERT_TRUE(report.ok()) << report.reason();
+    EXPECT_EQ(report->actions, (std::vector<std::string>{"split an edge", "dragged a vertex"}));
+    const VertexId made = static_cast<VertexId>(mesh.vertex_count() - 1);
+    EXPECT_EQ(report->vertices, (std::vector<VertexId>{6, made}));
+    EXPECT_EQ(report->elements_removed, 2u);  // the two triangles at an interior edge, split in four
+    EXPECT_EQ(report->elements.size(), 4u);
+    for (ElementId t : report->elements) EXPECT_TRUE(mesh.simplex(t).contains(made));
+    EXPECT_EQ(tool.steps(), 1u);
+    const auto after_one = snapshot(mesh);
+
+    // split and drag are done, then refused: both go
+    pose.axes[2] = {0, 0, -1};
+    const auto refused = tool.step(pose);
+    EXPECT_EQ(refused.reason(), "the tool points away from the mesh");
+    EXPECT_EQ(refused.code(), RefusalCode::not_applicable);
+    EXPECT_TRUE(snapshot(mesh) == after_one);
+    EXPECT_EQ(tool.steps(), 1u);
+    mirror.expect_mirrors(mesh);
+
+    ASSERT_TRUE(tool.undo_step().ok());
+    EXPECT_TRUE(snapshot(mesh) == start);
+    EXPECT_EQ(tool.undo_step().reason(), "undo_step: the session has no step to undo");
+    EXPECT_EQ(tool.undo_step().code(), RefusalCode::not_applicable);
+    EXPECT_TRUE(mesh.validate(ValidateOptions{true}).ok());
+    mirror.expect_mirrors(mesh);
+    mesh.remove_watcher(mirror);
+}
+
+TEST(ToolSession, AbortTakesBackEveryStep) {
+    Mesh mesh = test::planar_grid(4);
+    const auto start = snapshot(mesh);
+    DragTool tool(mesh, 6);
+    ToolPose pose;
+    pose.position = mesh.deformed(6);
+    for (int i = 0; i < 3; ++i) {
+        pose.position[1] += 0.05;
+        ASSERT_TRUE(tool.step(pose).ok());
+    }
+    EXPECT_EQ(tool.steps(), 3u);
+    ASSERT_TRUE(tool.abort().ok());
+    EXPECT_TRUE(snapshot(mesh) == start);
+    EXPECT_TRUE(tool.ended());
+    EXPECT_EQ(tool.step(pose).reason(), "step: the session has ended");
+    EXPECT_EQ(tool.step(pose).code(), RefusalCode::not_applicable);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
+TEST(ToolSession, UndoRefusesAfterAnEditFromElsewhere) {
+    Mesh mesh = test::planar_grid(4);
+    DragTool tool(mesh, 6);
+    ToolPose pose;
+    pose.position = mesh.deformed(6);
+    ASSERT_TRUE(tool.step(pose).ok());
+    mesh.set_label(0, 3);
+    EXPECT_EQ(tool.undo_step().reason(), "undo_step: the mesh changed since the session's last step");
+    EXPECT_EQ(tool.undo_step().code(), RefusalCode::stale);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
+TEST(ToolSession, StepsGoToTheApplicationsJournal) {
+    Mesh mesh = test::planar_grid(4);
+    EditJournal journal(mesh);
+    const auto start = snapshot(mesh);
+    DragTool tool(mesh, 6);
+    ToolPose pose;
+    pose.position = mesh.deformed(6);
+    ASSERT_TRUE(tool.step(pose).ok());
+    EXPECT_EQ(journal.undo_count(), 1u);  // the application can undo the tool's step itself
+    // inside an application's open step the tool's step is part of it
+    journal.checkpoint();
+    pose.position[1] += 0.05;
+    ASSERT_TRUE(tool.step(pose).ok());
+    EXPECT_EQ(tool.undo_step().reason(), "undo_step: the step is part of the application's open step");
+    EXPECT_EQ(tool.undo_step().code(), RefusalCode::not_applicable);
+    ASSERT_TRUE(journal.rollback().ok());
+    ASSERT_TRUE(journal.undo().ok());
+    EXPECT_TRUE(snapshot(mesh) == start);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
+}  // namespace
+}  // namespace sxk
