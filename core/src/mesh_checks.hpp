@@ -179,8 +179,9 @@ inline bool edge_exists(const Mesh& mesh, VertexId v, VertexId w) {
 
 namespace sxk {
 
-// The operations' door to Mesh::replace_elements without its star walks (a private header:
-// only the library's own operations in core/src/ops can use it).
+// The operations' door to Mesh::replace_elements without its star walks: the only maker of
+// Mesh::StarChecksProof (a private header: only the library's own operations in core/src/ops
+// can use it).
 //
 // Mesh::replace_elements must refuse any edit that would represent a new face or element twice
 // (invariant 7.4) or pinch a vertex star, and for an arbitrary edit that takes a walk of the
@@ -205,7 +206,7 @@ public:
     static Outcome<std::vector<ElementId>> replace(Mesh& mesh, std::span<const ElementId> old_elements,
                                                    std::span<const Simplex> new_simplexes,
                                                    std::span<const int> labels) {
-        return mesh.replace_elements_impl(old_elements, new_simplexes, labels, true);
+        return mesh.replace_elements(old_elements, new_simplexes, labels, Mesh::StarChecksProof{});
     }
 };
 

@@ -262,6 +262,12 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId
     return replace_elements_impl(old_elements, new_simplexes, labels, false);
 }
 
+Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId> old_elements,
+                                                       std::span<const Simplex> new_simplexes,
+                                                       std::span<const int> labels, StarChecksProof) {
+    return replace_elements_impl(old_elements, new_simplexes, labels, true);
+}
+
 Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const ElementId> old_elements,
                                                             std::span<const Simplex> new_simplexes,
                                                             std::span<const int> labels,

@@ -257,7 +257,10 @@ public:
         }
         // remove_degeneracies edits by checked transactions only; the writer's validation is
         // the oracle that keeps a broken or empty mesh from being written
-        if (!save_mesh_for_command(*mesh, options->output, err))
+        // collapses leave their `from` vertices in no element: the file numbers the rest
+        WriteOptions writing;
+        writing.drop_unused_vertices = true;
+        if (!save_mesh_for_command(*mesh, options->output, err, writing))
             return 1;
 
         print_result(*mesh, *options, *report, options->input + " -> " + options->output, out);

@@ -89,7 +89,10 @@ public:
 
         std::size_t collapse_passes = 0;
         std::size_t previous = std::numeric_limits<std::size_t>::max();
-        for (;;) {
+        // each round: the stages that keep only moves that pay, then one pass keeping any move
+        // that succeeds; a few rounds are worth it, more only churn (figures: performance.md)
+        constexpr int rounds = 3;
+        for (int round = 0;; ++round) {
             while (!list.empty()) {
                 // collapse passes while the list shrinks (thesis), or (beyond the thesis) while it
                 // holds elements no collapse pass has tried yet: a pass may remove some and create
@@ -122,7 +125,7 @@ public:
             }
             // what still resists: one pass keeping any move that succeeds, as the thesis keeps
             // every collapse; what it makes goes through the stages above again
-            if (list.empty() || collapse_passes >= m_options.max_passes) break;
+            if (list.empty() || collapse_passes >= m_options.max_passes || round + 1 == rounds) break;
             const std::size_t resisting = list.size();
             m_effort = detail::Effort::any;
             ++collapse_passes;

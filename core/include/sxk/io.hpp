@@ -158,6 +158,9 @@ struct WriteOptions {
     // orientation check: inverted elements, broken connectivity. The sxk commands set it, so
     // that a command's result is a file every command accepts, or no file.
     bool refuse_invalid = false;
+    // Leave out the vertices that are in no element (Mesh::compact_vertices on a copy): the file
+    // then numbers the others consecutively. `sxk degeneracies` sets it.
+    bool drop_unused_vertices = false;
 };
 
 // Writes by extension (for TetGen give X.node or X.ele: writes X.node, X.ele and X.face, or

@@ -157,6 +157,14 @@ public:
     // has no vertex or the last vertex is in an element (its anchor is set).
     Outcome<Done> remove_last_vertex();
 
+    // Drops every vertex that is in no element (what collapses and cuts leave behind), keeping
+    // the order of the others, their positions, attributes and anchors, and renames the
+    // vertices of elements, faces and face labels; element and face ids do not change. Returns
+    // the old -> new map (invalid_id: dropped). Watchers are initialised again (every vertex id
+    // may change). O(mesh): for writers and batch commands, not for a frame. Refused inside an
+    // EditJournal step.
+    Outcome<std::vector<VertexId>> compact_vertices();
+
     // ---- vertex attributes --------------------------------------------------------------------
     // Named per-vertex fields of `components` doubles each (temperature: 1, velocity: 3). Every
     // vertex has a value; add_vertex gives new vertices the attribute's default value,
@@ -291,6 +299,17 @@ public:
     Outcome<std::vector<ElementId>> replace_elements(std::span<const ElementId> old_elements,
                                                      std::span<const Simplex> new_simplexes,
                                                      std::span<const int> labels = {});
+    // The same without the checks that walk vertex stars (a new face or element already in an
+    // element that stays, invariant 7.4; pinched stars), for an operation that proved both from
+    // its own checks. The proof is a token only ProvenEdit (core/src/mesh_checks.hpp, a private
+    // header of the library's operations, which documents the obligations) can make.
+    class StarChecksProof {
+        StarChecksProof() = default;
+        friend class ProvenEdit;
+    };
+    Outcome<std::vector<ElementId>> replace_elements(std::span<const ElementId> old_elements,
+                                                     std::span<const Simplex> new_simplexes,
+                                                     std::span<const int> labels, StarChecksProof proof);
 
     // Thesis §7.3 change-elements: applies a vertex substitution per element, keeping every
     // element and face identity (Fig. 7.5). Refuses (mesh untouched) when an element is unknown
@@ -359,14 +378,11 @@ private:
         std::vector<double> values;
     };
 
-    friend class EditContext;
     friend class EditJournal;
     friend class detail::UndoLog;
-    // core/src/mesh_checks.hpp: the operations' door to replace_elements_impl(..., true).
-    friend class ProvenEdit;
     // replace_elements' body. proven == true skips the checks that walk vertex stars (a new
     // face or element already in an element that stays, invariant 7.4; pinched stars): only
-    // for operations that proved them from their own checks (ProvenEdit documents how).
+    // with a StarChecksProof.
     Outcome<std::vector<ElementId>> replace_elements_impl(std::span<const ElementId> old_elements,
                                                           std::span<const Simplex> new_simplexes,
                                                           std::span<const int> labels, bool proven);

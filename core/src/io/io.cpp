@@ -171,6 +171,18 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
             throw OutputError("cannot write " + path.string() + ": the mesh is invalid: " +
                               valid.reason());
     }
+    if (options.drop_unused_vertices) {
+        bool unused = false;
+        for (VertexId v = 0; v < mesh.vertex_count() && !unused; ++v) unused = mesh.vertex_element(v) == invalid_id;
+        if (unused) {
+            Mesh compact = mesh;
+            (void)compact.compact_vertices();  // a copy has no journal: cannot refuse
+            WriteOptions rest = options;
+            rest.drop_unused_vertices = false;
+            write_mesh(compact, path, rest);
+            return;
+        }
+    }
     switch (*format) {
         case Format::medit:
             write_file_atomically(path, io::write_medit(mesh, options));
