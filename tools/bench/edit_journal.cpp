@@ -19,10 +19,6 @@
 // the small one (a step costs what it touches, not the mesh: ratio ~1).
 #include <benchmark/benchmark.h>
 
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -34,6 +30,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "delaunay_3.hpp"
 #include "parse_option.hpp"
 #include "sxk/edit_journal.hpp"
 #include "sxk/mesh.hpp"
@@ -42,11 +39,8 @@
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using DataStructure =
-    CGAL::Triangulation_data_structure_3<VertexBase, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
-using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, DataStructure>;
+using sxk_bench::Delaunay;
+using sxk_bench::Kernel;
 
 constexpr std::size_t round_trips = 50;  // 100 edits
 

@@ -42,10 +42,6 @@
 // Counters: round_trips_per_s (CPU time), faces (K kept), tets, disagreements.
 #include <benchmark/benchmark.h>
 
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -59,6 +55,7 @@
 #include <utility>
 #include <vector>
 
+#include "delaunay_3.hpp"
 #include "parse_option.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/flip_23.hpp"
@@ -68,11 +65,8 @@
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using DataStructure =
-    CGAL::Triangulation_data_structure_3<VertexBase, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
-using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, DataStructure>;
+using sxk_bench::Delaunay;
+using sxk_bench::Kernel;
 using CellHandle = Delaunay::Cell_handle;
 using VertexHandle = Delaunay::Vertex_handle;
 
