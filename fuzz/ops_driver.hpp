@@ -1,7 +1,7 @@
 // The operation driver shared by the operation fuzzer (fuzz/fuzz_ops.cpp) and the random
 // operation property test (tests/ops/random_ops_test.cpp): a stream of choices (fuzzer bytes or
 // a seeded generator) picks a start mesh and then one local operation after the other with its
-// arguments, and the oracle checks every step (STYLE.md 10: the fuzzers use the validator).
+// arguments, and the oracle checks every step (CONTRIBUTING.md "Tests": the fuzzers use the validator as their oracle).
 //
 // Oracle, after EVERY operation:
 //   1. validate() is ok;

@@ -1,4 +1,4 @@
-// The oracle every reader's fuzz target shares (STYLE.md 10: the fuzzers use the validator).
+// The oracle every reader's fuzz target shares (CONTRIBUTING.md "Tests": the fuzzers use the validator as their oracle).
 //
 // For any input a reader must either throw InputError or return a mesh that
 //   1. passes Mesh::validate(),

@@ -33,7 +33,7 @@ void sort_unique(std::vector<T>& ids) {
 }  // namespace
 
 ToolSession::ToolSession(Mesh& mesh) : m_mesh(mesh), m_journal(mesh), m_revision(mesh.revision()) {
-    // a journal of its own keeps every step, so that abort() can take them all back
+    // a journal of its own keeps every step, so that cancel() can take them all back
     if (m_journal.owned()) m_journal->set_history_limit(std::numeric_limits<std::size_t>::max());
 }
 
@@ -93,11 +93,11 @@ Outcome<Done> ToolSession::undo_step() {
     return Done{};
 }
 
-Outcome<Done> ToolSession::abort() {
+Outcome<Done> ToolSession::cancel() {
     std::size_t undone = 0;
     while (!m_kept.empty()) {
         if (Outcome<Done> one = undo_step(); !one)
-            return one.refusal().prefixed("abort: " + std::to_string(undone) +
+            return one.refusal().prefixed("cancel: " + std::to_string(undone) +
                                           " steps taken back, then ");
         ++undone;
     }

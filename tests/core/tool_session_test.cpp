@@ -1,5 +1,5 @@
 // ToolSession: each step one transaction (a refusal after several edits leaves the mesh as it
-// was), the step report, undo_step and abort, a session on an application's journal. The tool
+// was), the step report, undo_step and cancel, a session on an application's journal. The tool
 // here is a test tool: it splits an edge at the dragged vertex (one to a vertex of the vertex's
 // anchor element) and drags the vertex to the pose,
 // refusing a pose whose z axis points down only after both edits, so that a refusal has to undo
@@ -80,7 +80,7 @@ TEST(ToolSession, AStepIsOneTransaction) {
     mesh.remove_watcher(mirror);
 }
 
-TEST(ToolSession, AbortTakesBackEveryStep) {
+TEST(ToolSession, CancelTakesBackEveryStep) {
     Mesh mesh = test::planar_grid(4);
     const auto start = snapshot(mesh);
     DragTool tool(mesh, 6);
@@ -91,7 +91,7 @@ TEST(ToolSession, AbortTakesBackEveryStep) {
         ASSERT_TRUE(tool.step(pose).ok());
     }
     EXPECT_EQ(tool.steps(), 3u);
-    ASSERT_TRUE(tool.abort().ok());
+    ASSERT_TRUE(tool.cancel().ok());
     EXPECT_TRUE(snapshot(mesh) == start);
     EXPECT_TRUE(tool.ended());
     EXPECT_EQ(tool.step(pose).reason(), "step: the session has ended");

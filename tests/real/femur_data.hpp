@@ -1,5 +1,5 @@
 // The real test mesh of tests/real: the femur of CGAL's data set tetrahedralised by TetGen
-// (tools/make-data, DESIGN.md "Data"), made on first use and cached in the build folder.
+// (tools/make-data, docs/performance.md), made on first use and cached in the build folder.
 #pragma once
 
 #include <array>

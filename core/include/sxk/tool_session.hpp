@@ -6,7 +6,7 @@
 //         auto report = (*session)->step(pose);   // completes, or the mesh is as before
 //         if (report) solver.update(report->elements, report->vertices);
 //     (*session)->undo_step();                    // the last frame back
-//     (*session)->end();                          // or abort(): every frame of the session back
+//     (*session)->end();                          // or cancel(): every frame of the session back
 //
 // A tool derives from ToolSession and implements apply(): whatever Mesh calls and operations
 // the pose asks for. step() makes them one EditJournal step (sxk/edit_journal.hpp): if apply()
@@ -68,7 +68,7 @@ public:
     Outcome<Done> undo_step();
     // Takes back every kept step of this session, newest first; stops at the first that cannot
     // be (the reason says how many were).
-    Outcome<Done> abort();
+    Outcome<Done> cancel();
     // Ends the session: its steps stay; step() refuses from now on.
     void end() { m_ended = true; }
     bool ended() const { return m_ended; }
