@@ -1,0 +1,184 @@
+// SpatialIndex: building the trees and keeping them in step with the mesh's events
+// (sxk/locate.hpp; the events are those of sxk/watcher.hpp, thesis §7.4).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "locate_trees.hpp"
+#include "sxk/locate.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk {
+namespace {
+
+template <int D>
+void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    using Value = typename detail::BoxTree<D>::Value;
+    std::vector<Value> values;
+    values.reserve(mesh.element_count());
+    for (const ElementId t : elements(mesh)) values.emplace_back(detail::element_box<D>(mesh, t, positions), t);
+    detail::element_tree<D>(trees).load(values);
+    values.clear();
+    values.reserve(mesh.boundary_face_count());
+    mesh.for_each_boundary_face([&](FaceId f) { values.emplace_back(detail::face_box<D>(mesh, f, positions), f); });
+    detail::face_tree<D>(trees).load(values);
+}
+
+// Re-boxes the elements around the moved vertices and their boundary faces (a face's box
+// depends on its vertices only, so the boundary faces of those elements are all that can move).
+template <int D>
+void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const VertexId> vertices,
+                  Positions positions) {
+    std::vector<ElementId> around;
+    for (const VertexId v : vertices)
+        if (v < mesh.vertex_count() && mesh.vertex_element(v) != invalid_id)
+            collect_star(mesh, v, mesh.vertex_element(v), around);
+    detail::sort_unique(around);
+    detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
+    detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
+    for (const ElementId t : around) {
+        element_boxes.update(t, detail::element_box<D>(mesh, t, positions));
+        for (int i = 0; i < mesh.element_vertex_count(); ++i)
+            if (mesh.neighbor(t, i) == invalid_id) {
+                const FaceId f = mesh.face(t, i);
+                face_boxes.update(f, detail::face_box<D>(mesh, f, positions));
+            }
+    }
+}
+
+template <int D>
+Outcome<Done> check(const SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    const detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
+    const detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
+    std::size_t live = 0;
+    for (const ElementId t : elements(mesh)) {
+        ++live;
+        if (!element_boxes.contains(t))
+            return Refusal{"spatial index: element " + std::to_string(t) + " is not indexed", t};
+        if (!detail::bg::equals(element_boxes.boxes[t], detail::element_box<D>(mesh, t, positions)))
+            return Refusal{"spatial index: element " + std::to_string(t) + " has a stale box", t};
+    }
+    if (element_boxes.tree.size() != live)
+        return Refusal{"spatial index: the element tree holds " + std::to_string(element_boxes.tree.size()) +
+                       " boxes for " + std::to_string(live) + " elements"};
+    for (std::size_t t = 0; t < element_boxes.indexed.size(); ++t)
+        if (element_boxes.indexed[t] != 0 && !mesh.is_element(static_cast<ElementId>(t)))
+            return Refusal{"spatial index: dead element " + std::to_string(t) + " is indexed", t};
+    std::string problem;
+    std::size_t boundary = 0;
+    mesh.for_each_boundary_face([&](FaceId f) {
+        ++boundary;
+        if (!problem.empty()) return;
+        if (!face_boxes.contains(f)) problem = "spatial index: boundary face " + std::to_string(f) + " is not indexed";
+        else if (!detail::bg::equals(face_boxes.boxes[f], detail::face_box<D>(mesh, f, positions)))
+            problem = "spatial index: boundary face " + std::to_string(f) + " has a stale box";
+    });
+    if (!problem.empty()) return Refusal{problem};
+    if (face_boxes.tree.size() != boundary)
+        return Refusal{"spatial index: the face tree holds " + std::to_string(face_boxes.tree.size()) +
+                       " boxes for " + std::to_string(boundary) + " boundary faces"};
+    // every tree entry is the one box its id has (no stale duplicate left behind by a removal)
+    for (const auto& value : element_boxes.tree)
+        if (!element_boxes.contains(value.second) || !detail::bg::equals(element_boxes.boxes[value.second], value.first))
+            return Refusal{"spatial index: the element tree holds a stale box of element " +
+                           std::to_string(value.second), value.second};
+    for (const auto& value : face_boxes.tree)
+        if (!face_boxes.contains(value.second) || !detail::bg::equals(face_boxes.boxes[value.second], value.first))
+            return Refusal{"spatial index: the face tree holds a stale box of face " + std::to_string(value.second),
+                           value.second};
+    return Done{};
+}
+
+bool writes(PositionSet which, Positions positions) {
+    return positions == Positions::reference ? writes_reference(which) : writes_deformed(which);
+}
+
+}  // namespace
+
+SpatialIndex::SpatialIndex(Mesh& mesh, const SpatialIndexOptions& options)
+    : m_mesh(&mesh), m_options(options), m_trees(std::make_unique<Trees>()) {
+    mesh.add_watcher(*this);
+}
+
+SpatialIndex::~SpatialIndex() { m_mesh->remove_watcher(*this); }
+
+double SpatialIndex::surface_tolerance() const {
+    if (m_options.surface_tolerance > 0) return m_options.surface_tolerance;
+    const auto& tree = m_trees->elements3.tree;
+    if (tree.empty()) return 0;
+    const auto bounds = tree.bounds();
+    const double diagonal = std::sqrt(detail::bg::comparable_distance(bounds.min_corner(), bounds.max_corner()));
+    return 1e-9 * diagonal;
+}
+
+std::size_t SpatialIndex::indexed_elements() const {
+    return m_mesh->ambient_dimension() == 2 ? m_trees->elements2.tree.size() : m_trees->elements3.tree.size();
+}
+
+std::size_t SpatialIndex::indexed_boundary_faces() const {
+    return m_mesh->ambient_dimension() == 2 ? m_trees->faces2.tree.size() : m_trees->faces3.tree.size();
+}
+
+std::size_t SpatialIndex::memory_bytes() const {
+    return m_trees->elements2.memory_bytes() + m_trees->faces2.memory_bytes() + m_trees->elements3.memory_bytes() +
+           m_trees->faces3.memory_bytes();
+}
+
+Outcome<Done> SpatialIndex::validate() const {
+    return m_mesh->ambient_dimension() == 2 ? check<2>(*m_trees, *m_mesh, m_options.positions)
+                                            : check<3>(*m_trees, *m_mesh, m_options.positions);
+}
+
+void SpatialIndex::init(const Mesh& mesh) {
+    if (mesh.ambient_dimension() == 2) build<2>(*m_trees, mesh, m_options.positions);
+    else build<3>(*m_trees, mesh, m_options.positions);
+}
+
+// Each event touches its own id only: O(log n) per element or face of the edit. Removals come
+// before additions within one edit (watcher.hpp), so an id reused by the same edit is removed
+// with its old box first.
+void SpatialIndex::element_removed(const Mesh& mesh, ElementId element, const Simplex&) {
+    if (mesh.ambient_dimension() == 2) m_trees->elements2.erase(element);
+    else m_trees->elements3.erase(element);
+}
+
+void SpatialIndex::element_changed(const Mesh& mesh, ElementId element, const Simplex&) {
+    if (mesh.ambient_dimension() == 2)
+        m_trees->elements2.update(element, detail::element_box<2>(mesh, element, m_options.positions));
+    else
+        m_trees->elements3.update(element, detail::element_box<3>(mesh, element, m_options.positions));
+}
+
+void SpatialIndex::element_added(const Mesh& mesh, ElementId element) {
+    if (mesh.ambient_dimension() == 2)
+        m_trees->elements2.insert(element, detail::element_box<2>(mesh, element, m_options.positions));
+    else
+        m_trees->elements3.insert(element, detail::element_box<3>(mesh, element, m_options.positions));
+}
+
+void SpatialIndex::boundary_removed(const Mesh& mesh, FaceId face, const Simplex&) {
+    if (mesh.ambient_dimension() == 2) m_trees->faces2.erase(face);
+    else m_trees->faces3.erase(face);
+}
+
+void SpatialIndex::boundary_changed(const Mesh& mesh, FaceId face, const Simplex&) {
+    if (mesh.ambient_dimension() == 2)
+        m_trees->faces2.update(face, detail::face_box<2>(mesh, face, m_options.positions));
+    else
+        m_trees->faces3.update(face, detail::face_box<3>(mesh, face, m_options.positions));
+}
+
+void SpatialIndex::boundary_added(const Mesh& mesh, FaceId face) {
+    if (mesh.ambient_dimension() == 2)
+        m_trees->faces2.insert(face, detail::face_box<2>(mesh, face, m_options.positions));
+    else
+        m_trees->faces3.insert(face, detail::face_box<3>(mesh, face, m_options.positions));
+}
+
+void SpatialIndex::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
+    if (!writes(which, m_options.positions)) return;
+    if (mesh.ambient_dimension() == 2) rebox_around<2>(*m_trees, mesh, vertices, m_options.positions);
+    else rebox_around<3>(*m_trees, mesh, vertices, m_options.positions);
+}
+
+}  // namespace sxk

@@ -1,0 +1,24 @@
+// The check of the operations that locate points with a caller's SpatialIndex (refine_around,
+// refine_around_tetrahedra): it must watch the mesh being edited, over the reference positions,
+// where these operations measure and locate.
+#pragma once
+
+#include <string>
+
+#include "sxk/locate.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk::detail {
+
+// An empty reason when `index` fits; `operation` starts the reason ("refine_around: ...").
+inline Refusal refuse_index(const Mesh& mesh, const SpatialIndex& index, const std::string& operation) {
+    if (&index.mesh() != &mesh) return Refusal{operation + ": the spatial index watches another mesh"};
+    if (index.positions() != Positions::reference)
+        return Refusal{operation +
+                       ": the spatial index is over the deformed positions; refinement locates in the reference "
+                       "positions"};
+    return Refusal{};
+}
+
+}  // namespace sxk::detail
