@@ -32,9 +32,7 @@ inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) 
     return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
 }
 
-// The next float below (above) x, at least one unit in the last place away: boxes keep a margin
-// beyond their double extent, so that Boost's segment and distance tests in double precision on
-// float boxes never cut off what touches the box exactly.
+// The next float below (above) x, at least one unit in the last place away.
 inline float float_below(double x) {
     float f = static_cast<float>(x);
     if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
@@ -71,8 +69,13 @@ struct BoxTree {
                 lo = std::min(lo, (*p)[static_cast<std::size_t>(k)]);
                 hi = std::max(hi, (*p)[static_cast<std::size_t>(k)]);
             }
-            set_corner(box.min_corner(), k, float_below(lo));
-            set_corner(box.max_corner(), k, float_above(hi));
+            // grown by about a millionth of the box's size and distance from the origin: Boost's
+            // segment and distance tests on float boxes compute in double precision with rounding,
+            // and a segment through a corner of an element at a coordinate 0 (a float unit of
+            // 1e-45 there) was missed without it (tests/core/locate_test.cpp found it)
+            const double pad = (hi - lo + std::max(std::abs(lo), std::abs(hi))) * 0x1p-20;
+            set_corner(box.min_corner(), k, float_below(lo - pad));
+            set_corner(box.max_corner(), k, float_above(hi + pad));
         }
         return box;
     }

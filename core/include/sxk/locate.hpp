@@ -13,10 +13,10 @@
 //
 //        query ──► (a walk from the hint) ──► rtree candidates ──► exact test per candidate
 //
-// Boxes are stored in single precision, rounded outward by at least one unit in the last place,
-// so each box contains its element in double precision with a margin that absorbs the rounding
-// of Boost's box tests; which candidates qualify is then decided by the exact predicates of
-// predicates.hpp (CGAL's filtered kernel), never by a box.
+// Boxes are stored in single precision, grown by about a millionth of their size and distance
+// from the origin and rounded outward, so each box contains its element with a margin that
+// absorbs the rounding of Boost's box tests (in double precision); which candidates qualify is
+// then decided by the exact predicates of predicates.hpp (CGAL's filtered kernel), never by a box.
 //
 // What "inside" means (every query):
 //   * Elements and faces are CLOSED: a point on a face, an edge or a vertex shared by several
