@@ -248,43 +248,39 @@ RayHit ray_meets(const Mesh& mesh, const detail::ElementPoints& e, const Point& 
 }
 
 // The weights of x in the sub-simplex of the vertices `kept` (the others get 0): least squares
-// of sum w_j p_j = x with sum w_j = 1 by modified Gram-Schmidt, whose residual stays small for
+// of sum w_j p_j = x with sum w_j = 1 by Gram-Schmidt (orthogonal, not normalised: no square
+// roots, so the midpoint of an edge gets exactly 1/2 and 1/2), whose residual stays small for
 // thin elements, where ratios of volumes (Cramer's rule) gave points 0.02 away from x in the
 // random edit tests (tests/ops/locate_random_test.cpp).
 std::array<double, 4> weights_in(const detail::ElementPoints& e, const std::array<int, 4>& kept, int count,
                                  const Point& x) {
-    std::array<double, 4> w{};
     const Point& base = *e.p[static_cast<std::size_t>(kept[0])];
-    const int k = count - 1;
-    std::array<Point, 3> q{};                // orthonormal columns
-    std::array<std::array<double, 3>, 3> r{};  // upper triangular
-    for (int j = 0; j < k; ++j) {
-        Point a = minus(*e.p[static_cast<std::size_t>(kept[static_cast<std::size_t>(j + 1)])], base);
-        for (int i = 0; i < j; ++i) {
-            const double c = dot(q[static_cast<std::size_t>(i)], a);
-            r[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = c;
-            for (std::size_t m = 0; m < 3; ++m) a[m] -= c * q[static_cast<std::size_t>(i)][m];
+    const auto k = static_cast<std::size_t>(count - 1);
+    std::array<Point, 3> v{};                  // a_j made orthogonal to a_0..a_{j-1}
+    std::array<double, 3> vv{};                // v_j . v_j
+    std::array<std::array<double, 3>, 3> r{};  // a_j = v_j + sum_{i<j} r[i][j] v_i
+    for (std::size_t j = 0; j < k; ++j) {
+        const Point a = minus(*e.p[static_cast<std::size_t>(kept[j + 1])], base);
+        v[j] = a;
+        for (std::size_t i = 0; i < j; ++i) {
+            r[i][j] = vv[i] > 0 ? dot(v[i], v[j]) / vv[i] : 0;  // modified Gram-Schmidt
+            for (std::size_t m = 0; m < 3; ++m) v[j][m] -= r[i][j] * v[i][m];
         }
-        const double norm = std::sqrt(dot(a, a));
-        r[static_cast<std::size_t>(j)][static_cast<std::size_t>(j)] = norm;
-        for (std::size_t m = 0; m < 3; ++m) q[static_cast<std::size_t>(j)][m] = norm > 0 ? a[m] / norm : 0;
+        vv[j] = dot(v[j], v[j]);
     }
     Point b = minus(x, base);
     std::array<double, 3> y{};
-    for (int j = 0; j < k; ++j) {
-        y[static_cast<std::size_t>(j)] = dot(q[static_cast<std::size_t>(j)], b);
-        for (std::size_t m = 0; m < 3; ++m) b[m] -= y[static_cast<std::size_t>(j)] * q[static_cast<std::size_t>(j)][m];
+    for (std::size_t j = 0; j < k; ++j) {
+        y[j] = vv[j] > 0 ? dot(v[j], b) / vv[j] : 0;
+        for (std::size_t m = 0; m < 3; ++m) b[m] -= y[j] * v[j][m];
     }
-    for (int j = k - 1; j >= 0; --j) {
-        double value = y[static_cast<std::size_t>(j)];
-        for (int i = j + 1; i < k; ++i) value -= r[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] * y[static_cast<std::size_t>(i)];
-        const double diagonal = r[static_cast<std::size_t>(j)][static_cast<std::size_t>(j)];
-        y[static_cast<std::size_t>(j)] = diagonal > 0 ? value / diagonal : 0;
-    }
+    for (std::size_t j = k; j-- > 0;)
+        for (std::size_t i = j + 1; i < k; ++i) y[j] -= r[j][i] * y[i];
+    std::array<double, 4> w{};
     double rest = 1;
-    for (int j = 0; j < k; ++j) {
-        w[static_cast<std::size_t>(kept[static_cast<std::size_t>(j + 1)])] = y[static_cast<std::size_t>(j)];
-        rest -= y[static_cast<std::size_t>(j)];
+    for (std::size_t j = 0; j < k; ++j) {
+        w[static_cast<std::size_t>(kept[j + 1])] = y[j];
+        rest -= y[j];
     }
     w[static_cast<std::size_t>(kept[0])] = rest;
     normalise(w);

@@ -190,8 +190,8 @@ SXK_API bool triangle_meets_face(const Mesh& mesh, FaceId f, const Point& a, con
                                  Positions positions);
 // The point of face f nearest x.
 SXK_API BoundaryPoint nearest_point_on_face(const Mesh& mesh, FaceId f, const Point& x, Positions positions);
-// Where the ray meets face f (or, for a triangle surface in 3D, element t = face_element(f)'s
-// triangle when `f` is invalid_id and `t` given): RayHit::found() false when it misses.
+// Where the ray meets face f (decided exactly; RayHit::found() false when it misses), and where
+// it meets the triangle t of a triangle mesh (what pick uses on a surface in 3D).
 SXK_API RayHit ray_meets_face(const Mesh& mesh, FaceId f, const Point& origin, const Point& direction,
                               Positions positions);
 SXK_API RayHit ray_meets_triangle_element(const Mesh& mesh, ElementId t, const Point& origin,
@@ -201,8 +201,8 @@ SXK_API RayHit ray_meets_triangle_element(const Mesh& mesh, ElementId t, const P
 // any ambient dimension; a degenerate triangle gives the nearest point of its longest edge.
 SXK_API std::array<double, 3> nearest_on_triangle(const Point& a, const Point& b, const Point& c, const Point& p);
 
-// The visibility walk from `start` towards x (thesis-free, the classic one: step through a face
-// that has x strictly beyond it, exact orientation): the element containing x, or invalid_id when
+// The visibility walk from `start` towards x (step through a face that has x strictly beyond it,
+// exact orientation): the element containing x, or invalid_id when
 // the walk leaves the mesh, meets a flat element or takes more than `max_steps` steps. Planar
 // triangle meshes: the stochastic walk (the face tried first chosen by a small xorshift, so the
 // walk cannot cycle on meshes that are not Delaunay); tetrahedral meshes: the face tried first
