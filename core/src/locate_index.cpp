@@ -112,11 +112,11 @@ double SpatialIndex::surface_tolerance() const {
 }
 
 std::size_t SpatialIndex::indexed_elements() const {
-    return m_mesh->ambient_dimension() == 2 ? m_trees->elements2.tree.size() : m_trees->elements3.tree.size();
+    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::element_tree<decltype(d)::value>(*m_trees).tree.size(); });
 }
 
 std::size_t SpatialIndex::indexed_boundary_faces() const {
-    return m_mesh->ambient_dimension() == 2 ? m_trees->faces2.tree.size() : m_trees->faces3.tree.size();
+    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::face_tree<decltype(d)::value>(*m_trees).tree.size(); });
 }
 
 std::size_t SpatialIndex::memory_bytes() const {
@@ -125,60 +125,51 @@ std::size_t SpatialIndex::memory_bytes() const {
 }
 
 Outcome<Done> SpatialIndex::validate() const {
-    return m_mesh->ambient_dimension() == 2 ? check<2>(*m_trees, *m_mesh, m_options.positions)
-                                            : check<3>(*m_trees, *m_mesh, m_options.positions);
+    return detail::in_dimension(*m_mesh, [&](auto d) { return check<decltype(d)::value>(*m_trees, *m_mesh, m_options.positions); });
 }
 
 void SpatialIndex::init(const Mesh& mesh) {
-    if (mesh.ambient_dimension() == 2) build<2>(*m_trees, mesh, m_options.positions);
-    else build<3>(*m_trees, mesh, m_options.positions);
+    detail::in_dimension(mesh, [&](auto d) { build<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
 }
 
 // Each event touches its own id only: O(log n) per element or face of the edit. Removals come
 // before additions within one edit (watcher.hpp), so an id reused by the same edit is removed
 // with its old box first.
 void SpatialIndex::element_removed(const Mesh& mesh, ElementId element, const Simplex&) {
-    if (mesh.ambient_dimension() == 2) m_trees->elements2.erase(element);
-    else m_trees->elements3.erase(element);
+    detail::in_dimension(mesh, [&](auto d) { detail::element_tree<decltype(d)::value>(*m_trees).erase(element); });
 }
 
 void SpatialIndex::element_changed(const Mesh& mesh, ElementId element, const Simplex&) {
-    if (mesh.ambient_dimension() == 2)
-        m_trees->elements2.update(element, detail::element_box<2>(mesh, element, m_options.positions));
-    else
-        m_trees->elements3.update(element, detail::element_box<3>(mesh, element, m_options.positions));
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::element_tree<decltype(d)::value>(*m_trees).update(element, detail::element_box<decltype(d)::value>(mesh, element, m_options.positions));
+    });
 }
 
 void SpatialIndex::element_added(const Mesh& mesh, ElementId element) {
-    if (mesh.ambient_dimension() == 2)
-        m_trees->elements2.insert(element, detail::element_box<2>(mesh, element, m_options.positions));
-    else
-        m_trees->elements3.insert(element, detail::element_box<3>(mesh, element, m_options.positions));
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::element_tree<decltype(d)::value>(*m_trees).insert(element, detail::element_box<decltype(d)::value>(mesh, element, m_options.positions));
+    });
 }
 
 void SpatialIndex::boundary_removed(const Mesh& mesh, FaceId face, const Simplex&) {
-    if (mesh.ambient_dimension() == 2) m_trees->faces2.erase(face);
-    else m_trees->faces3.erase(face);
+    detail::in_dimension(mesh, [&](auto d) { detail::face_tree<decltype(d)::value>(*m_trees).erase(face); });
 }
 
 void SpatialIndex::boundary_changed(const Mesh& mesh, FaceId face, const Simplex&) {
-    if (mesh.ambient_dimension() == 2)
-        m_trees->faces2.update(face, detail::face_box<2>(mesh, face, m_options.positions));
-    else
-        m_trees->faces3.update(face, detail::face_box<3>(mesh, face, m_options.positions));
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::face_tree<decltype(d)::value>(*m_trees).update(face, detail::face_box<decltype(d)::value>(mesh, face, m_options.positions));
+    });
 }
 
 void SpatialIndex::boundary_added(const Mesh& mesh, FaceId face) {
-    if (mesh.ambient_dimension() == 2)
-        m_trees->faces2.insert(face, detail::face_box<2>(mesh, face, m_options.positions));
-    else
-        m_trees->faces3.insert(face, detail::face_box<3>(mesh, face, m_options.positions));
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::face_tree<decltype(d)::value>(*m_trees).insert(face, detail::face_box<decltype(d)::value>(mesh, face, m_options.positions));
+    });
 }
 
 void SpatialIndex::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
     if (!writes(which, m_options.positions)) return;
-    if (mesh.ambient_dimension() == 2) rebox_around<2>(*m_trees, mesh, vertices, m_options.positions);
-    else rebox_around<3>(*m_trees, mesh, vertices, m_options.positions);
+    detail::in_dimension(mesh, [&](auto d) { rebox_around<decltype(d)::value>(*m_trees, mesh, vertices, m_options.positions); });
 }
 
 }  // namespace sxk

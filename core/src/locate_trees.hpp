@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -172,6 +173,14 @@ template <int D>
 const BoxTree<D>& face_tree(const SpatialIndex::Trees& trees) {
     if constexpr (D == 2) return trees.faces2;
     else return trees.faces3;
+}
+
+// Calls f(std::integral_constant<int, D>{}) for D the mesh's ambient dimension, the dimension of
+// its trees.
+template <class F>
+decltype(auto) in_dimension(const Mesh& mesh, F&& f) {
+    if (mesh.ambient_dimension() == 2) return f(std::integral_constant<int, 2>{});
+    return f(std::integral_constant<int, 3>{});
 }
 
 // The positions of element t's vertices (canonical order), and of face f's.

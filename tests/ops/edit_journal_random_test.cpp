@@ -21,7 +21,7 @@
 
 #include "../../fuzz/ops_driver.hpp"
 #include "core/fixtures.hpp"
-#include "ops/random_move.hpp"
+#include "ops/random_steps.hpp"
 #include "sxk/edit_journal.hpp"
 #include "sxk/io.hpp"
 
@@ -74,20 +74,14 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
     const std::uint64_t seed = test::seed_for(name);
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
-    bool forced = true;
-    ops_driver::Choices choices([&]() -> int {
-        if (forced) {
-            forced = false;
-            return static_cast<int>(kind);
-        }
-        return static_cast<int>(rng() & 0xff);
-    });
+    test::StartChoices start(rng, kind);
+    ops_driver::Choices& choices = start.choices();
     const fs::path dir = fs::path(SXK_BINARY_DIR) / "test-ops-scratch" / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     constexpr int restart = 500;  // steps per start mesh (dissections shred a mesh over time)
     for (int first = 0; first < steps; first += restart) {
-        forced = true;
+        start.restart();
         Mesh mesh = ops_driver::start_mesh(choices, 6, 3);
         test::MirrorWatcher mirror;
         mesh.add_watcher(mirror);

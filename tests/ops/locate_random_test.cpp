@@ -17,7 +17,7 @@
 #include "../../fuzz/ops_driver.hpp"
 #include "core/fixtures.hpp"
 #include "core/locate_scan.hpp"
-#include "ops/random_move.hpp"
+#include "ops/random_steps.hpp"
 #include "sxk/edit_journal.hpp"
 #include "sxk/locate.hpp"
 
@@ -32,17 +32,11 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
     const std::uint64_t seed = test::seed_for(name);
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
-    bool forced = true;
-    ops_driver::Choices choices([&]() -> int {
-        if (forced) {
-            forced = false;
-            return static_cast<int>(kind);
-        }
-        return static_cast<int>(rng() & 0xff);
-    });
+    test::StartChoices start(rng, kind);
+    ops_driver::Choices& choices = start.choices();
     constexpr int restart = 250;  // steps per start mesh (dissections shred a mesh over time)
     for (int first = 0; first < steps; first += restart) {
-        forced = true;
+        start.restart();
         Mesh mesh = ops_driver::start_mesh(choices, 6, 3);
         const SpatialIndex reference(mesh, Positions::reference);
         const SpatialIndex deformed(mesh, Positions::deformed);

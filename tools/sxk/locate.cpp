@@ -6,7 +6,6 @@
 // skipped. FILE is read as mesh files are (read_text_file). A bad line gives
 // "sxk: FILE:LINE: reason" and exit code 2, like any other input error.
 #include <memory>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -31,42 +30,25 @@ struct Query {
 
 // Reads the query points; on an unreadable file or a bad line prints the error and returns nullopt.
 std::optional<std::vector<Query>> read_points(Context& context, const std::string& file, const Mesh& mesh) {
-    std::string text;
-    try {
-        text = read_text_file(file);
-    } catch (const InputError& error) {
-        context.err << "sxk: " << error.what() << '\n';
-        return std::nullopt;
-    }
     const bool planar = mesh.ambient_dimension() == 2;
-    std::istringstream in(text);
     std::vector<Query> queries;
-    std::string line;
-    for (std::size_t number = 1; std::getline(in, line); ++number) {
-        if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-        std::istringstream words(line);
-        std::vector<double> coordinates;
+    const bool read = read_word_lines(context, file, [&](std::size_t, const std::vector<std::string>& words) {
         Query query;
-        std::string word;
-        auto fail = [&](const std::string& reason) {
-            context.err << "sxk: " << file << ':' << number << ": " << reason << '\n';
-            return std::nullopt;
-        };
-        while (words >> word) {
-            const std::optional<double> value = parse_finite_number(word);
-            if (!value) return fail(not_a_finite_number(word));
-            coordinates.push_back(*value);
-            query.text += (query.text.empty() ? "" : " ") + word;
+        for (std::size_t k = 0; k < words.size(); ++k) {
+            const std::optional<double> value = parse_finite_number(words[k]);
+            if (!value) return not_a_finite_number(words[k]);
+            if (k < 3) query.point[k] = *value;
+            query.text += (k == 0 ? "" : " ") + words[k];
         }
-        if (coordinates.empty()) continue;
-        if (planar && (coordinates.size() < 2 || coordinates.size() > 3))
-            return fail("expected 2 or 3 coordinates (x y [z]), found " + std::to_string(coordinates.size()));
-        if (!planar && coordinates.size() != 3)
-            return fail("expected 3 coordinates (x y z), found " + std::to_string(coordinates.size()));
-        for (std::size_t k = 0; k < coordinates.size(); ++k) query.point[k] = coordinates[k];
+        if (planar && (words.size() < 2 || words.size() > 3))
+            return "expected 2 or 3 coordinates (x y [z]), found " + std::to_string(words.size());
+        if (!planar && words.size() != 3)
+            return "expected 3 coordinates (x y z), found " + std::to_string(words.size());
         if (planar) query.point[2] = 0;
         queries.push_back(query);
-    }
+        return std::string();
+    });
+    if (!read) return std::nullopt;
     return queries;
 }
 

@@ -1,4 +1,5 @@
-// Random checked vertex moves for the property tests of edits (tests/ops/*_random_test.cpp).
+// What the property tests of edits (tests/ops/*_random_test.cpp) share: the driver's choices with
+// a forced start mesh, and random checked vertex moves.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,9 +8,33 @@
 #include <random>
 #include <vector>
 
+#include "../../fuzz/ops_driver.hpp"
 #include "sxk/mesh.hpp"
 
 namespace sxk::test {
+
+// The driver's choices from a seeded generator, except the first after construction and after
+// each restart(), which is `kind`: start_mesh's first choice, the kind of start mesh
+// (fuzz/ops_driver.hpp).
+class StartChoices {
+public:
+    StartChoices(std::mt19937_64& rng, std::uint32_t kind)
+        : m_choices([this, &rng, kind]() -> int {
+              if (m_forced) {
+                  m_forced = false;
+                  return static_cast<int>(kind);
+              }
+              return static_cast<int>(rng() & 0xff);
+          }) {}
+    StartChoices(const StartChoices&) = delete;
+    StartChoices& operator=(const StartChoices&) = delete;
+    ops_driver::Choices& choices() { return m_choices; }
+    void restart() { m_forced = true; }
+
+private:
+    bool m_forced = true;
+    ops_driver::Choices m_choices;
+};
 
 // Moves 1-3 random vertices by a small random offset, refusing inversions and flat elements
 // (the driver's oracle wants every element strictly positive in both sets), and keeps the
