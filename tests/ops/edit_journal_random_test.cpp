@@ -9,7 +9,11 @@
 // step; validate() is clean; a MirrorWatcher, which applies each event to its own copy, agrees
 // with the mesh (every net change told exactly once). Every 16th rollback also writes the mesh
 // in each format before the step and after the rollback: the files are byte for byte equal.
-// The seed is printed; SXK_SEED=<n> replays a run.
+// Two SpatialIndexes (sxk/locate.hpp), over the reference and over the deformed positions, watch
+// throughout: after every step both validate (every live element and boundary face in its tree
+// once, with the box its positions give now), and every 4th step they answer random locate,
+// segment, triangle, nearest-boundary and ray queries as a scan of every element does
+// (tests/core/locate_scan.hpp). The seed is printed; SXK_SEED=<n> replays a run.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -21,9 +25,11 @@
 
 #include "../../fuzz/ops_driver.hpp"
 #include "core/fixtures.hpp"
+#include "core/locate_scan.hpp"
 #include "ops/random_steps.hpp"
 #include "sxk/edit_journal.hpp"
 #include "sxk/io.hpp"
+#include "sxk/locate.hpp"
 
 namespace sxk {
 namespace {
@@ -68,6 +74,7 @@ void random_label(Mesh& mesh, std::mt19937_64& rng) {
 
 struct Counts {
     int steps = 0, operations = 0, done = 0, commits = 0, rollbacks = 0, undos = 0, redos = 0, files = 0;
+    int index_comparisons = 0;
 };
 
 void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
@@ -85,6 +92,8 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
         Mesh mesh = ops_driver::start_mesh(choices, 6, 3);
         test::MirrorWatcher mirror;
         mesh.add_watcher(mirror);
+        const SpatialIndex reference_index(mesh, Positions::reference);
+        const SpatialIndex deformed_index(mesh, Positions::deformed);
         EditJournal journal(mesh);
         journal.set_history_limit(restart);
         // the snapshots before and after each step still in the history, newest last
@@ -144,6 +153,12 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
             const auto valid = mesh.validate();
             ASSERT_TRUE(valid.ok()) << "step " << i << ": " << valid.reason();
             mirror.expect_mirrors(mesh);
+            for (const SpatialIndex* index : {&reference_index, &deformed_index}) {
+                const auto indexed = index->validate();
+                ASSERT_TRUE(indexed.ok()) << "step " << i << ": " << indexed.reason();
+                if (i % 4 == 0) test::expect_index_agrees(*index, rng, 2, "step " + std::to_string(i));
+            }
+            counts.index_comparisons += i % 4 == 0;
             if (::testing::Test::HasFailure()) FAIL() << "step " << i;
         }
         mesh.remove_watcher(mirror);
@@ -153,11 +168,13 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
 void expect_all_kinds(const Counts& c) {
     std::cout << "[ done     ] steps " << c.steps << ", operations " << c.operations << " (" << c.done
               << " done), commits " << c.commits << ", rollbacks " << c.rollbacks << ", undos " << c.undos
-              << ", redos " << c.redos << ", file comparisons " << c.files << "\n";
+              << ", redos " << c.redos << ", file comparisons " << c.files << ", index comparisons "
+              << c.index_comparisons << "\n";
     EXPECT_GT(c.rollbacks, c.steps / 4);
     EXPECT_GT(c.undos, 0);
     EXPECT_GT(c.redos, 0);
     EXPECT_GT(c.files, 0);
+    EXPECT_GT(c.index_comparisons, c.steps / 5);
 }
 
 TEST(EditJournalRandom, JitteredPlanarGrid) {
