@@ -1,6 +1,7 @@
 // SpatialIndex: building the trees and keeping them in step with the mesh's events
 // (sxk/locate.hpp; the events are those of sxk/watcher.hpp, thesis §7.4).
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,46 +47,59 @@ void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const 
     }
 }
 
+// The box `stored` holds the tight box `tight` (boxes are conservative, locate_trees.hpp).
+template <int D>
+bool covers(const typename detail::BoxTree<D>::Box& stored, const typename detail::BoxTree<D>::Box& tight) {
+    for (int k = 0; k < D; ++k)
+        if (detail::BoxTree<D>::corner(tight.min_corner(), k) < detail::BoxTree<D>::corner(stored.min_corner(), k) ||
+            detail::BoxTree<D>::corner(tight.max_corner(), k) > detail::BoxTree<D>::corner(stored.max_corner(), k))
+            return false;
+    return true;
+}
+
+// One tree against what it indexes: `items` are the ids that must be live with their tight boxes.
+template <int D>
+std::string check_tree(const detail::BoxTree<D>& boxes, const std::vector<std::uint32_t>& items,
+                       const std::function<typename detail::BoxTree<D>::Box(std::uint32_t)>& tight, const char* what) {
+    for (const std::uint32_t id : items) {
+        if (!boxes.is_live(id)) return std::string(what) + " " + std::to_string(id) + " is not indexed";
+        if (!covers<D>(boxes.boxes[id], tight(id)))
+            return std::string(what) + " " + std::to_string(id) + " has a stale box";
+    }
+    if (boxes.live_count != items.size())
+        return "the tree holds " + std::to_string(boxes.live_count) + " live boxes for " + std::to_string(items.size()) +
+               " " + what + "s";
+    std::size_t live = 0, retired = 0;
+    for (std::size_t id = 0; id < boxes.states.size(); ++id) {
+        live += boxes.states[id] == detail::BoxTree<D>::live;
+        retired += boxes.states[id] == detail::BoxTree<D>::retired;
+    }
+    if (live != boxes.live_count || retired != boxes.retired_count || boxes.tree.size() != live + retired)
+        return "the tree holds " + std::to_string(boxes.tree.size()) + " entries for " + std::to_string(live) +
+               " live and " + std::to_string(retired) + " retired ids";
+    // every entry is the one box its id has (no stale duplicate left behind by a removal)
+    for (const auto& value : boxes.tree)
+        if (value.second >= boxes.states.size() || boxes.states[value.second] == detail::BoxTree<D>::absent ||
+            !detail::bg::equals(boxes.boxes[value.second], value.first))
+            return "the tree holds a stale box of " + std::string(what) + " " + std::to_string(value.second);
+    return {};
+}
+
 template <int D>
 Outcome<Done> check(const SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
-    const detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
-    const detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
-    std::size_t live = 0;
-    for (const ElementId t : elements(mesh)) {
-        ++live;
-        if (!element_boxes.contains(t))
-            return Refusal{"spatial index: element " + std::to_string(t) + " is not indexed", t};
-        if (!detail::bg::equals(element_boxes.boxes[t], detail::element_box<D>(mesh, t, positions)))
-            return Refusal{"spatial index: element " + std::to_string(t) + " has a stale box", t};
-    }
-    if (element_boxes.tree.size() != live)
-        return Refusal{"spatial index: the element tree holds " + std::to_string(element_boxes.tree.size()) +
-                       " boxes for " + std::to_string(live) + " elements"};
-    for (std::size_t t = 0; t < element_boxes.indexed.size(); ++t)
-        if (element_boxes.indexed[t] != 0 && !mesh.is_element(static_cast<ElementId>(t)))
-            return Refusal{"spatial index: dead element " + std::to_string(t) + " is indexed", t};
-    std::string problem;
-    std::size_t boundary = 0;
-    mesh.for_each_boundary_face([&](FaceId f) {
-        ++boundary;
-        if (!problem.empty()) return;
-        if (!face_boxes.contains(f)) problem = "spatial index: boundary face " + std::to_string(f) + " is not indexed";
-        else if (!detail::bg::equals(face_boxes.boxes[f], detail::face_box<D>(mesh, f, positions)))
-            problem = "spatial index: boundary face " + std::to_string(f) + " has a stale box";
-    });
-    if (!problem.empty()) return Refusal{problem};
-    if (face_boxes.tree.size() != boundary)
-        return Refusal{"spatial index: the face tree holds " + std::to_string(face_boxes.tree.size()) +
-                       " boxes for " + std::to_string(boundary) + " boundary faces"};
-    // every tree entry is the one box its id has (no stale duplicate left behind by a removal)
-    for (const auto& value : element_boxes.tree)
-        if (!element_boxes.contains(value.second) || !detail::bg::equals(element_boxes.boxes[value.second], value.first))
-            return Refusal{"spatial index: the element tree holds a stale box of element " +
-                           std::to_string(value.second), value.second};
-    for (const auto& value : face_boxes.tree)
-        if (!face_boxes.contains(value.second) || !detail::bg::equals(face_boxes.boxes[value.second], value.first))
-            return Refusal{"spatial index: the face tree holds a stale box of face " + std::to_string(value.second),
-                           value.second};
+    std::vector<std::uint32_t> live;
+    for (const ElementId t : elements(mesh)) live.push_back(t);
+    if (std::string problem = check_tree<D>(
+            detail::element_tree<D>(trees), live,
+            [&](std::uint32_t t) { return detail::element_box<D>(mesh, t, positions); }, "element");
+        !problem.empty())
+        return Refusal{"spatial index: " + problem};
+    const std::vector<FaceId> boundary = mesh.boundary_faces();
+    if (std::string problem = check_tree<D>(
+            detail::face_tree<D>(trees), std::vector<std::uint32_t>(boundary.begin(), boundary.end()),
+            [&](std::uint32_t f) { return detail::face_box<D>(mesh, f, positions); }, "boundary face");
+        !problem.empty())
+        return Refusal{"spatial index: " + problem};
     return Done{};
 }
 
@@ -112,11 +126,11 @@ double SpatialIndex::surface_tolerance() const {
 }
 
 std::size_t SpatialIndex::indexed_elements() const {
-    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::element_tree<decltype(d)::value>(*m_trees).tree.size(); });
+    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::element_tree<decltype(d)::value>(*m_trees).live_count; });
 }
 
 std::size_t SpatialIndex::indexed_boundary_faces() const {
-    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::face_tree<decltype(d)::value>(*m_trees).tree.size(); });
+    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::face_tree<decltype(d)::value>(*m_trees).live_count; });
 }
 
 std::size_t SpatialIndex::memory_bytes() const {

@@ -16,9 +16,10 @@ constexpr double slack = 1 + 1e-5;
 template <int D>
 BoundaryPoint nearest(const SpatialIndex::Trees& trees, const Mesh& mesh, const Point& x, Positions positions) {
     using Tree = detail::BoxTree<D>;
-    const auto& tree = detail::face_tree<D>(trees).tree;
+    const auto& boxes = detail::face_tree<D>(trees);
+    const auto& tree = boxes.tree;
     BoundaryPoint best;
-    if (tree.empty()) return best;
+    if (boxes.live_count == 0) return best;
     const typename Tree::QueryPoint q = Tree::query_point(x);
     // the box distance is a lower bound of the distance to its face: once a box is farther than
     // the best face, so is every face after it (the iterator yields boxes nearest first)
@@ -26,6 +27,7 @@ BoundaryPoint nearest(const SpatialIndex::Trees& trees, const Mesh& mesh, const 
     for (auto it = tree.qbegin(detail::bgi::nearest(q, everything)); it != tree.qend(); ++it) {
         const double box_distance = std::sqrt(static_cast<double>(detail::bg::comparable_distance(q, it->first)));
         if (best.found() && box_distance > best.distance * slack) break;
+        if (!boxes.is_live(it->second)) continue;
         const BoundaryPoint candidate = nearest_point_on_face(mesh, it->second, x, positions);
         if (candidate.distance < best.distance) best = candidate;
     }

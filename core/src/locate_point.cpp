@@ -15,10 +15,11 @@ constexpr std::size_t hint_walk_steps = 128;
 
 template <int D>
 Location locate_in_tree(const SpatialIndex::Trees& trees, const Mesh& mesh, const Point& x, Positions positions) {
-    const auto& tree = detail::element_tree<D>(trees).tree;
+    const auto& boxes = detail::element_tree<D>(trees);
     const auto query = detail::BoxTree<D>::point_box(x);
-    for (auto it = tree.qbegin(detail::bgi::intersects(query)); it != tree.qend(); ++it)
-        if (const Location found = locate_in_element(mesh, it->second, x, positions); found.found()) return found;
+    for (auto it = boxes.tree.qbegin(detail::bgi::intersects(query)); it != boxes.tree.qend(); ++it)
+        if (boxes.is_live(it->second))
+            if (const Location found = locate_in_element(mesh, it->second, x, positions); found.found()) return found;
     return {};
 }
 
@@ -33,6 +34,7 @@ Location locate_on_surface(const SpatialIndex::Trees& trees, const Mesh& mesh, c
     double best_distance = std::numeric_limits<double>::infinity();
     const auto& tree = trees.elements3.tree;
     for (auto it = tree.qbegin(detail::bgi::intersects(query)); it != tree.qend(); ++it) {
+        if (!trees.elements3.is_live(it->second)) continue;
         const Location found = locate_in_element(mesh, it->second, x, positions, tolerance);
         if (!found.found()) continue;
         const Point q = [&] {

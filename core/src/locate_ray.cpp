@@ -13,12 +13,13 @@ namespace {
 // only past this factor keeps every box that may hold something nearer.
 constexpr double slack = 1 + 1e-5;
 
-template <int D, class Tree>
-RayHit first_hit(const Tree& tree, const Mesh& mesh, const Point& o, const Point& d, Positions positions,
+template <int D>
+RayHit first_hit(const detail::BoxTree<D>& boxes, const Mesh& mesh, const Point& o, const Point& d, Positions positions,
                  bool surface) {
     using Boxes = detail::BoxTree<D>;
     RayHit best;
-    if (tree.empty()) return best;
+    const auto& tree = boxes.tree;
+    if (boxes.live_count == 0) return best;
     // the ray as a segment long enough to leave the bounds of every box, for the tree's pruning
     const auto bounds = tree.bounds();
     const typename Boxes::QueryPoint origin = Boxes::query_point(o);
@@ -41,6 +42,7 @@ RayHit first_hit(const Tree& tree, const Mesh& mesh, const Point& o, const Point
         // a box's distance from the origin bounds the distance of every hit inside it
         const double box_distance = std::sqrt(static_cast<double>(detail::bg::comparable_distance(origin, it->first)));
         if (best.found() && box_distance > best.t * length * slack) break;
+        if (!boxes.is_live(it->second)) continue;
         const RayHit hit = surface ? ray_meets_triangle_element(mesh, it->second, o, d, positions)
                                    : ray_meets_face(mesh, it->second, o, d, positions);
         if (hit.found() && hit.t < best.t) best = hit;
@@ -58,9 +60,9 @@ RayHit SpatialIndex::pick(const Point& origin, const Point& direction) const {
     for (int k = 0; k < n; ++k)
         if (!std::isfinite(o[static_cast<std::size_t>(k)]) || !std::isfinite(d[static_cast<std::size_t>(k)])) return {};
     if (d[0] == 0 && d[1] == 0 && d[2] == 0) return {};
-    if (mesh.topological_dimension() < n) return first_hit<3>(m_trees->elements3.tree, mesh, o, d, m_options.positions, true);
-    if (n == 2) return first_hit<2>(m_trees->faces2.tree, mesh, o, d, m_options.positions, false);
-    return first_hit<3>(m_trees->faces3.tree, mesh, o, d, m_options.positions, false);
+    if (mesh.topological_dimension() < n) return first_hit<3>(m_trees->elements3, mesh, o, d, m_options.positions, true);
+    if (n == 2) return first_hit<2>(m_trees->faces2, mesh, o, d, m_options.positions, false);
+    return first_hit<3>(m_trees->faces3, mesh, o, d, m_options.positions, false);
 }
 
 }  // namespace sxk

@@ -22,7 +22,9 @@ std::vector<ElementId> crossed(const SpatialIndex::Trees& trees, const Mesh& mes
     }
     std::vector<ElementId> hits;
     for (const auto& candidate : candidates)
-        if (segment_meets_element(mesh, candidate.second, a, b, positions)) hits.push_back(candidate.second);
+        if (detail::element_tree<D>(trees).is_live(candidate.second) &&
+            segment_meets_element(mesh, candidate.second, a, b, positions))
+            hits.push_back(candidate.second);
     detail::sort_unique(hits);
     return hits;
 }

@@ -50,6 +50,15 @@ inline float float_above(double x) {
 // are half the size, and the walk through them is memory-bound at 1M elements
 // (docs/performance.md "locate"). quadratic<8>: of linear/quadratic/rstar at 8-32 entries,
 // the fastest insertion and point query on a 1M-tetrahedron Kuhn cube (R* inserts 3-5x slower).
+//
+// Boxes are conservative: an entry's box contains its element's, and may be larger. An edit
+// frees ids and hands them out again at once (the pools' free lists), and a tree operation costs
+// ~1.5 us at 1M entries against ~3 us for a whole flip (docs/performance.md "locate"), so:
+//   * a removed id is RETIRED: its entry stays in the tree, skipped by every query;
+//   * an id added again keeps its entry when the entry's box holds the new box and is not more
+//     than `slack_factor` times wider along any axis (a flipped diagonal, a split child in
+//     its parent's id, a move within the box): no tree operation at all;
+//   * retired entries are removed for good once they are more than an eighth of the live ones.
 template <int D>
 struct BoxTree {
     using Coordinates = bg::model::point<float, D, bg::cs::cartesian>;
@@ -57,10 +66,13 @@ struct BoxTree {
     using Box = bg::model::box<Coordinates>;
     using Value = std::pair<Box, std::uint32_t>;
     using Tree = bgi::rtree<Value, bgi::quadratic<8>>;
+    enum State : std::uint8_t { absent = 0, live = 1, retired = 2 };
+    static constexpr float slack_factor = 4;
 
     Tree tree;
-    std::vector<Box> boxes;             // by id
-    std::vector<std::uint8_t> indexed;  // by id: 1 when in the tree
+    std::vector<Box> boxes;     // by id: the box of its entry in the tree
+    std::vector<State> states;  // by id
+    std::size_t live_count = 0, retired_count = 0;
 
     static Box box_of(std::span<const Point* const> points) {
         Box box;
@@ -85,6 +97,12 @@ struct BoxTree {
         else if (k == 1) bg::set<1>(c, value);
         else if constexpr (D == 3) bg::set<2>(c, value);
     }
+    static float corner(const Coordinates& c, int k) {
+        if (k == 0) return bg::get<0>(c);
+        if (k == 1) return bg::get<1>(c);
+        if constexpr (D == 3) return bg::get<2>(c);
+        return 0;
+    }
     static QueryPoint query_point(const Point& x) {
         if constexpr (D == 2) return QueryPoint(x[0], x[1]);
         else return QueryPoint(x[0], x[1], x[2]);
@@ -95,36 +113,65 @@ struct BoxTree {
         const Point* p = &x;
         return box_of(std::span<const Point* const>(&p, 1));
     }
+    // `outer` holds `inner` and is at most slack_factor times as wide along every axis.
+    static bool holds(const Box& outer, const Box& inner) {
+        for (int k = 0; k < D; ++k) {
+            const float lo = corner(outer.min_corner(), k), hi = corner(outer.max_corner(), k);
+            const float in_lo = corner(inner.min_corner(), k), in_hi = corner(inner.max_corner(), k);
+            if (in_lo < lo || in_hi > hi || hi - lo > slack_factor * (in_hi - in_lo)) return false;
+        }
+        return true;
+    }
 
     void clear() {
         tree.clear();
         boxes.clear();
-        indexed.clear();
+        states.clear();
+        live_count = retired_count = 0;
     }
     void grow(std::uint32_t id) {
         if (id >= boxes.size()) {
             boxes.resize(static_cast<std::size_t>(id) + 1);
-            indexed.resize(static_cast<std::size_t>(id) + 1, 0);
+            states.resize(static_cast<std::size_t>(id) + 1, absent);
         }
     }
-    bool contains(std::uint32_t id) const { return id < indexed.size() && indexed[id] != 0; }
+    bool is_live(std::uint32_t id) const { return id < states.size() && states[id] == live; }
+    // id (added, changed or moved) now has the tight box `box`.
     void insert(std::uint32_t id, const Box& box) {
-        erase(id);  // never two boxes for one id
         grow(id);
+        if (states[id] != absent && holds(boxes[id], box)) {
+            if (states[id] == retired) {
+                --retired_count;
+                ++live_count;
+            }
+            states[id] = live;
+            return;
+        }
+        if (states[id] != absent) {
+            tree.remove(Value(boxes[id], id));
+            (states[id] == live ? live_count : retired_count) -= 1;
+        }
         boxes[id] = box;
-        indexed[id] = 1;
+        states[id] = live;
+        ++live_count;
         tree.insert(Value(box, id));
     }
     void erase(std::uint32_t id) {
-        if (!contains(id)) return;
-        tree.remove(Value(boxes[id], id));
-        indexed[id] = 0;
+        if (!is_live(id)) return;
+        states[id] = retired;
+        --live_count;
+        ++retired_count;
+        if (retired_count > 64 && retired_count > live_count / 8) purge();
     }
-    // Re-boxes id when its box changed (moves that keep a box cost no tree work).
-    void update(std::uint32_t id, const Box& box) {
-        if (contains(id) && bg::equals(boxes[id], box)) return;
-        erase(id);
-        insert(id, box);
+    void update(std::uint32_t id, const Box& box) { insert(id, box); }
+    // Removes the retired entries from the tree.
+    void purge() {
+        for (std::size_t id = 0; id < states.size(); ++id)
+            if (states[id] == retired) {
+                tree.remove(Value(boxes[id], static_cast<std::uint32_t>(id)));
+                states[id] = absent;
+            }
+        retired_count = 0;
     }
     // Replaces the whole tree by a bulk load (the packing constructor: O(n log n), better nodes
     // than n insertions).
@@ -133,13 +180,14 @@ struct BoxTree {
         for (const Value& v : values) {
             grow(v.second);
             boxes[v.second] = v.first;
-            indexed[v.second] = 1;
+            states[v.second] = live;
         }
+        live_count = values.size();
         tree = Tree(values.begin(), values.end());
     }
     std::size_t memory_bytes() const {
         // the tree's nodes hold the values plus about 40% slack at a fill of 8/(8*0.7)
-        return boxes.capacity() * sizeof(Box) + indexed.capacity() + tree.size() * sizeof(Value) * 14 / 10;
+        return boxes.capacity() * sizeof(Box) + states.capacity() + tree.size() * sizeof(Value) * 14 / 10;
     }
 };
 

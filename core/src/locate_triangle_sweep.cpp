@@ -16,11 +16,14 @@ TriangleHits hit_by(const SpatialIndex::Trees& trees, const Mesh& mesh, const Po
     TriangleHits hits;
     detail::element_tree<D>(trees).tree.query(detail::bgi::intersects(query), std::back_inserter(candidates));
     for (const auto& candidate : candidates)
-        if (triangle_meets_element(mesh, candidate.second, a, b, c, positions)) hits.elements.push_back(candidate.second);
+        if (detail::element_tree<D>(trees).is_live(candidate.second) &&
+            triangle_meets_element(mesh, candidate.second, a, b, c, positions))
+            hits.elements.push_back(candidate.second);
     candidates.clear();
     detail::face_tree<D>(trees).tree.query(detail::bgi::intersects(query), std::back_inserter(candidates));
     for (const auto& candidate : candidates)
-        if (triangle_meets_face(mesh, candidate.second, a, b, c, positions))
+        if (detail::face_tree<D>(trees).is_live(candidate.second) &&
+            triangle_meets_face(mesh, candidate.second, a, b, c, positions))
             hits.boundary_faces.push_back(candidate.second);
     detail::sort_unique(hits.elements);
     detail::sort_unique(hits.boundary_faces);

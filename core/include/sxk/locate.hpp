@@ -17,13 +17,17 @@
 // from the origin and rounded outward, so each box contains its element with a margin that
 // absorbs the rounding of Boost's box tests (in double precision); which candidates qualify is
 // then decided by the exact predicates of predicates.hpp (CGAL's filtered kernel), never by a box.
+// Boxes are conservative: an id the edit frees and hands out again keeps its tree entry when the
+// entry's box still holds the new element (and is at most 4 times as wide), so a flip or a split
+// often costs the tree nothing (core/src/locate_trees.hpp).
 //
 // What "inside" means (every query):
 //   * Elements and faces are CLOSED: a point on a face, an edge or a vertex shared by several
 //     elements is inside each of them; locate returns ONE of them (the walk's, or the first the
 //     rtree yields; no promise which), the other queries return all of them.
 //   * A flat element (exact orientation zero in the index's positions) contains no point and is
-//     hit by nothing; the walks step around it and the rtree skips it.
+//     hit by nothing; a walk that meets one gives up (the rtree decides) and the rtree's
+//     candidates test false.
 //   * Planar meshes (ambient dimension 2): every query point's z is ignored.
 //   * Triangle surfaces in 3D have no inside. locate means "on the surface within a tolerance":
 //     it returns a triangle whose distance to x is at most the index's surface tolerance
@@ -105,7 +109,9 @@ struct SpatialIndexOptions {
 class SXK_API SpatialIndex final : public Watcher {
 public:
     // Builds the index over the whole mesh (one bulk load of each rtree, O(n log n)) and attaches
-    // itself as a watcher of `mesh` until destroyed. The mesh must outlive the index.
+    // itself as a watcher of `mesh` until destroyed. The mesh must outlive the index and stay
+    // where it is: a copy assigned to it rebuilds the index (Watcher::init), but moving a mesh
+    // moves its watchers along, and an index keeps the address it was given.
     explicit SpatialIndex(Mesh& mesh, const SpatialIndexOptions& options = {});
     SpatialIndex(Mesh& mesh, Positions positions) : SpatialIndex(mesh, SpatialIndexOptions{positions, 0}) {}
     ~SpatialIndex() override;
@@ -144,13 +150,14 @@ public:
     // ties to either. A ray starting on a face hits it at t = 0.
     RayHit pick(const Point& origin, const Point& direction) const;
 
-    // Entries in the trees (the live elements and boundary faces, flat elements included).
+    // The live elements and boundary faces indexed (flat elements included).
     std::size_t indexed_elements() const;
     std::size_t indexed_boundary_faces() const;
     // Bytes held by the trees and the box arrays.
     std::size_t memory_bytes() const;
-    // O(n), for tests: every live element and boundary face is in its tree exactly once with the
-    // box its positions give now, and nothing else is ("spatial index: element 7 has a stale box").
+    // O(n), for tests: every live element and boundary face is in its tree exactly once with a
+    // box that holds the box its positions give now, nothing else is live, and every entry is the
+    // one box of its id ("spatial index: element 7 has a stale box").
     Outcome<Done> validate() const;
 
     // ---- Watcher ------------------------------------------------------------------------------
