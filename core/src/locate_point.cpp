@@ -13,13 +13,26 @@ namespace {
 // "locate").
 constexpr std::size_t hint_walk_steps = 128;
 
+// The rtree's first candidate is next to x; when it does not contain x, a short walk from it
+// usually reaches the element that does in a step or two through the mesh's neighbour cache,
+// where each further candidate costs a descent through the tree's nodes, which miss the cache on
+// a 1M-element mesh (docs/performance.md "locate").
+constexpr std::size_t candidate_walk_steps = 8;
+
 template <int D>
 Location locate_in_tree(const SpatialIndex::Trees& trees, const Mesh& mesh, const Point& x, Positions positions) {
     const auto& boxes = detail::element_tree<D>(trees);
     const auto query = detail::BoxTree<D>::point_box(x);
-    for (auto it = boxes.tree.qbegin(detail::bgi::intersects(query)); it != boxes.tree.qend(); ++it)
-        if (boxes.is_live(it->second))
-            if (const Location found = locate_in_element(mesh, it->second, x, positions); found.found()) return found;
+    bool first = true;
+    for (auto it = boxes.tree.qbegin(detail::bgi::intersects(query)); it != boxes.tree.qend(); ++it) {
+        if (!boxes.is_live(it->second)) continue;
+        if (const Location found = locate_in_element(mesh, it->second, x, positions); found.found()) return found;
+        if (!first) continue;
+        first = false;
+        if (const ElementId walked = walk_to_point(mesh, x, it->second, positions, candidate_walk_steps);
+            walked != invalid_id)
+            if (const Location found = locate_in_element(mesh, walked, x, positions); found.found()) return found;
+    }
     return {};
 }
 

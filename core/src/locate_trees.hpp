@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <span>
 #include <type_traits>
@@ -58,7 +59,9 @@ inline float float_above(double x) {
 //   * an id added again keeps its entry when the entry's box holds the new box and is not more
 //     than `slack_factor` times wider along any axis (a flipped diagonal, a split child in
 //     its parent's id, a move within the box): no tree operation at all;
-//   * retired entries are removed for good once they are more than an eighth of the live ones.
+//   * retired entries are removed for good, oldest first and at most two per removal event, once
+//     there are more than 64 + live/64 of them (no stall: removing them all at once could mean
+//     125k removals of ~1.5 us each at 1M).
 template <int D>
 struct BoxTree {
     using Coordinates = bg::model::point<float, D, bg::cs::cartesian>;
@@ -73,6 +76,7 @@ struct BoxTree {
     std::vector<Box> boxes;     // by id: the box of its entry in the tree
     std::vector<State> states;  // by id
     std::size_t live_count = 0, retired_count = 0;
+    std::deque<std::uint32_t> retired_order;  // ids as they were retired (revived ones too)
 
     static Box box_of(std::span<const Point* const> points) {
         Box box;
@@ -127,6 +131,7 @@ struct BoxTree {
         tree.clear();
         boxes.clear();
         states.clear();
+        retired_order.clear();
         live_count = retired_count = 0;
     }
     void grow(std::uint32_t id) {
@@ -161,17 +166,29 @@ struct BoxTree {
         states[id] = retired;
         --live_count;
         ++retired_count;
-        if (retired_count > 64 && retired_count > live_count / 8) purge();
+        retired_order.push_back(id);
+        trim(2);
     }
     void update(std::uint32_t id, const Box& box) { insert(id, box); }
-    // Removes the retired entries from the tree.
-    void purge() {
-        for (std::size_t id = 0; id < states.size(); ++id)
-            if (states[id] == retired) {
-                tree.remove(Value(boxes[id], static_cast<std::uint32_t>(id)));
-                states[id] = absent;
-            }
-        retired_count = 0;
+    // Removes up to `budget` of the oldest retired entries from the tree while there are more
+    // than 64 + live/64; keeps the queue of retired ids within a few times their number.
+    void trim(int budget) {
+        const std::size_t limit = 64 + live_count / 64;
+        while (retired_count > limit && budget > 0 && !retired_order.empty()) {
+            const std::uint32_t id = retired_order.front();
+            retired_order.pop_front();
+            if (id >= states.size() || states[id] != retired) continue;  // revived since
+            tree.remove(Value(boxes[id], id));
+            states[id] = absent;
+            --retired_count;
+            --budget;
+        }
+        if (retired_order.size() > 4 * (retired_count + 64)) {
+            std::deque<std::uint32_t> still;
+            for (const std::uint32_t id : retired_order)
+                if (id < states.size() && states[id] == retired) still.push_back(id);
+            retired_order.swap(still);
+        }
     }
     // Replaces the whole tree by a bulk load (the packing constructor: O(n log n), better nodes
     // than n insertions).
@@ -187,7 +204,8 @@ struct BoxTree {
     }
     std::size_t memory_bytes() const {
         // the tree's nodes hold the values plus about 40% slack at a fill of 8/(8*0.7)
-        return boxes.capacity() * sizeof(Box) + states.capacity() + tree.size() * sizeof(Value) * 14 / 10;
+        return boxes.capacity() * sizeof(Box) + states.capacity() + retired_order.size() * sizeof(std::uint32_t) +
+               tree.size() * sizeof(Value) * 14 / 10;
     }
 };
 

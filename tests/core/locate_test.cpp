@@ -224,7 +224,7 @@ TEST(SpatialIndex, FollowsEditsAndRollbacks) {
     EXPECT_EQ(index.indexed_elements(), 32u);
     EXPECT_EQ(index.indexed_boundary_faces(), 16u);
     // many splits taken back at once: the rollback retires their ids, more than the tree keeps
-    // (locate_trees.hpp purges them), and the next splits hand the same ids out again
+    // (locate_trees.hpp removes the oldest), and the next splits hand the same ids out again
     for (int round = 0; round < 2; ++round) {
         journal.checkpoint();
         for (int k = 0; k < 80; ++k) {

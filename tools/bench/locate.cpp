@@ -12,8 +12,10 @@
 //                              cell-relative positions on both sizes): the rtree's path;
 //   locate/<dim>/<size>/walk   index.locate(x, previous answer) along a random path of steps of
 //                              0.3 cells: the walk's path;
-//   edit/3d/large/<bare|indexed>  split_edge(a, b, 0.5) of K random edges of the 1M cube, without
-//                              and with the index attached (its events are part of the edit);
+//   edit/3d/large/<bare|watched|indexed>  split_edge(a, b, 0.5) of K random edges of the 1M cube,
+//                              without a watcher, with one that does nothing (the kernel then
+//                              logs and tells every net change: its share of the cost), and with
+//                              the index attached (its events are part of the edit);
 //   edit/2d/large/<bare|indexed>  flip_edge of K random interior edges of the 1M grid and the flip
 //                              back (a round trip, so the mesh stays the same).
 // Each call is timed on its own (steady_clock; Google Benchmark's manual time is their sum), so
@@ -191,13 +193,17 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMicrosecond)
                 ->Iterations(static_cast<benchmark::IterationCount>(sizes.queries));
     }
-    // the edits: the indexed large meshes above, and bare copies of them
-    std::deque<sxk::Mesh> bare;
+    // the edits: the indexed large meshes above, bare copies of them, and watched copies
+    std::deque<sxk::Mesh> copies;
+    sxk::Watcher nobody;  // hears every event and does nothing
     for (Case& c : cases) {
         if (c.name.find("large") == std::string::npos) continue;
-        bare.push_back(c.mesh);
+        sxk::Mesh& bare = copies.emplace_back(c.mesh);
+        sxk::Mesh& watched = copies.emplace_back(c.mesh);
+        watched.add_watcher(nobody);
         const std::string dim = c.name.substr(0, 2);
-        for (const auto& [kind, mesh] : {std::pair{"bare", &bare.back()}, std::pair{"indexed", &c.mesh}})
+        for (const auto& [kind, mesh] :
+             {std::pair{"bare", &bare}, std::pair{"watched", &watched}, std::pair{"indexed", &c.mesh}})
             benchmark::RegisterBenchmark(("edit/" + dim + "/large/" + kind).c_str(), edit, mesh, sizes.seed)
                 ->UseManualTime()
                 ->Unit(benchmark::kMicrosecond)
