@@ -34,13 +34,20 @@ inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) 
     return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
 }
 
-// The next float below (above) x, at least one unit in the last place away.
+// The next float below (above) x, at least one unit in the last place away (a double beyond
+// the floats' range, which a cast may not take, gives the largest float or infinity).
 inline float float_below(double x) {
+    constexpr double largest = std::numeric_limits<float>::max();
+    if (!(x <= largest)) return std::numeric_limits<float>::max();
+    if (x < -largest) return -std::numeric_limits<float>::infinity();
     float f = static_cast<float>(x);
     if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
     return std::nextafter(f, -std::numeric_limits<float>::infinity());
 }
 inline float float_above(double x) {
+    constexpr double largest = std::numeric_limits<float>::max();
+    if (!(x >= -largest)) return -std::numeric_limits<float>::max();
+    if (x > largest) return std::numeric_limits<float>::infinity();
     float f = static_cast<float>(x);
     if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
     return std::nextafter(f, std::numeric_limits<float>::infinity());

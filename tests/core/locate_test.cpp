@@ -270,6 +270,7 @@ TEST(SpatialIndex, FlatElementsContainNothing) {
     EXPECT_FALSE(index.locate({1, 0, 0}).found());
     EXPECT_TRUE(index.elements_crossed({-1, 0, 0}, {3, 0, 0}).empty());
     EXPECT_TRUE(index.validate().ok());
+    ASSERT_TRUE(mesh.validate().ok());
 }
 
 TEST(Walks, LocateTriangleAndTetrahedronWithoutAnIndex) {
