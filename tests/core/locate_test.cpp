@@ -290,45 +290,59 @@ TEST(Walks, LocateTriangleAndTetrahedronWithoutAnIndex) {
     EXPECT_EQ(locate_triangle(cube, {1, 1, 1}), invalid_id);
 }
 
-// The index changes how x is found, not what is refined (x inside a triangle: one answer).
-TEST(RefineAroundWithIndex, RefinesAsWithoutAndRefusesAForeignIndex) {
-    Mesh plain = test::planar_grid(8);
-    Mesh indexed = plain;
+// Refines a copy of `start` without an index and one with (refine(mesh, nullptr or &index) says
+// what it did): the same answer and the same mesh, and the index in step with it.
+template <class Refine>
+void expect_refines_alike(const Mesh& start, Refine refine) {
+    Mesh plain = start, indexed = start;
     const SpatialIndex index(indexed);
-    const Point x{3.3, 5.6, 0};
-    const auto a = refine_around(plain, x, 0.1);
-    const auto b = refine_around(indexed, x, 0.1, index);
-    ASSERT_TRUE(a.ok()) << a.reason();
-    ASSERT_TRUE(b.ok()) << b.reason();
-    EXPECT_EQ(a->bisections, b->bisections);
-    EXPECT_EQ(a->element, b->element);
+    EXPECT_EQ(refine(plain, nullptr), refine(indexed, &index));
     EXPECT_TRUE(ops_driver::snapshot(plain) == ops_driver::snapshot(indexed));
     EXPECT_TRUE(index.validate().ok());
-    test::expect_same_state(plain, indexed);
-    EXPECT_EQ(refine_around(plain, x, 0.1, index).reason(), "refine_around: the spatial index watches another mesh");
-    const SpatialIndex deformed(indexed, Positions::deformed);
-    EXPECT_EQ(refine_around(indexed, x, 0.1, deformed).reason(),
+    ASSERT_TRUE(indexed.validate().ok());
+}
+
+// The index changes how x is found, not what is refined (x inside an element: one answer).
+TEST(RefineAroundWithIndex, RefinesAsWithout) {
+    expect_refines_alike(test::planar_grid(8), [](Mesh& mesh, const SpatialIndex* index) {
+        const Point x{3.3, 5.6, 0};
+        const auto done = index ? refine_around(mesh, x, 0.1, *index) : refine_around(mesh, x, 0.1);
+        return done ? std::to_string(done->bisections) + " bisections, element " + std::to_string(done->element)
+                    : done.reason();
+    });
+    expect_refines_alike(test::kuhn_cube(3), [](Mesh& mesh, const SpatialIndex* index) {
+        const Point y{1.3, 2.1, 0.7};
+        const auto done = index ? refine_around_tetrahedra(mesh, y, 0.4, *index) : refine_around_tetrahedra(mesh, y, 0.4);
+        return done ? std::to_string(*done) + " bisections" : done.reason();
+    });
+}
+
+TEST(RefineAroundWithIndex, RefusesAForeignIndexAndPointsOutside) {
+    Mesh grid = test::planar_grid(8);
+    Mesh other = grid;
+    const SpatialIndex index(grid);
+    const SpatialIndex deformed(grid, Positions::deformed);
+    EXPECT_EQ(refine_around(other, {3, 3, 0}, 0.1, index).reason(),
+              "refine_around: the spatial index watches another mesh");
+    EXPECT_EQ(refine_around(grid, {3, 3, 0}, 0.1, deformed).reason(),
               "refine_around: the spatial index is over the deformed positions; refinement locates in the "
               "reference positions");
-    EXPECT_EQ(refine_around(indexed, {9, 1, 0}, 0.1, index).reason(), "refine_around: point (9, 1) is not in the mesh");
-    ASSERT_TRUE(indexed.validate().ok());
-
+    EXPECT_EQ(refine_around(grid, {9, 1, 0}, 0.1, index).reason(), "refine_around: point (9, 1) is not in the mesh");
     Mesh cube = test::kuhn_cube(3);
-    Mesh cube_indexed = cube;
-    const SpatialIndex cube_index(cube_indexed);
-    const Point y{1.3, 2.1, 0.7};
-    const auto c = refine_around_tetrahedra(cube, y, 0.4);
-    const auto d = refine_around_tetrahedra(cube_indexed, y, 0.4, cube_index);
-    ASSERT_TRUE(c.ok()) << c.reason();
-    ASSERT_TRUE(d.ok()) << d.reason();
-    EXPECT_EQ(*c, *d);
-    test::expect_same_state(cube, cube_indexed);
-    EXPECT_TRUE(cube_index.validate().ok());
-    EXPECT_EQ(refine_around_tetrahedra(cube_indexed, {5, 1, 1}, 0.4, cube_index).reason(),
+    Mesh other_cube = cube;
+    const SpatialIndex cube_index(cube);
+    EXPECT_EQ(refine_around_tetrahedra(cube, {5, 1, 1}, 0.4, cube_index).reason(),
               "refine_around_tetrahedra: point (5, 1, 1) is not in the mesh");
-    EXPECT_EQ(refine_around_tetrahedra(cube, y, 0.4, cube_index).reason(),
+    EXPECT_EQ(refine_around_tetrahedra(other_cube, {1, 1, 1}, 0.4, cube_index).reason(),
               "refine_around_tetrahedra: the spatial index watches another mesh");
-    ASSERT_TRUE(cube_indexed.validate().ok());
+    auto state = TetBisection::for_kuhn_mesh(cube);
+    ASSERT_TRUE(state.ok()) << state.reason();
+    const auto refined = refine_around_tetrahedra(*state, {1.3, 2.1, 0.7}, 0.4, cube_index);
+    ASSERT_TRUE(refined.ok()) << refined.reason();
+    EXPECT_GT(*refined, 0u);
+    EXPECT_TRUE(cube_index.validate().ok());
+    ASSERT_TRUE(grid.validate().ok());
+    ASSERT_TRUE(cube.validate().ok());
 }
 
 }  // namespace
