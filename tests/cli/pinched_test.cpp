@@ -48,6 +48,7 @@ TEST(SxkPinched, StrictRefusesOnEveryCommandThatReadsAMesh) {
         {"delaunay-flip", "--strict", pinched.string(), (folder / "out.mesh").string()},
         {"refine", "--strict", pinched.string(), (folder / "out.mesh").string(), "--around",
          "0.2,0.2,0.2", "--size", "0.3"},
+        {"locate", "--strict", pinched.string(), "--points", (folder / "faces.txt").string()},
     };
     for (const auto& args : commands) {
         const ProcessResult run = sxk(args);

@@ -25,7 +25,7 @@ TEST(SxkUsage, HelpListsBuiltInAndPlugInCommands) {
 }
 
 TEST(SxkUsage, EveryCommandHasHelp) {
-    for (const char* command : {"info", "validate", "convert", "quality", "plugins", "stats"}) {
+    for (const char* command : {"info", "validate", "convert", "quality", "plugins", "locate", "stats"}) {
         if (command == std::string("stats") && !SXK_HAVE_STATS) continue;
         const ProcessResult run = sxk({command, "--help"});
         EXPECT_EQ(run.exit_code, 0) << command;

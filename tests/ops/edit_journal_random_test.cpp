@@ -9,7 +9,11 @@
 // step; validate() is clean; a MirrorWatcher, which applies each event to its own copy, agrees
 // with the mesh (every net change told exactly once). Every 16th rollback also writes the mesh
 // in each format before the step and after the rollback: the files are byte for byte equal.
-// The seed is printed; SXK_SEED=<n> replays a run.
+// Two SpatialIndexes (sxk/locate.hpp), over the reference and over the deformed positions, watch
+// throughout: after every step both validate (every live element and boundary face in its tree
+// once, with the box its positions give now), and every 4th step they answer random locate,
+// segment, triangle, nearest-boundary and ray queries as a scan of every element does
+// (tests/core/locate_scan.hpp). The seed is printed; SXK_SEED=<n> replays a run.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -22,13 +26,17 @@
 
 #include "../../fuzz/ops_driver.hpp"
 #include "core/fixtures.hpp"
+#include "core/locate_scan.hpp"
+#include "ops/random_steps.hpp"
 #include "sxk/edit_journal.hpp"
 #include "sxk/io.hpp"
+#include "sxk/locate.hpp"
 
 namespace sxk {
 namespace {
 
 namespace fs = std::filesystem;
+using test::random_move;
 using ops_driver::Snapshot;
 using ops_driver::snapshot;
 
@@ -52,44 +60,6 @@ std::vector<std::string> files_of(const Mesh& mesh, const fs::path& dir) {
     return files;
 }
 
-// Moves 1-3 random vertices by a small random offset, refusing inversions and flat elements
-// (the driver's oracle wants every element strictly positive in both sets), and keeps the
-// driver's "where" attribute on the reference position. Both position sets move alike (the
-// deformed offset doubled where the driver doubled the deformed positions): make_delaunay_by_flips
-// flips by one set only and may invert the other when the two are not similar (its header).
-void random_move(Mesh& mesh, std::mt19937_64& rng) {
-    if (mesh.vertex_count() == 0) return;
-    std::uniform_int_distribution<VertexId> vertex(0, static_cast<VertexId>(mesh.vertex_count() - 1));
-    std::uniform_real_distribution<double> offset(-0.05, 0.05);
-    std::vector<VertexId> vertices;
-    std::vector<Point> reference, deformed, old_reference;
-    const int count = 1 + static_cast<int>(rng() % 3);
-    for (int i = 0; i < count; ++i) {
-        const VertexId v = vertex(rng);
-        if (std::find(vertices.begin(), vertices.end(), v) != vertices.end()) continue;
-        const double scale = mesh.deformed(v) == mesh.reference(v) ? 1 : 2;
-        Point r = mesh.reference(v), d = mesh.deformed(v);
-        for (std::size_t c = 0; c < static_cast<std::size_t>(mesh.ambient_dimension()); ++c) {
-            const double delta = offset(rng);
-            r[c] += delta;
-            d[c] += scale * delta;
-        }
-        vertices.push_back(v);
-        old_reference.push_back(mesh.reference(v));
-        reference.push_back(r);
-        deformed.push_back(d);
-    }
-    const MoveCheck check{true, true};
-    if (!mesh.move_vertices(vertices, reference, PositionSet::reference, check).ok()) return;
-    if (!mesh.move_vertices(vertices, deformed, PositionSet::deformed, check).ok()) {
-        ASSERT_TRUE(mesh.move_vertices(vertices, old_reference, PositionSet::reference).ok());
-        return;
-    }
-    const AttributeId where = mesh.find_vertex_attribute("where");
-    if (where == invalid_id) return;
-    for (const VertexId v : vertices) ASSERT_TRUE(mesh.set_vertex_attribute(where, v, mesh.reference(v)).ok());
-}
-
 // Labels: an element label, or a face label on a boundary face.
 void random_label(Mesh& mesh, std::mt19937_64& rng) {
     if (mesh.element_count() == 0) return;
@@ -105,29 +75,26 @@ void random_label(Mesh& mesh, std::mt19937_64& rng) {
 
 struct Counts {
     int steps = 0, operations = 0, done = 0, commits = 0, rollbacks = 0, undos = 0, redos = 0, files = 0;
+    int index_comparisons = 0;
 };
 
 void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
     const std::uint64_t seed = test::seed_for(name);
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
-    bool forced = true;
-    ops_driver::Choices choices([&]() -> int {
-        if (forced) {
-            forced = false;
-            return static_cast<int>(kind);
-        }
-        return static_cast<int>(rng() & 0xff);
-    });
+    test::StartChoices start(rng, kind);
+    ops_driver::Choices& choices = start.choices();
     const fs::path dir = fs::path(SXK_BINARY_DIR) / "test-ops-scratch" / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     constexpr int restart = 500;  // steps per start mesh (dissections shred a mesh over time)
     for (int first = 0; first < steps; first += restart) {
-        forced = true;
+        start.restart();
         Mesh mesh = ops_driver::start_mesh(choices, 6, 3);
         test::MirrorWatcher mirror;
         mesh.add_watcher(mirror);
+        const SpatialIndex reference_index(mesh, Positions::reference);
+        const SpatialIndex deformed_index(mesh, Positions::deformed);
         EditJournal journal(mesh);
         journal.set_history_limit(restart);
         // the snapshots before and after each step still in the history, newest last
@@ -187,6 +154,12 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
             const auto valid = mesh.validate();
             ASSERT_TRUE(valid.ok()) << "step " << i << ": " << valid.reason();
             mirror.expect_mirrors(mesh);
+            for (const SpatialIndex* index : {&reference_index, &deformed_index}) {
+                const auto indexed = index->validate();
+                ASSERT_TRUE(indexed.ok()) << "step " << i << ": " << indexed.reason();
+                if (i % 4 == 0) test::expect_index_agrees(*index, rng, 2, "step " + std::to_string(i));
+            }
+            counts.index_comparisons += i % 4 == 0;
             if (::testing::Test::HasFailure()) FAIL() << "step " << i;
         }
         mesh.remove_watcher(mirror);
@@ -199,11 +172,13 @@ void run_and_count(std::uint32_t kind, int steps, const char* name) {
     run(kind, steps, name, c);
     std::cout << "[ done     ] steps " << c.steps << ", operations " << c.operations << " (" << c.done
               << " done), commits " << c.commits << ", rollbacks " << c.rollbacks << ", undos " << c.undos
-              << ", redos " << c.redos << ", file comparisons " << c.files << "\n";
+              << ", redos " << c.redos << ", file comparisons " << c.files << ", index comparisons "
+              << c.index_comparisons << "\n";
     EXPECT_GT(c.rollbacks, c.steps / 4);
     EXPECT_GT(c.undos, 0);
     EXPECT_GT(c.redos, 0);
     EXPECT_GT(c.files, 0);
+    EXPECT_GT(c.index_comparisons, c.steps / 5);
 }
 
 TEST(EditJournalRandom, JitteredPlanarGrid) { run_and_count(0, 3000, "EditJournalRandom.JitteredPlanarGrid"); }

@@ -15,7 +15,9 @@
 // room is reserved for the elements to come (untimed: growing a 1M-element pool copies it, a
 // one-off cost that would otherwise be charged to the next call).
 // Both entry points locate x themselves, by a walk from a start element (see their headers):
-// that walk is part of the call and is the part that is not local.
+// that walk is part of the call and is the part that is not local. The cases ".../index" make the
+// same calls with a SpatialIndex attached (sxk/locate.hpp): x is located by its rtree, and the
+// index follows every bisection (its upkeep is part of the call).
 //
 // Counters: calls_per_s, elements (before refining), bisections per call.
 #include <benchmark/benchmark.h>
@@ -26,12 +28,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "parse_option.hpp"
-#include "sxk/generators.hpp"
+#include "unit_meshes.hpp"
+#include "sxk/locate.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/refine_around.hpp"
 #include "sxk/ops/refine_around_tetrahedra.hpp"
@@ -41,40 +45,13 @@ namespace {
 
 constexpr int restore_every = 50;
 
-sxk::Mesh kuhn_cube(int n) {
-    auto made = sxk::make_kuhn_cube(n);
-    if (!made) {
-        std::fprintf(stderr, "refine_latency: %s\n", made.reason().c_str());
-        std::exit(1);
-    }
-    return std::move(made).value();
-}
-
-sxk::Mesh grid(int n) {
-    sxk::Mesh mesh(2, 2);
-    mesh.reserve(static_cast<std::size_t>((n + 1) * (n + 1)), static_cast<std::size_t>(2 * n * n));
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) mesh.add_vertex({double(i), double(j), 0});
-    auto id = [n](int i, int j) { return sxk::VertexId(j * (n + 1) + i); };
-    std::vector<sxk::Simplex> triangles;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            triangles.emplace_back(+1, std::initializer_list<sxk::VertexId>{id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            triangles.emplace_back(+1, std::initializer_list<sxk::VertexId>{id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-    if (const auto built = mesh.assign_elements(triangles); !built) {
-        std::fprintf(stderr, "refine_latency: %s\n", built.reason().c_str());
-        std::exit(1);
-    }
-    return mesh;
-}
-
 struct Case {
     std::string name;
     int dimension;
     int n;
     sxk::Mesh pristine;
     std::vector<sxk::Point> points;
+    bool indexed = false;  // locate x with a SpatialIndex attached to the mesh
 };
 
 // A fresh copy with room for the refinements to come: a copy's pools are exactly full, and
@@ -86,6 +63,9 @@ void restore(sxk::Mesh& mesh, const sxk::Mesh& pristine) {
 
 void run(benchmark::State& state, Case* c) {
     sxk::Mesh mesh(c->dimension, c->dimension);
+    // attached first: each restore (a copy assignment) rebuilds it, untimed
+    std::optional<sxk::SpatialIndex> index;
+    if (c->indexed) index.emplace(mesh);
     restore(mesh, c->pristine);
     std::size_t next = 0, bisections = 0, calls = 0;
     const double h = c->dimension == 3 ? 0.3 : 0.2;
@@ -99,14 +79,15 @@ void run(benchmark::State& state, Case* c) {
         next = (next + 1) % c->points.size();
         ++calls;
         if (c->dimension == 3) {
-            const auto refined = sxk::refine_around_tetrahedra(mesh, x, h);
+            const auto refined = index ? sxk::refine_around_tetrahedra(mesh, x, h, *index)
+                                       : sxk::refine_around_tetrahedra(mesh, x, h);
             if (!refined) {
                 state.SkipWithError(("refine_around_tetrahedra refused: " + refined.reason()).c_str());
                 return;
             }
             bisections += *refined;
         } else {
-            const auto refined = sxk::refine_around(mesh, x, h);
+            const auto refined = index ? sxk::refine_around(mesh, x, h, *index) : sxk::refine_around(mesh, x, h);
             if (!refined) {
                 state.SkipWithError(("refine_around refused: " + refined.reason()).c_str());
                 return;
@@ -131,10 +112,14 @@ int main(int argc, char** argv) {
             return 2;
         }
     std::deque<Case> cases;
-    cases.push_back({"3d/small", 3, 12, kuhn_cube(12), {}});
-    cases.push_back({"3d/large", 3, 55, kuhn_cube(55), {}});
-    cases.push_back({"2d/small", 2, 71, grid(71), {}});
-    cases.push_back({"2d/large", 2, 708, grid(708), {}});
+    cases.push_back({"3d/small", 3, 12, sxk_bench::kuhn_cube(12), {}});
+    cases.push_back({"3d/large", 3, 55, sxk_bench::kuhn_cube(55), {}});
+    cases.push_back({"2d/small", 2, 71, sxk_bench::grid(71), {}});
+    cases.push_back({"2d/large", 2, 708, sxk_bench::grid(708), {}});
+    for (std::size_t i = 0; i < 4; ++i) {  // the same calls locating with an index
+        Case indexed{cases[i].name + "/index", cases[i].dimension, cases[i].n, cases[i].pristine, {}, true};
+        cases.push_back(std::move(indexed));
+    }
     for (Case& c : cases) {
         // the same points in cell units on both sizes: a random cell, a random point inside it
         std::mt19937_64 random(seed);

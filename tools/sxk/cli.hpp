@@ -3,6 +3,8 @@
 // the error convention of docs/cli.md ("sxk: FILE:LINE: reason", exit code 2).
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -45,6 +47,7 @@ void add_components_command(CLI::App& app, Context& context);
 void add_dissect_command(CLI::App& app, Context& context);
 void add_delaunay_flip_command(CLI::App& app, Context& context);
 void add_refine_command(CLI::App& app, Context& context);
+void add_locate_command(CLI::App& app, Context& context);
 
 // Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
 // context.err, sets context.exit_code to 2 and returns nullopt. What the reader repaired is said
@@ -59,6 +62,14 @@ std::optional<Mesh> load_mesh(Context& context, const std::string& file, const R
 // "sxk: FILE:0: reason" to context.err and returns false (the caller exits with exit_refused:
 // the mesh was read, the writer refused it; an existing FILE is left as it was).
 bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options = {});
+
+// Reads a side input of a command (dissect --faces, locate --points) as mesh files are read
+// (read_text_file: a directory, a device or a read error is an input error, a byte order mark is
+// dropped) and hands the whitespace-separated words of each line to `take`, with '#' comments
+// removed and blank lines skipped; `take` returns an empty string, or why the line is bad. On an
+// unreadable file or a bad line prints "sxk: FILE:LINE: reason" and returns false.
+bool read_word_lines(Context& context, const std::string& file,
+                     const std::function<std::string(std::size_t line, const std::vector<std::string>& words)>& take);
 
 // "tetrahedron" / "triangle"; element_count_text: "1 tetrahedron", "2 tetrahedra".
 const char* element_kind(const Mesh& mesh);

@@ -8,7 +8,6 @@
 // gives "sxk: FILE:LINE: reason" and exit code 2, like any other input error.
 #include <charconv>
 #include <memory>
-#include <sstream>
 
 #include "cli.hpp"
 #include "progress.hpp"
@@ -31,45 +30,27 @@ struct FaceList {
 
 // Reads the face list; on an unreadable file or a bad line prints the error and returns nullopt.
 std::optional<FaceList> read_faces(Context& context, const std::string& file, const Mesh& mesh) {
-    // as a mesh file is read (a directory, a device or a read error is an input error, a byte
-    // order mark is dropped), not an ifstream that takes a directory for an empty list
-    std::string text;
-    try {
-        text = read_text_file(file);
-    } catch (const InputError& error) {
-        context.err << "sxk: " << error.what() << '\n';
-        return std::nullopt;
-    }
-    std::istringstream in(text);
     const std::size_t wanted = static_cast<std::size_t>(mesh.topological_dimension());
     FaceList list;
-    std::string line;
-    for (std::size_t number = 1; std::getline(in, line); ++number) {
-        if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-        std::istringstream words(line);
+    const bool read = read_word_lines(context, file, [&](std::size_t number, const std::vector<std::string>& words) {
         std::vector<VertexId> vertices;
-        std::string word;
-        auto fail = [&](const std::string& reason) {
-            context.err << "sxk: " << file << ':' << number << ": " << reason << '\n';
-            return std::nullopt;
-        };
-        while (words >> word) {
+        for (const std::string& word : words) {
             VertexId v = 0;
             const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), v);
-            if (error != std::errc() || end != word.data() + word.size())
-                return fail("'" + word + "' is not a vertex id");
+            if (error != std::errc() || end != word.data() + word.size()) return "'" + word + "' is not a vertex id";
             if (v >= mesh.vertex_count())
-                return fail("vertex " + word + " does not exist (ids are 0-based, the mesh has " +
-                            std::to_string(mesh.vertex_count()) + " vertices)");
+                return "vertex " + word + " does not exist (ids are 0-based, the mesh has " +
+                       std::to_string(mesh.vertex_count()) + " vertices)";
             vertices.push_back(v);
         }
-        if (vertices.empty()) continue;
         if (vertices.size() != wanted)
-            return fail("a face of a " + std::string(element_kind(mesh)) + " mesh has " +
-                        std::to_string(wanted) + " vertices, this line has " + std::to_string(vertices.size()));
+            return "a face of a " + std::string(element_kind(mesh)) + " mesh has " + std::to_string(wanted) +
+                   " vertices, this line has " + std::to_string(vertices.size());
         list.faces.emplace_back(+1, vertices);
         list.lines.push_back(number);
-    }
+        return std::string();
+    });
+    if (!read) return std::nullopt;
     return list;
 }
 

@@ -1,4 +1,5 @@
 #include <new>
+#include <sstream>
 
 #include "cli.hpp"
 #include "progress.hpp"
@@ -31,6 +32,32 @@ bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, cons
     }();  // the progress line is gone before anything is printed
     if (error) context.err << "sxk: " << *error << '\n';
     return !error;
+}
+
+bool read_word_lines(Context& context, const std::string& file,
+                     const std::function<std::string(std::size_t line, const std::vector<std::string>& words)>& take) {
+    // as a mesh file is read, not an ifstream that takes a directory for an empty list
+    std::string text;
+    try {
+        text = read_text_file(file);
+    } catch (const InputError& error) {
+        context.err << "sxk: " << error.what() << '\n';
+        return false;
+    }
+    std::istringstream in(text);
+    std::string line;
+    for (std::size_t number = 1; std::getline(in, line); ++number) {
+        if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+        std::istringstream words(line);
+        std::vector<std::string> list;
+        for (std::string word; words >> word;) list.push_back(word);
+        if (list.empty()) continue;
+        if (const std::string reason = take(number, list); !reason.empty()) {
+            context.err << "sxk: " << file << ':' << number << ": " << reason << '\n';
+            return false;
+        }
+    }
+    return true;
 }
 
 std::string element_count_text(const Mesh& mesh, std::size_t count) {

@@ -2,9 +2,11 @@
 #include "sxk/ops/refine_around_tetrahedra.hpp"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
+#include "ops/index_check.hpp"
 #include "ops/tet_bisection_amp.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -14,68 +16,14 @@ namespace sxk {
 
 namespace {
 
-// True when x lies strictly beyond face i of element simplex s (the face opposite vertex i):
-// replacing vertex i by x turns the positive element negative.
-bool beyond_face(const Mesh& mesh, const Simplex& s, int i, const Point& x) {
-    std::array<const Point*, 4> p{};
-    for (int j = 0; j < 4; ++j)
-        p[static_cast<std::size_t>(j)] = j == i ? &x : &mesh.reference(s.vertex(j));
-    const Sign raw = orient3d(*p[0], *p[1], *p[2], *p[3]);
-    return static_cast<int>(raw) * s.sign() < 0;
-}
-
-bool contains_point(const Mesh& mesh, ElementId t, const Point& x) {
-    const Simplex& s = mesh.simplex(t);
-    for (int i = 0; i < 4; ++i)
-        if (beyond_face(mesh, s, i, x)) return false;
-    return true;
-}
-
 std::string point_text(const Point& x) {
     std::ostringstream out;
     out << '(' << x[0] << ", " << x[1] << ", " << x[2] << ')';
     return out.str();
 }
 
-}  // namespace
-
-ElementId locate_tetrahedron(const Mesh& mesh, const Point& x, ElementId start) {
-    if (mesh.topological_dimension() != 3) return invalid_id;
-    for (double c : x)
-        if (!std::isfinite(c)) return invalid_id;
-    ElementId t = start;
-    if (!mesh.is_element(t)) {
-        const auto first = elements(mesh).begin();
-        if (first == elements(mesh).end()) return invalid_id;
-        t = *first;
-    }
-    // Visibility walk: step through a face that has x strictly beyond it. The face tried first
-    // rotates from step to step, which keeps the walk from circling in non-Delaunay meshes; the
-    // step bound is a guard only (walks in a mesh of n elements take about n^(1/3) steps).
-    constexpr std::size_t max_steps = std::size_t{1} << 16;
-    for (std::size_t step = 0; step < max_steps; ++step) {
-        const Simplex& s = mesh.simplex(t);
-        ElementId next = t;
-        for (int k = 0; k < 4; ++k) {
-            const int i = static_cast<int>((static_cast<std::size_t>(k) + step) % 4);
-            if (beyond_face(mesh, s, i, x)) {
-                next = mesh.neighbor(t, i);
-                break;
-            }
-        }
-        if (next == t) return t;
-        if (next == invalid_id) break;  // the walk left the mesh: x is outside, or behind a bay
-        t = next;
-    }
-    // x outside, or a non-convex domain blocked the walk: test every element (linear, but only
-    // reached for points that are not where the walk can see them).
-    for (ElementId u : elements(mesh))
-        if (contains_point(mesh, u, x)) return u;
-    return invalid_id;
-}
-
-Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h) {
-    Mesh& mesh = state.mesh();
+// The checks every entry point makes before locating x; nothing when they pass.
+std::optional<Refusal> refuse_arguments(const Mesh& mesh, double h) {
     if (mesh.topological_dimension() != 3)
         return Refusal{RefusalCode::wrong_dimension,
                        "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
@@ -84,15 +32,25 @@ Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& 
         out << "refine_around_tetrahedra: h = " << h << " is not positive";
         return Refusal{RefusalCode::bad_argument, out.str()};
     }
-    if (state.is_stale())
-        return Refusal{RefusalCode::stale,
-                       "refine_around_tetrahedra: the bisection state is stale: " +
-                       state.stale_reason()};
-    const ElementId t = locate_tetrahedron(mesh, x, state.last_child());
-    if (t == invalid_id)
-        return Refusal{RefusalCode::not_found,
-                       "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+    return std::nullopt;
+}
 
+std::optional<Refusal> refuse_stale(const TetBisection& state) {
+    if (!state.is_stale())
+        return std::nullopt;
+    return Refusal{RefusalCode::stale,
+                   "refine_around_tetrahedra: the bisection state is stale: " + state.stale_reason()};
+}
+
+Refusal not_in_mesh(const Point& x) {
+    return Refusal{RefusalCode::not_found,
+                   "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+}
+
+// With a bisection state, from the tetrahedron t containing x.
+Outcome<std::size_t> refine_with_state(TetBisection& state, ElementId t, const Point& x, double h) {
+    Mesh& mesh = state.mesh();
+    if (t == invalid_id) return not_in_mesh(x);
     if (state.rule() == BisectionRule::arnold_mukherjee_pouly) {
         // AMP: bisect the leaf containing x and close to conformity, until its refinement edge
         // is short enough; one transaction as well (tet_bisection_amp.hpp)
@@ -117,19 +75,9 @@ Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& 
     return planned;
 }
 
-Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h) {
-    if (mesh.topological_dimension() != 3)
-        return Refusal{RefusalCode::wrong_dimension,
-                       "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
-    if (!(h > 0)) {
-        std::ostringstream out;
-        out << "refine_around_tetrahedra: h = " << h << " is not positive";
-        return Refusal{RefusalCode::bad_argument, out.str()};
-    }
-    const ElementId t = locate_tetrahedron(mesh, x, invalid_id);
-    if (t == invalid_id)
-        return Refusal{RefusalCode::not_found,
-                       "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+// Without a state (longest-edge), from the tetrahedron t containing x.
+Outcome<std::size_t> refine_stateless(Mesh& mesh, ElementId t, const Point& x, double h) {
+    if (t == invalid_id) return not_in_mesh(x);
     // The longest-edge rule needs no stored marks: the refinement edge of an element is a
     // function of its vertices' reference positions, computed when asked (the plan computes the
     // original elements' on first use and its children's from their planned positions). So
@@ -147,6 +95,33 @@ Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double
                            "refused: " +
                            split.reason()};
     return planned;
+}
+
+}  // namespace
+
+Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h) {
+    if (auto refused = refuse_arguments(state.mesh(), h)) return *refused;
+    if (auto refused = refuse_stale(state)) return *refused;
+    return refine_with_state(state, locate_tetrahedron(state.mesh(), x, state.last_child()), x, h);
+}
+
+Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h,
+                                              const SpatialIndex& index) {
+    if (auto refused = refuse_arguments(state.mesh(), h)) return *refused;
+    if (auto refused = refuse_stale(state)) return *refused;
+    if (auto refused = detail::refuse_index(state.mesh(), index, "refine_around_tetrahedra")) return *refused;
+    return refine_with_state(state, index.locate(x, state.last_child()).element, x, h);
+}
+
+Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h) {
+    if (auto refused = refuse_arguments(mesh, h)) return *refused;
+    return refine_stateless(mesh, locate_tetrahedron(mesh, x, invalid_id), x, h);
+}
+
+Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h, const SpatialIndex& index) {
+    if (auto refused = refuse_arguments(mesh, h)) return *refused;
+    if (auto refused = detail::refuse_index(mesh, index, "refine_around_tetrahedra")) return *refused;
+    return refine_stateless(mesh, index.locate(x).element, x, h);
 }
 
 }  // namespace sxk

@@ -12,11 +12,13 @@
 //          |  /     \  |            |/    |    \|          halves all tetrahedra around its edge)
 //          +-----------+            +-----------+
 //
-// Lengths and point location use the reference positions. Point location is a visibility walk
-// through face neighbours with exact orient3d (started from the last bisection's children, so a
-// call costs what it refines, not the mesh size); a walk that reaches the boundary (x outside,
-// or a non-convex domain in the way) or takes too many steps falls back to testing every element.
-// The walk runs once per call; after that x is followed into the children of the planned splits.
+// Lengths and point location use the reference positions. Point location (sxk/locate.hpp): with
+// a SpatialIndex, its locate (a bounded walk from the last bisection's children, then the rtree:
+// O(log n)); without, locate_tetrahedron: a visibility walk through face neighbours with exact
+// orient3d from the last bisection's children (the stateless entry point: from the first
+// element, O(n^(1/3)) steps), and a test of every element when the walk reaches the boundary (x
+// outside, or a non-convex domain in the way) or takes too many steps. The location runs once
+// per call; after that x is followed into the children of the planned splits.
 //
 // Contract (refine_around_tetrahedra):
 //   Before: a valid tetrahedral mesh; x in the mesh (on its boundary counts); h > 0.
@@ -26,7 +28,9 @@
 //   bisected (0 when nothing needed refining).
 // Refusals (mesh and state untouched), reasons begin with "refine_around_tetrahedra: ":
 //   "the mesh has triangles, not tetrahedra"; "h = <h> is not positive" (also NaN);
-//   "point (x, y, z) is not in the mesh"; "the bisection state is stale: <why>"; a split refused
+//   "point (x, y, z) is not in the mesh"; "the bisection state is stale: <why>"; with an index,
+//   "the spatial index watches another mesh" and "the spatial index is over the deformed
+//   positions; refinement locates in the reference positions"; a split refused
 //   anywhere in the call (rounding, for absurdly small h or flat deformed elements: "...
 //   bisect_tetrahedron: split_edge: new element ... would be flat in the deformed positions",
 //   the state-less form without "bisect_tetrahedron: ").
@@ -38,16 +42,16 @@
 #include <cstddef>
 
 #include "sxk/config.hpp"
+#include "sxk/locate.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/tet_bisection.hpp"
 #include "sxk/outcome.hpp"
 
 namespace sxk {
 
-// The element of a tetrahedral mesh containing x (reference positions; closed elements, so a
-// point on a shared face may get either), walking from `start` (any element id; a dead or
-// invalid one starts at the first live element). invalid_id when x is in no element.
-SXK_API ElementId locate_tetrahedron(const Mesh& mesh, const Point& x, ElementId start);
+// locate_tetrahedron (closed elements, reference positions: a point on a shared face may get
+// either; walking from `start`, a dead or invalid one starting at the first live element) is
+// declared in sxk/locate.hpp.
 
 // Refines with an existing bisection state (its marking carries over between calls). With the
 // AMP rule (TetBisection::with_amp_marking) each bisection of the tetrahedron containing x is
@@ -63,5 +67,12 @@ SXK_API Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const
 // reference positions, computed when needed, so a call costs what it refines (no pass over the
 // mesh) and calls in a row give the same mesh as one TetBisection session would.
 SXK_API Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h);
+
+// Both, locating x with `index` (which must watch the state's mesh, or `mesh`, over the
+// reference positions) instead of the walk-then-scan.
+SXK_API Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h,
+                                                      const SpatialIndex& index);
+SXK_API Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h,
+                                                      const SpatialIndex& index);
 
 }  // namespace sxk

@@ -1,0 +1,189 @@
+// SpatialIndex: building the trees and keeping them in step with the mesh's events
+// (sxk/locate.hpp; the events are those of sxk/watcher.hpp, thesis §7.4).
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "locate_trees.hpp"
+#include "sxk/locate.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk {
+namespace {
+
+template <int D>
+void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    using Value = typename detail::BoxTree<D>::Value;
+    std::vector<Value> values;
+    values.reserve(mesh.element_count());
+    for (const ElementId t : elements(mesh)) values.emplace_back(detail::element_box<D>(mesh, t, positions), t);
+    detail::element_tree<D>(trees).load(values);
+    values.clear();
+    values.reserve(mesh.boundary_face_count());
+    mesh.for_each_boundary_face([&](FaceId f) { values.emplace_back(detail::face_box<D>(mesh, f, positions), f); });
+    detail::face_tree<D>(trees).load(values);
+}
+
+// Re-boxes the elements around the moved vertices and their boundary faces (a face's box
+// depends on its vertices only, so the boundary faces of those elements are all that can move).
+template <int D>
+void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const VertexId> vertices,
+                  Positions positions) {
+    std::vector<ElementId> around;
+    for (const VertexId v : vertices)
+        if (v < mesh.vertex_count() && mesh.vertex_element(v) != invalid_id)
+            collect_star(mesh, v, mesh.vertex_element(v), around);
+    detail::sort_unique(around);
+    detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
+    detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
+    for (const ElementId t : around) {
+        element_boxes.update(t, detail::element_box<D>(mesh, t, positions));
+        for (int i = 0; i < mesh.element_vertex_count(); ++i)
+            if (mesh.neighbor(t, i) == invalid_id) {
+                const FaceId f = mesh.face(t, i);
+                face_boxes.update(f, detail::face_box<D>(mesh, f, positions));
+            }
+    }
+}
+
+// The box `stored` holds the tight box `tight` (boxes are conservative, locate_trees.hpp).
+template <int D>
+bool covers(const typename detail::BoxTree<D>::Box& stored, const typename detail::BoxTree<D>::Box& tight) {
+    for (int k = 0; k < D; ++k)
+        if (detail::BoxTree<D>::corner(tight.min_corner(), k) < detail::BoxTree<D>::corner(stored.min_corner(), k) ||
+            detail::BoxTree<D>::corner(tight.max_corner(), k) > detail::BoxTree<D>::corner(stored.max_corner(), k))
+            return false;
+    return true;
+}
+
+// One tree against what it indexes: `items` are the ids that must be live with their tight boxes.
+template <int D>
+std::string check_tree(const detail::BoxTree<D>& boxes, const std::vector<std::uint32_t>& items,
+                       const std::function<typename detail::BoxTree<D>::Box(std::uint32_t)>& tight, const char* what) {
+    for (const std::uint32_t id : items) {
+        if (!boxes.is_live(id)) return std::string(what) + " " + std::to_string(id) + " is not indexed";
+        if (!covers<D>(boxes.boxes[id], tight(id)))
+            return std::string(what) + " " + std::to_string(id) + " has a stale box";
+    }
+    if (boxes.live_count != items.size())
+        return "the tree holds " + std::to_string(boxes.live_count) + " live boxes for " + std::to_string(items.size()) +
+               " " + what + "s";
+    std::size_t live = 0, retired = 0;
+    for (std::size_t id = 0; id < boxes.states.size(); ++id) {
+        live += boxes.states[id] == detail::BoxTree<D>::live;
+        retired += boxes.states[id] == detail::BoxTree<D>::retired;
+    }
+    if (live != boxes.live_count || retired != boxes.retired_count || boxes.tree.size() != live + retired)
+        return "the tree holds " + std::to_string(boxes.tree.size()) + " entries for " + std::to_string(live) +
+               " live and " + std::to_string(retired) + " retired ids";
+    // every entry is the one box its id has (no stale duplicate left behind by a removal)
+    for (const auto& value : boxes.tree)
+        if (value.second >= boxes.states.size() || boxes.states[value.second] == detail::BoxTree<D>::absent ||
+            !detail::bg::equals(boxes.boxes[value.second], value.first))
+            return "the tree holds a stale box of " + std::string(what) + " " + std::to_string(value.second);
+    return {};
+}
+
+template <int D>
+Outcome<Done> check(const SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    std::vector<std::uint32_t> live;
+    for (const ElementId t : elements(mesh)) live.push_back(t);
+    if (std::string problem = check_tree<D>(
+            detail::element_tree<D>(trees), live,
+            [&](std::uint32_t t) { return detail::element_box<D>(mesh, t, positions); }, "element");
+        !problem.empty())
+        return Refusal{RefusalCode::invalid_mesh, "spatial index: " + problem};
+    const std::vector<FaceId> boundary = mesh.boundary_faces();
+    if (std::string problem = check_tree<D>(
+            detail::face_tree<D>(trees), std::vector<std::uint32_t>(boundary.begin(), boundary.end()),
+            [&](std::uint32_t f) { return detail::face_box<D>(mesh, f, positions); }, "boundary face");
+        !problem.empty())
+        return Refusal{RefusalCode::invalid_mesh, "spatial index: " + problem};
+    return Done{};
+}
+
+bool writes(PositionSet which, Positions positions) {
+    return positions == Positions::reference ? writes_reference(which) : writes_deformed(which);
+}
+
+}  // namespace
+
+SpatialIndex::SpatialIndex(Mesh& mesh, const SpatialIndexOptions& options)
+    : m_mesh(&mesh), m_options(options), m_trees(std::make_unique<Trees>()) {
+    mesh.add_watcher(*this);
+}
+
+SpatialIndex::~SpatialIndex() { m_mesh->remove_watcher(*this); }
+
+double SpatialIndex::surface_tolerance() const {
+    if (m_options.surface_tolerance > 0) return m_options.surface_tolerance;
+    const auto& tree = m_trees->elements3.tree;
+    if (tree.empty()) return 0;
+    const auto bounds = tree.bounds();
+    const double diagonal = std::sqrt(detail::bg::comparable_distance(bounds.min_corner(), bounds.max_corner()));
+    return 1e-9 * diagonal;
+}
+
+std::size_t SpatialIndex::indexed_elements() const {
+    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::element_tree<decltype(d)::value>(*m_trees).live_count; });
+}
+
+std::size_t SpatialIndex::indexed_boundary_faces() const {
+    return detail::in_dimension(*m_mesh, [&](auto d) { return detail::face_tree<decltype(d)::value>(*m_trees).live_count; });
+}
+
+std::size_t SpatialIndex::memory_bytes() const {
+    return m_trees->elements2.memory_bytes() + m_trees->faces2.memory_bytes() + m_trees->elements3.memory_bytes() +
+           m_trees->faces3.memory_bytes();
+}
+
+Outcome<Done> SpatialIndex::validate() const {
+    return detail::in_dimension(*m_mesh, [&](auto d) { return check<decltype(d)::value>(*m_trees, *m_mesh, m_options.positions); });
+}
+
+void SpatialIndex::init(const Mesh& mesh) {
+    detail::in_dimension(mesh, [&](auto d) { build<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
+}
+
+// Each event touches its own id only: O(log n) per element or face of the edit. Removals come
+// before additions within one edit (watcher.hpp), so an id reused by the same edit is removed
+// with its old box first.
+void SpatialIndex::element_removed(const Mesh& mesh, ElementId element, const Simplex&) {
+    detail::in_dimension(mesh, [&](auto d) { detail::element_tree<decltype(d)::value>(*m_trees).erase(element); });
+}
+
+void SpatialIndex::element_changed(const Mesh& mesh, ElementId element, const Simplex&) {
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::element_tree<decltype(d)::value>(*m_trees).update(element, detail::element_box<decltype(d)::value>(mesh, element, m_options.positions));
+    });
+}
+
+void SpatialIndex::element_added(const Mesh& mesh, ElementId element) {
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::element_tree<decltype(d)::value>(*m_trees).insert(element, detail::element_box<decltype(d)::value>(mesh, element, m_options.positions));
+    });
+}
+
+void SpatialIndex::boundary_removed(const Mesh& mesh, FaceId face, const Simplex&) {
+    detail::in_dimension(mesh, [&](auto d) { detail::face_tree<decltype(d)::value>(*m_trees).erase(face); });
+}
+
+void SpatialIndex::boundary_changed(const Mesh& mesh, FaceId face, const Simplex&) {
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::face_tree<decltype(d)::value>(*m_trees).update(face, detail::face_box<decltype(d)::value>(mesh, face, m_options.positions));
+    });
+}
+
+void SpatialIndex::boundary_added(const Mesh& mesh, FaceId face) {
+    detail::in_dimension(mesh, [&](auto d) {
+        detail::face_tree<decltype(d)::value>(*m_trees).insert(face, detail::face_box<decltype(d)::value>(mesh, face, m_options.positions));
+    });
+}
+
+void SpatialIndex::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
+    if (!writes(which, m_options.positions)) return;
+    detail::in_dimension(mesh, [&](auto d) { rebox_around<decltype(d)::value>(*m_trees, mesh, vertices, m_options.positions); });
+}
+
+}  // namespace sxk
