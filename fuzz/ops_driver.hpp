@@ -7,14 +7,19 @@
 //   1. validate() is ok;
 //   2. a refused operation left the mesh bit for bit as it was: a full snapshot (positions as
 //      bit patterns, vertex anchors, every element slot with simplex, label and faces, every
-//      face slot with element and mate, the boundary, face labels, vertex attribute values)
+//      face slot with element and mate, the boundary, face labels, vertex and element attribute
+//      values)
 //      compares equal to the one taken before;
 //   3. after a successful operation every element is strictly positive by exact orientation in
 //      both the reference and the deformed positions (triangles in space: not degenerate);
 //   4. the vertex attribute "where", registered at the start as each vertex's reference
 //      position, still is (within rounding) the reference position of every vertex: splits
 //      interpolate attributes with the weights of the position, collapses to a point on the
-//      edge interpolate along the edge, dissect copies.
+//      edge interpolate along the edge, dissect copies;
+//   5. the element attribute "box", stamped at the start of each step with every element's
+//      reference bounding box, holds after a subdivision (splits, dissection, bisections,
+//      refine-around) every element: a child takes its parent's values (replace_elements'
+//      origins) and lies inside its parent.
 // A broken rule comes back as a non-empty message naming the step and the operation.
 #pragma once
 
@@ -129,6 +134,12 @@ inline Snapshot snapshot(const Mesh& mesh) {
             for (const double x : mesh.vertex_attribute(a, v))
                 s.attributes.push_back(std::bit_cast<std::uint64_t>(x));
     }
+    for (const AttributeId a : mesh.element_attributes()) {
+        s.attributes.push_back(a);
+        for (const ElementId t : elements(mesh))
+            for (const double x : mesh.element_attribute(a, t))
+                s.attributes.push_back(std::bit_cast<std::uint64_t>(x));
+    }
     return s;
 }
 
@@ -175,6 +186,49 @@ inline std::string check_where(const Mesh& mesh, VertexId from = 0) {
                 return "attribute \"where\" of vertex " + std::to_string(v) + " is " +
                        std::to_string(value[k]) + ", its reference position " +
                        std::to_string(mesh.reference(v)[k]) + " (coordinate " + std::to_string(k) + ")";
+    }
+    return {};
+}
+
+// The reference bounding box of element t: min x, y, z, then max x, y, z.
+inline std::array<double, 6> element_box(const Mesh& mesh, ElementId t) {
+    std::array<double, 6> box{};
+    const Simplex& tau = mesh.simplex(t);
+    for (int j = 0; j < tau.count(); ++j)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double x = mesh.reference(tau.vertex(j))[k];
+            box[k] = j == 0 ? x : std::min(box[k], x);
+            box[k + 3] = j == 0 ? x : std::max(box[k + 3], x);
+        }
+    return box;
+}
+
+// Sets "box" (registered by start_mesh) to each element's bounding box where it differs, with
+// the recorded setter (inside an EditJournal step the rollback puts the old values back).
+inline void stamp_boxes(Mesh& mesh) {
+    const AttributeId box = mesh.find_element_attribute("box");
+    if (box == invalid_id) return;
+    for (const ElementId t : elements(mesh)) {
+        const std::array<double, 6> now = element_box(mesh, t);
+        const auto held = mesh.element_attribute(box, t);
+        if (!std::equal(now.begin(), now.end(), held.begin())) (void)mesh.set_element_attribute(box, t, now);
+    }
+}
+
+// Empty, or the first element that does not lie in its "box" (within rounding).
+inline std::string check_boxes(const Mesh& mesh) {
+    const AttributeId box = mesh.find_element_attribute("box");
+    if (box == invalid_id) return {};
+    for (const ElementId t : elements(mesh)) {
+        const std::array<double, 6> now = element_box(mesh, t);
+        const auto held = mesh.element_attribute(box, t);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double slack = 1e-12 * (1 + std::abs(held[k]) + std::abs(held[k + 3]));
+            if (now[k] < held[k] - slack || now[k + 3] > held[k + 3] + slack)
+                return "element " + std::to_string(t) + " leaves the box it inherited along coordinate " +
+                       std::to_string(k) + ": [" + std::to_string(now[k]) + ", " + std::to_string(now[k + 3]) +
+                       "] in [" + std::to_string(held[k]) + ", " + std::to_string(held[k + 3]) + "]";
+        }
     }
     return {};
 }
@@ -288,6 +342,8 @@ inline Mesh start_mesh(Choices& choices, int grid = 3, int cube = 2) {
     }
     if (scaled) scale_deformed(mesh);
     add_where(mesh);
+    (void)mesh.add_element_attribute("box", 6);
+    stamp_boxes(mesh);
     // face labels on the boundary (Medit/Gmsh references): 10 + a choice mod 3, so that ops
     // must carry them (validate() checks each names a face of the mesh)
     for (const FaceId f : mesh.boundary_faces())
@@ -329,6 +385,7 @@ inline constexpr int operation_kinds = 15;
 // elements the operation returned or changed (validate() still runs on the whole mesh).
 inline Step run_step(Mesh& mesh, Choices& choices, std::size_t max_elements) {
     Step step;
+    stamp_boxes(mesh);
     const Snapshot before = snapshot(mesh);
     const std::size_t vertices_before = mesh.vertex_count();
     const int d = mesh.topological_dimension();
@@ -505,7 +562,12 @@ inline Step run_step(Mesh& mesh, Choices& choices, std::size_t max_elements) {
         step.finding = step.operation + " made " + bad;
         return step;
     }
-    if (std::string bad = check_where(mesh, kind == 8 ? 0 : static_cast<VertexId>(vertices_before)); !bad.empty())
+    if (std::string bad = check_where(mesh, kind == 8 ? 0 : static_cast<VertexId>(vertices_before)); !bad.empty()) {
+        step.finding = step.operation + ": " + bad;
+        return step;
+    }
+    const bool subdivision = kind == 4 || kind == 5 || kind == 6 || kind == 9 || kind == 12 || kind == 13;
+    if (std::string bad = subdivision ? check_boxes(mesh) : std::string(); !bad.empty())
         step.finding = step.operation + ": " + bad;
     return step;
 }

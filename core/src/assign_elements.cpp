@@ -260,6 +260,9 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
     m_free_element = invalid_id;
     m_free_face = invalid_id;
     m_element_count = n;
+    // every element is new: element attributes start at their defaults
+    for (detail::AttributeColumn& a : m_element_attributes) a.values.clear();
+    grow_element_attributes();
     for (Watcher* w : m_watchers) w->init(*this);
     return Done{};
 }
@@ -287,6 +290,7 @@ Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes
     m_boundary.clear();
     m_free_element = m_free_face = invalid_id;
     std::fill(m_vertex_element.begin(), m_vertex_element.end(), invalid_id);
+    for (detail::AttributeColumn& a : m_element_attributes) a.values.clear();  // allocate_element grows them
     for (std::size_t i = 0; i < simplexes.size(); ++i) {
         // thesis §7.3 add-element
         const ElementId t = allocate_element();

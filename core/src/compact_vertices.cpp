@@ -24,7 +24,7 @@ Outcome<std::vector<VertexId>> Mesh::compact_vertices() {
         m_reference[to] = m_reference[v];
         m_deformed[to] = m_deformed[v];
         m_vertex_element[to] = m_vertex_element[v];
-        for (VertexAttribute& a : m_attributes) {
+        for (detail::AttributeColumn& a : m_attributes) {
             const auto c = static_cast<std::size_t>(a.components);
             for (std::size_t i = 0; i < c; ++i) a.values[to * c + i] = a.values[v * c + i];
         }
@@ -32,7 +32,7 @@ Outcome<std::vector<VertexId>> Mesh::compact_vertices() {
     m_reference.resize(kept);
     m_deformed.resize(kept);
     m_vertex_element.resize(kept);
-    for (VertexAttribute& a : m_attributes) a.values.resize(kept * static_cast<std::size_t>(a.components));
+    for (detail::AttributeColumn& a : m_attributes) a.values.resize(kept * static_cast<std::size_t>(a.components));
     auto rename = [&](const Simplex& s) {
         std::array<VertexId, 4> vertices{};
         for (int j = 0; j < s.count(); ++j) vertices[static_cast<std::size_t>(j)] = renamed[s.vertex(j)];

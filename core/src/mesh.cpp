@@ -34,7 +34,8 @@ Mesh::Mesh(const Mesh& other)
       m_element_count(other.m_element_count),
       m_boundary(other.m_boundary),
       m_face_labels(other.m_face_labels),
-      m_attributes(other.m_attributes) {}
+      m_attributes(other.m_attributes),
+      m_element_attributes(other.m_element_attributes) {}
 
 Mesh& Mesh::operator=(const Mesh& other) {
     if (this != &other) {
@@ -60,7 +61,7 @@ VertexId Mesh::add_vertex(const Point& reference, const Point& deformed) {
     m_reference.push_back(reference);
     m_deformed.push_back(deformed);
     m_vertex_element.push_back(invalid_id);
-    for (VertexAttribute& a : m_attributes)
+    for (detail::AttributeColumn& a : m_attributes)
         a.values.insert(a.values.end(), a.default_value.begin(), a.default_value.end());
     return static_cast<VertexId>(m_reference.size() - 1);
 }
@@ -69,7 +70,7 @@ void Mesh::reserve(std::size_t vertices, std::size_t elements) {
     m_reference.reserve(vertices);
     m_deformed.reserve(vertices);
     m_vertex_element.reserve(vertices);
-    for (VertexAttribute& a : m_attributes)
+    for (detail::AttributeColumn& a : m_attributes)
         a.values.reserve(vertices * static_cast<std::size_t>(a.components));
     m_elements.reserve(elements);
     m_faces.reserve(elements * static_cast<std::size_t>(m_dimension + 1));
@@ -121,9 +122,11 @@ ElementId Mesh::allocate_element() {
         ++m_element_count;
         return t;
     }
-    // a fresh id needs no record: a rollback cuts the pool back to its size (note_pools)
+    // a fresh id needs no record: a rollback cuts the pool back to its size (note_pools); the
+    // element attributes keep their grown rows (they are at least the pool's size)
     m_elements.emplace_back();
     ++m_element_count;
+    if (!m_element_attributes.empty()) grow_element_attributes();
     return static_cast<ElementId>(m_elements.size() - 1);
 }
 
@@ -162,9 +165,11 @@ void Mesh::remove_watcher(Watcher& watcher) {
 }
 
 std::size_t Mesh::memory_bytes() const {
-    std::size_t attributes = m_attributes.capacity() * sizeof(VertexAttribute);
-    for (const VertexAttribute& a : m_attributes)
-        attributes += a.name.capacity() + (a.default_value.capacity() + a.values.capacity()) * sizeof(double);
+    std::size_t attributes =
+        (m_attributes.capacity() + m_element_attributes.capacity()) * sizeof(detail::AttributeColumn);
+    for (const auto* table : {&m_attributes, &m_element_attributes})
+        for (const detail::AttributeColumn& a : *table)
+            attributes += a.name.capacity() + (a.default_value.capacity() + a.values.capacity()) * sizeof(double);
     return attributes + m_reference.capacity() * sizeof(Point) + m_deformed.capacity() * sizeof(Point) +
            m_vertex_element.capacity() * sizeof(ElementId) +
            m_elements.capacity() * sizeof(ElementRecord) + m_faces.capacity() * sizeof(FaceRecord) +

@@ -205,8 +205,9 @@ class ProvenEdit {
 public:
     static Outcome<std::vector<ElementId>> replace(Mesh& mesh, std::span<const ElementId> old_elements,
                                                    std::span<const Simplex> new_simplexes,
-                                                   std::span<const int> labels) {
-        return mesh.replace_elements(old_elements, new_simplexes, labels, Mesh::StarChecksProof{});
+                                                   std::span<const int> labels,
+                                                   std::span<const std::uint32_t> origins = {}) {
+        return mesh.replace_elements(old_elements, new_simplexes, labels, origins, Mesh::StarChecksProof{});
     }
 };
 

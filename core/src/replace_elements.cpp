@@ -14,6 +14,7 @@
 #include "edit_log.hpp"
 #include "mesh_checks.hpp"
 #include "sxk/mesh.hpp"
+#include "undo_log.hpp"
 
 namespace sxk {
 
@@ -258,19 +259,22 @@ bool Mesh::has_face_outside(const Simplex& sigma, std::span<const ElementId> exc
 
 Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId> old_elements,
                                                        std::span<const Simplex> new_simplexes,
-                                                       std::span<const int> labels) {
-    return replace_elements_impl(old_elements, new_simplexes, labels, false);
+                                                       std::span<const int> labels,
+                                                       std::span<const std::uint32_t> origins) {
+    return replace_elements_impl(old_elements, new_simplexes, labels, origins, false);
 }
 
 Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId> old_elements,
                                                        std::span<const Simplex> new_simplexes,
-                                                       std::span<const int> labels, StarChecksProof) {
-    return replace_elements_impl(old_elements, new_simplexes, labels, true);
+                                                       std::span<const int> labels,
+                                                       std::span<const std::uint32_t> origins, StarChecksProof) {
+    return replace_elements_impl(old_elements, new_simplexes, labels, origins, true);
 }
 
 Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const ElementId> old_elements,
                                                             std::span<const Simplex> new_simplexes,
                                                             std::span<const int> labels,
+                                                            std::span<const std::uint32_t> origins,
                                                             bool proven) {
     const int k = m_dimension + 1;
     const std::size_t uk = static_cast<std::size_t>(k);
@@ -291,6 +295,17 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
         return Refusal{RefusalCode::bad_argument,
                        "got " + std::to_string(labels.size()) + " labels for " +
                        std::to_string(m) + " new elements"};
+    if (!origins.empty() && origins.size() != m)
+        return Refusal{RefusalCode::bad_argument,
+                       "got " + std::to_string(origins.size()) + " origins for " + std::to_string(m) +
+                           " new elements"};
+    for (std::size_t i = 0; i < origins.size(); ++i)
+        if (origins[i] >= old_elements.size())
+            return Refusal{RefusalCode::bad_argument,
+                           "origin " + std::to_string(origins[i]) + " of new element " + std::to_string(i) +
+                               " is not an index into the " + std::to_string(old_elements.size()) +
+                               " old elements",
+                           i};
     for (std::size_t i = 0; i < m; ++i)
         if (std::string why = check_simplex(new_simplexes[i], k, vertex_count()); !why.empty())
             return Refusal{RefusalCode::bad_argument, std::move(why), i};
@@ -417,7 +432,23 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
     note_pools();
     ++m_revision;
     detail::EditLog log(!m_watchers.empty());
-    const int default_label = old_elements.empty() ? 0 : m_elements[old_elements[0]].label;
+    // what each new element inherits from its origin, read before the old elements go (a new
+    // element may take the id, and so the attribute rows, of an old one)
+    auto origin_of = [&](std::size_t i) -> std::size_t { return origins.empty() ? 0 : origins[i]; };
+    detail::SmallVector<int, small_edit> new_labels;
+    for (std::size_t i = 0; i < m; ++i)
+        new_labels.push_back(!labels.empty()        ? labels[i]
+                             : old_elements.empty() ? 0
+                                                    : m_elements[old_elements[origin_of(i)]].label);
+    detail::SmallVector<double, 4 * small_edit> inherited;  // per new element, every attribute's value
+    std::size_t inherited_width = 0;
+    for (const detail::AttributeColumn& a : m_element_attributes)
+        inherited_width += static_cast<std::size_t>(a.components);
+    if (inherited_width != 0 && !old_elements.empty())
+        for (std::size_t i = 0; i < m; ++i)
+            for (AttributeId a = 0; a < m_element_attributes.size(); ++a)
+                if (m_element_attributes[a].components > 0)
+                    for (double x : element_attribute(a, old_elements[origin_of(i)])) inherited.push_back(x);
 
     // vertices whose anchor may die, and surviving elements next to the old ones; the
     // neighbours are only needed for a vertex that is in no new element (repair_anchors gives
@@ -490,13 +521,29 @@ Outcome<std::vector<ElementId>> Mesh::replace_elements_impl(std::span<const Elem
         created[i] = t;
         ElementRecord& e = element_for_write(t);
         e.simplex = new_simplexes[i];
-        e.label = labels.empty() ? default_label : labels[i];
+        e.label = new_labels[i];
         for (int j = 0; j < k; ++j) {
             const NewFace& nf = new_faces[i * uk + static_cast<std::size_t>(j)];
             e.faces[static_cast<std::size_t>(j)] = nf.face;
             if (nf.face != invalid_id) face_for_write(nf.face).element = t;
         }
         log.element_added(t);
+    }
+    if (inherited_width != 0) {
+        // recorded like every store, so that a rollback puts back the rows of reused ids
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < m; ++i)
+            for (AttributeId a = 0; a < m_element_attributes.size(); ++a) {
+                if (m_element_attributes[a].components == 0) continue;
+                const std::span<double> row = element_attribute(a, created[i]);
+                if (m_undo != nullptr) m_undo->element_attribute(*this, a, created[i]);
+                if (old_elements.empty())
+                    std::copy(m_element_attributes[a].default_value.begin(),
+                              m_element_attributes[a].default_value.end(), row.begin());
+                else
+                    std::copy_n(inherited.begin() + at, row.size(), row.begin());
+                at += row.size();
+            }
     }
     for (std::size_t i = 0; i < m; ++i) {
         const ElementId t = created[i];

@@ -43,11 +43,17 @@ void UndoLog::attribute(const Mesh& mesh, AttributeId a, VertexId v) {
     m_values.insert(m_values.end(), value.begin(), value.end());
 }
 
+void UndoLog::element_attribute(const Mesh& mesh, AttributeId a, ElementId t) {
+    const std::span<const double> value = mesh.element_attribute(a, t);
+    m_entries.emplace_back(ElementAttributeWas{a, t, m_values.size()});
+    m_values.insert(m_values.end(), value.begin(), value.end());
+}
+
 void UndoLog::vertex_removed(const Mesh& mesh) {
     const auto v = static_cast<VertexId>(mesh.vertex_count() - 1);
     m_entries.emplace_back(VertexRemoved{mesh.m_reference[v], mesh.m_deformed[v], mesh.m_vertex_element[v],
                                          m_values.size()});
-    for (const Mesh::VertexAttribute& a : mesh.m_attributes) {
+    for (const detail::AttributeColumn& a : mesh.m_attributes) {
         const auto n = static_cast<std::size_t>(a.components);
         m_values.insert(m_values.end(), a.values.begin() + static_cast<std::ptrdiff_t>(v * n),
                         a.values.begin() + static_cast<std::ptrdiff_t>((v + 1) * n));
@@ -156,12 +162,17 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
                     const std::span<double> value = mesh.vertex_attribute(entry.attribute, entry.vertex);
                     std::copy_n(m_values.begin() + static_cast<std::ptrdiff_t>(entry.offset), value.size(),
                                 value.begin());
+                } else if constexpr (std::is_same_v<E, ElementAttributeWas>) {
+                    if (inverse) inverse->element_attribute(mesh, entry.attribute, entry.element);
+                    const std::span<double> value = mesh.element_attribute(entry.attribute, entry.element);
+                    std::copy_n(m_values.begin() + static_cast<std::ptrdiff_t>(entry.offset), value.size(),
+                                value.begin());
                 } else if constexpr (std::is_same_v<E, VertexAdded>) {
                     if (inverse) inverse->vertex_removed(mesh);
                     mesh.m_reference.pop_back();
                     mesh.m_deformed.pop_back();
                     mesh.m_vertex_element.pop_back();
-                    for (Mesh::VertexAttribute& a : mesh.m_attributes)
+                    for (detail::AttributeColumn& a : mesh.m_attributes)
                         a.values.resize(a.values.size() - static_cast<std::size_t>(a.components));
                 } else if constexpr (std::is_same_v<E, VertexRemoved>) {
                     if (inverse) inverse->vertex_added();
@@ -169,7 +180,7 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
                     mesh.m_deformed.push_back(entry.deformed);
                     mesh.m_vertex_element.push_back(entry.anchor);
                     std::size_t at = entry.offset;
-                    for (Mesh::VertexAttribute& a : mesh.m_attributes) {
+                    for (detail::AttributeColumn& a : mesh.m_attributes) {
                         const auto n = static_cast<std::size_t>(a.components);
                         a.values.insert(a.values.end(), m_values.begin() + static_cast<std::ptrdiff_t>(at),
                                         m_values.begin() + static_cast<std::ptrdiff_t>(at + n));

@@ -1,7 +1,8 @@
 // The record an EditJournal step keeps: what every store into the mesh overwrote, in order.
 //
 // The mesh calls note_* (mesh.hpp, private) before each store into its element and face pools,
-// vertex anchors, boundary map, positions, labels and attribute values while a step is open,
+// vertex anchors, boundary map, positions, labels and vertex and element attribute values while
+// a step is open,
 // and note_pools at the start of every edit (free lists, counts, pool sizes). Undoing is
 // replaying the record backwards, each entry putting back what it saved. Because the storage is
 // put back slot for slot, every id that was valid at the checkpoint names the same object
@@ -66,6 +67,11 @@ public:
         VertexId vertex;
         std::size_t offset;
     };
+    struct ElementAttributeWas {  // the value is values()[offset, offset + components)
+        AttributeId attribute;
+        ElementId element;
+        std::size_t offset;
+    };
     struct VertexAdded {};
     struct VertexRemoved {  // the last vertex; its attribute values at values()[offset...)
         Point reference;
@@ -75,7 +81,7 @@ public:
     };
     using Entry = std::variant<ElementWas, FaceWas, AnchorWas, PoolsWere, BoundaryInserted,
                                BoundaryErased, PositionWas, FaceLabelWas, AttributeWas,
-                               VertexAdded, VertexRemoved>;
+                               ElementAttributeWas, VertexAdded, VertexRemoved>;
 
     std::size_t size() const { return m_entries.size(); }
     bool empty() const { return m_entries.empty(); }
@@ -98,6 +104,7 @@ public:
     }
     void face_label(const Mesh& mesh, const Simplex& key);
     void attribute(const Mesh& mesh, AttributeId a, VertexId v);
+    void element_attribute(const Mesh& mesh, AttributeId a, ElementId t);
     void vertex_added() { m_entries.emplace_back(VertexAdded{}); }
     void vertex_removed(const Mesh& mesh);  // call before the last vertex goes
 

@@ -2,6 +2,7 @@
 // vertex stars. Messages name the invariant first so that tools and tests can match on it.
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "mesh_checks.hpp"
@@ -44,6 +45,16 @@ Outcome<Done> check_orientation(const Mesh& mesh, bool flat_is_invalid) {
 Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
     const int k = m_dimension + 1;
     const std::size_t uk = static_cast<std::size_t>(k);
+
+    // attributes: a row for every vertex, and for every id of the element pool
+    for (const auto& [table, rows, kind] :
+         {std::tuple{&m_attributes, vertex_count(), "vertex"}, std::tuple{&m_element_attributes, m_elements.size(), "element"}})
+        for (const detail::AttributeColumn& a : *table)
+            if (a.components > 0 && a.values.size() < rows * static_cast<std::size_t>(a.components))
+                return Refusal{RefusalCode::invalid_mesh, std::string(kind) + " attribute \"" + a.name + "\" has " +
+                                                              std::to_string(a.values.size()) + " values for " +
+                                                              std::to_string(rows) + " rows of " +
+                                                              std::to_string(a.components)};
 
     // elements: well-formed simplexes whose faces point back at them (7.1, 7.2)
     std::size_t live_elements = 0;

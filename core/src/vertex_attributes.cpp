@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "attribute_table.hpp"
 #include "sxk/mesh.hpp"
 #include "undo_log.hpp"
 
@@ -41,7 +42,7 @@ Outcome<VertexId> Mesh::add_interpolated_vertex(std::span<const VertexId> parent
     m_reference.push_back(reference);
     m_deformed.push_back(deformed);
     m_vertex_element.push_back(invalid_id);
-    for (VertexAttribute& a : m_attributes) {
+    for (detail::AttributeColumn& a : m_attributes) {
         if (a.components == 0) continue;
         const auto n = static_cast<std::size_t>(a.components);
         // values of the new vertex are computed before appending (the vector may move)
@@ -69,7 +70,7 @@ Outcome<Done> Mesh::remove_last_vertex() {
     m_reference.pop_back();
     m_deformed.pop_back();
     m_vertex_element.pop_back();
-    for (VertexAttribute& a : m_attributes)
+    for (detail::AttributeColumn& a : m_attributes)
         a.values.resize(a.values.size() - static_cast<std::size_t>(a.components));
     return Done{};
 }
@@ -79,78 +80,38 @@ Outcome<AttributeId> Mesh::add_vertex_attribute(std::string name, int components
     if (m_undo != nullptr)
         return Refusal{RefusalCode::not_applicable,
                        "add_vertex_attribute: not inside an EditJournal step"};
-    if (name.empty())
-        return Refusal{RefusalCode::bad_argument, "add_vertex_attribute: the name is empty"};
-    if (find_vertex_attribute(name) != invalid_id)
-        return Refusal{RefusalCode::not_applicable,
-                       "add_vertex_attribute: an attribute called \"" + name + "\" exists"};
-    if (components < 1)
-        return Refusal{RefusalCode::bad_argument,
-                       "add_vertex_attribute: \"" + name + "\" needs at least one component, not " +
-                       std::to_string(components)};
-    const auto n = static_cast<std::size_t>(components);
-    if (!default_value.empty() && default_value.size() != n)
-        return Refusal{RefusalCode::bad_argument,
-                       "add_vertex_attribute: \"" + name + "\" has " + std::to_string(n) +
-                       " components but a default value of " + std::to_string(default_value.size())};
-    VertexAttribute attribute;
-    attribute.name = std::move(name);
-    attribute.components = components;
-    attribute.default_value.assign(n, 0.0);
-    std::copy(default_value.begin(), default_value.end(), attribute.default_value.begin());
-    attribute.values.reserve(vertex_count() * n);
-    for (std::size_t v = 0; v < vertex_count(); ++v)
-        attribute.values.insert(attribute.values.end(), attribute.default_value.begin(),
-                                attribute.default_value.end());
-    m_attributes.push_back(std::move(attribute));
-    return static_cast<AttributeId>(m_attributes.size() - 1);
+    auto added = detail::add_attribute(m_attributes, "add_vertex_attribute", std::move(name), components,
+                                       default_value, vertex_count());
+    if (added) ++m_revision;  // a recorded vertex removal would not restore the new column
+    return added;
 }
 
 AttributeId Mesh::find_vertex_attribute(std::string_view name) const {
-    for (std::size_t i = 0; i < m_attributes.size(); ++i)
-        if (m_attributes[i].components > 0 && m_attributes[i].name == name)
-            return static_cast<AttributeId>(i);
-    return invalid_id;
+    return detail::find_attribute(m_attributes, name);
 }
 
 Outcome<Done> Mesh::remove_vertex_attribute(AttributeId attribute) {
     if (m_undo != nullptr)
         return Refusal{RefusalCode::not_applicable,
                        "remove_vertex_attribute: not inside an EditJournal step"};
-    if (!is_vertex_attribute(attribute))
-        return Refusal{RefusalCode::not_found,
-                       "remove_vertex_attribute: " + std::to_string(attribute) +
-                       " is not a vertex attribute"};
-    // the slot stays, empty, so that other ids keep their meaning
-    m_attributes[attribute] = VertexAttribute{};
-    return Done{};
+    auto removed = detail::remove_attribute(m_attributes, attribute, "remove_vertex_attribute", "a vertex attribute");
+    if (removed) ++m_revision;
+    return removed;
 }
 
 Outcome<Done> Mesh::set_vertex_attribute(AttributeId attribute, VertexId v, std::span<const double> value) {
-    if (!is_vertex_attribute(attribute))
-        return Refusal{RefusalCode::not_found, "set_vertex_attribute: " +
-                                                   std::to_string(attribute) +
-                                                   " is not a vertex attribute"};
+    if (auto refused = detail::refuse_value(m_attributes, attribute, value, "set_vertex_attribute",
+                                            "a vertex attribute"))
+        return *refused;
     if (v >= vertex_count())
         return Refusal{RefusalCode::not_found,
                        "set_vertex_attribute: vertex " + std::to_string(v) + " does not exist"};
-    const std::span<double> held = vertex_attribute(attribute, v);
-    if (value.size() != held.size())
-        return Refusal{RefusalCode::bad_argument,
-                       "set_vertex_attribute: \"" + m_attributes[attribute].name + "\" has " +
-                           std::to_string(held.size()) + " components, not " +
-                           std::to_string(value.size())};
     if (m_undo != nullptr) m_undo->attribute(*this, attribute, v);
     ++m_revision;
-    std::copy(value.begin(), value.end(), held.begin());
+    std::copy(value.begin(), value.end(), vertex_attribute(attribute, v).begin());
     return Done{};
 }
 
-std::vector<AttributeId> Mesh::vertex_attributes() const {
-    std::vector<AttributeId> live;
-    for (std::size_t i = 0; i < m_attributes.size(); ++i)
-        if (m_attributes[i].components > 0) live.push_back(static_cast<AttributeId>(i));
-    return live;
-}
+std::vector<AttributeId> Mesh::vertex_attributes() const { return detail::live_attributes(m_attributes); }
 
 }  // namespace sxk

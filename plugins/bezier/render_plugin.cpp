@@ -30,6 +30,7 @@
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
 #include "sxk/io.hpp"
+#include "sxk/ops/dissect.hpp"
 #include "triangular_patch.hpp"
 #include "vector3.hpp"
 
@@ -229,8 +230,9 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
         ->check(CLI::IsMember({"quality", "label", "plain"}));
     int cut_label = 0;
     app.add_option("--cut-label", cut_label,
-                   "Meshes: boundary faces with this face label are drawn as cut faces too (cut "
-                   "faces are otherwise found as boundary faces that coincide)")
+                   "Meshes: boundary faces with this face label are drawn as cut faces too (default: "
+                   "9999, the label dissection gives the faces it opens; cut faces are also found as "
+                   "boundary faces that coincide)")
         ->check(whole_number("LABEL"));
     app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
     if (with_input)
@@ -435,7 +437,8 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
 
 Drawing mesh_drawing(const Mesh& mesh, const CommandOptions& options) {
     MeshSurfaceOptions surface_options;
-    surface_options.cut_label = options.cut_label;
+    // without --cut-label the label dissect gives the faces it opens (sxk/ops/dissect.hpp)
+    surface_options.cut_label = options.cut_label.value_or(default_cut_label);
     MeshSurface surface = mesh_surface(mesh, surface_options);
     nlohmann::ordered_json facts;
     facts["kind"] = "mesh";

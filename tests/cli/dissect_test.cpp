@@ -27,7 +27,7 @@ TEST(SxkDissect, CutsTwoTetrahedraApart) {
     DissectFixture f;
     const ProcessResult run = f.run("# the shared triangle, seen from the second tetrahedron\n3 2 1\n\n");
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 components\n");
+    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 boundary faces on the cut, 2 components\n");
     EXPECT_EQ(run.err, "");
     const ProcessResult info = sxk({"info", f.out.string(), "--json"});
     ASSERT_EQ(info.exit_code, 0) << info.err;
@@ -36,6 +36,27 @@ TEST(SxkDissect, CutsTwoTetrahedraApart) {
     EXPECT_EQ(json["components"], 2);
     EXPECT_EQ(json["boundary_faces"], 8);
     EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+}
+
+// The two triangles the cut makes are written with the cut label (Medit "Triangles" section:
+// vertices 1-based, then the reference), beside the file's own labelled triangle; --cut-label
+// picks the label, --no-cut-label leaves them unlabelled.
+TEST(SxkDissect, TheCutFacesAreWrittenWithTheCutLabel) {
+    DissectFixture f;
+    write_file(f.faces, "1 2 3\n");
+    auto triangles_of = [&](const std::vector<std::string>& extra) {
+        std::vector<std::string> args{"dissect", f.mesh.string(), f.out.string(), "--faces", f.faces.string()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const ProcessResult run = sxk(args);
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        const std::string text = slurp(f.out);
+        const auto at = text.find("Triangles");
+        return at == std::string::npos ? std::string() : text.substr(at, text.find("\n\n", at) - at);
+    };
+    // the second tetrahedron got the copies 6, 7, 8 of 2, 3, 4; its side is seen from there
+    EXPECT_EQ(triangles_of({}), "Triangles\n3\n2 1 3 7\n2 3 4 9999\n7 6 8 9999");
+    EXPECT_EQ(triangles_of({"--cut-label", "5"}), "Triangles\n3\n2 1 3 7\n2 3 4 5\n7 6 8 5");
+    EXPECT_EQ(triangles_of({"--no-cut-label"}), "Triangles\n1\n2 1 3 7");
 }
 
 TEST(SxkDissect, NotAVertexId) {
@@ -110,7 +131,7 @@ TEST(SxkDissect, FaceFileWithAByteOrderMark) {
     DissectFixture f;
     const ProcessResult run = f.run("\xEF\xBB\xBF" "1 2 3\n");
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 components\n");
+    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 boundary faces on the cut, 2 components\n");
 }
 
 // A FIFO (a shell's --faces <(...)) is read, up to the bound every input has (max_input_bytes).
@@ -123,7 +144,7 @@ TEST(SxkDissect, FaceListFromAFifo) {
         run = sxk({"dissect", f.mesh.string(), f.out.string(), "--faces", fifo.string()});
     }
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 components\n");
+    EXPECT_EQ(run.out, f.mesh.string() + " -> " + f.out.string() + ": 1 cut faces, 3 new vertices, 2 boundary faces on the cut, 2 components\n");
 }
 
 TEST(SxkDissect, FacesOptionIsRequired) {

@@ -205,6 +205,18 @@ TEST(SxkRender, CutLabel) {
                    "sxk: render: --cut-label needs a mesh; " + teapot + " holds patches\n" + hint);
 }
 
+// Without --cut-label the label dissection gives the faces it opens (9999) marks cut faces: the
+// fixture with its labelled triangle relabelled 9999 shows one cut triangle, no coincidence needed.
+TEST(SxkRender, TheDissectionCutLabelIsTheDefault) {
+    RenderFixture f;
+    std::string text = two_tetrahedra_mesh;
+    text.replace(text.find("1 2 3 7"), 7, "1 2 3 9999");
+    const fs::path in = f.input("marked.mesh", text);
+    const ProcessResult run = f.run(in.string(), {"--size", "16x12", "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["cut_triangles"], 1);
+}
+
 TEST(SxkRender, PlanarTriangleMesh) {
     RenderFixture f;
     const fs::path in = f.input("square.mesh", unit_square_mesh);

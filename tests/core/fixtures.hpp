@@ -102,6 +102,19 @@ inline void expect_same_state(const Mesh& a, const Mesh& b) {
     }
     EXPECT_EQ(a.boundary_faces(), b.boundary_faces());
     EXPECT_EQ(a.face_labels(), b.face_labels());
+    ASSERT_EQ(a.vertex_attributes(), b.vertex_attributes());
+    for (const AttributeId x : a.vertex_attributes())
+        for (VertexId v = 0; v < a.vertex_count(); ++v) {
+            const auto p = a.vertex_attribute(x, v), q = b.vertex_attribute(x, v);
+            EXPECT_TRUE(std::equal(p.begin(), p.end(), q.begin(), q.end())) << "vertex attribute " << x << " at " << v;
+        }
+    ASSERT_EQ(a.element_attributes(), b.element_attributes());
+    for (const AttributeId x : a.element_attributes())
+        for (ElementId t = 0; t < a.element_capacity(); ++t) {
+            if (!a.is_element(t)) continue;
+            const auto p = a.element_attribute(x, t), q = b.element_attribute(x, t);
+            EXPECT_TRUE(std::equal(p.begin(), p.end(), q.begin(), q.end())) << "element attribute " << x << " at " << t;
+        }
 }
 
 }  // namespace sxk::test

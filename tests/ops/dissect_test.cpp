@@ -6,9 +6,14 @@
 #include <set>
 #include <vector>
 
+#include <filesystem>
+
 #include "core/fixtures.hpp"
 #include "sxk/components.hpp"
+#include "sxk/io.hpp"
 #include "sxk/ops/dissect.hpp"
+#include "sxk/ops/split_edge.hpp"
+#include "sxk/ops/split_face.hpp"
 
 namespace sxk {
 namespace {
@@ -219,5 +224,92 @@ TEST(Dissect, FaceLabelsFollowTheCopies) {
     EXPECT_EQ(mesh.face_labels(), (FaceLabels{{Simplex(+1, {0, 2}), 8}, {Simplex(+1, {4, 5}), 8},
                                               {Simplex(+1, {3, 5}), 9}, {Simplex(+1, {1, 2}), 7}}));
 }
+
+// The cut mark: the faces a dissection opens carry default_cut_label (both sides), are listed in
+// `opened`, keep the label through a later split of one of them and are in a Medit file.
+TEST(Dissect, OpenedFacesCarryTheCutLabelThroughLaterEditsAndFiles) {
+    Mesh mesh = test::planar_grid(4);
+    std::vector<Simplex> cut;
+    for (VertexId j = 0; j < 4; ++j) cut.push_back(Simplex(+1, {2 + 5 * j, 2 + 5 * (j + 1)}));
+    const std::vector<FaceId> boundary_before = mesh.boundary_faces();
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    ASSERT_EQ(result->opened.size(), 8u);
+    EXPECT_TRUE(std::is_sorted(result->opened.begin(), result->opened.end()));
+    FaceLabels expected;
+    for (const FaceId f : result->opened) {
+        EXPECT_EQ(mesh.mate(f), invalid_id);
+        EXPECT_FALSE(std::binary_search(boundary_before.begin(), boundary_before.end(), f));
+        expected[Simplex(+1, mesh.face_simplex(f).vertices())] = default_cut_label;
+    }
+    EXPECT_EQ(expected.size(), 8u);  // the two sides have different vertex sets
+    EXPECT_EQ(mesh.face_labels(), expected);
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+
+    // splitting an opened edge passes the mark to both halves
+    const Simplex first = mesh.face_simplex(result->opened[0]);
+    const auto split = split_edge(mesh, first.vertex(0), first.vertex(1));
+    ASSERT_TRUE(split.ok()) << split.reason();
+    EXPECT_FALSE(mesh.face_label(first));
+    EXPECT_EQ(mesh.face_label(Simplex(+1, {first.vertex(0), split->vertex})), default_cut_label);
+    EXPECT_EQ(mesh.face_label(Simplex(+1, {first.vertex(1), split->vertex})), default_cut_label);
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+
+    const std::filesystem::path file = std::filesystem::path(SXK_BINARY_DIR) / "dissect-cut-label.mesh";
+    write_mesh(mesh, file);
+    const Mesh back = read_mesh(file);
+    EXPECT_EQ(back.face_labels(), mesh.face_labels());
+    std::filesystem::remove(file);
+}
+
+TEST(Dissect, ALabelledCutFaceKeepsItsLabelAndTheMarkCanBeLeftOut) {
+    Mesh labelled = test::unit_square();
+    labelled.face_labels()[Simplex(+1, {0, 2})] = 8;
+    const std::vector<Simplex> cut{Simplex(+1, {0, 2})};
+    const auto kept = dissect(labelled, cut);
+    ASSERT_TRUE(kept.ok()) << kept.reason();
+    EXPECT_EQ(kept->opened.size(), 2u);
+    EXPECT_EQ(labelled.face_labels(), (FaceLabels{{Simplex(+1, {0, 2}), 8}, {Simplex(+1, {4, 5}), 8}}));
+
+    Mesh other = test::unit_square();
+    const auto custom = dissect(other, cut, DissectOptions{42});
+    ASSERT_TRUE(custom.ok()) << custom.reason();
+    EXPECT_EQ(other.face_labels(), (FaceLabels{{Simplex(+1, {0, 2}), 42}, {Simplex(+1, {4, 5}), 42}}));
+
+    Mesh plain = test::unit_square();
+    const auto unmarked = dissect(plain, cut, DissectOptions{std::nullopt});
+    ASSERT_TRUE(unmarked.ok()) << unmarked.reason();
+    EXPECT_EQ(unmarked->opened.size(), 2u);
+    EXPECT_TRUE(plain.face_labels().empty());
+    ASSERT_TRUE(plain.validate().ok());
+}
+
+// 3D: the 8 triangles of the plane x = 1 open into 16 marked boundary faces, and a split of a
+// marked triangle marks its two pieces.
+TEST(Dissect, KuhnCubeCutFacesAreMarkedOnBothSides) {
+    Mesh mesh = test::kuhn_cube(2);
+    std::vector<Simplex> cut;
+    for (ElementId t : elements(mesh))
+        for (int j = 0; j < 4; ++j) {
+            const Simplex sigma = mesh.simplex(t).subn(j);
+            bool on_plane = true;
+            for (VertexId v : sigma.vertices()) on_plane = on_plane && mesh.reference(v)[0] == 1.0;
+            if (on_plane) cut.push_back(sigma);
+        }
+    const auto result = dissect(mesh, cut);
+    ASSERT_TRUE(result.ok()) << result.reason();
+    EXPECT_EQ(result->opened.size(), 16u);
+    EXPECT_EQ(mesh.face_labels().size(), 16u);
+    for (const FaceId f : result->opened)
+        EXPECT_EQ(mesh.face_label(mesh.face_simplex(f)), default_cut_label);
+    const Simplex marked = mesh.face_simplex(result->opened.back());
+    const std::array<double, 3> middle{1, 1, 1};
+    const auto split = split_face(mesh, result->opened.back(), middle);
+    ASSERT_TRUE(split.ok()) << split.reason();
+    EXPECT_FALSE(mesh.face_label(marked));
+    EXPECT_EQ(mesh.face_labels().size(), 18u);  // one marked triangle became three
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
 }  // namespace
 }  // namespace sxk

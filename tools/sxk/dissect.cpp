@@ -17,10 +17,12 @@
 namespace sxk::cli {
 namespace {
 
-struct DissectOptions {
+struct DissectCommand {
     std::string input;
     std::string output;
     std::string faces;
+    int cut_label = default_cut_label;
+    bool no_cut_label = false;
 };
 
 struct FaceList {
@@ -54,7 +56,7 @@ std::optional<FaceList> read_faces(Context& context, const std::string& file, co
     return list;
 }
 
-int run_dissect(Context& context, const DissectOptions& options) {
+int run_dissect(Context& context, const DissectCommand& options) {
     if (!format_from_extension(options.output)) {
         context.err << "sxk: " << options.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
         return exit_usage;
@@ -67,7 +69,10 @@ int run_dissect(Context& context, const DissectOptions& options) {
     Outcome<DissectResult> result = DissectResult{};
     {
         Progress progress("dissecting " + options.input);
-        result = dissect(*mesh, list->faces);
+        DissectOptions dissecting;
+        if (options.no_cut_label) dissecting.cut_label.reset();
+        else dissecting.cut_label = options.cut_label;
+        result = dissect(*mesh, list->faces, dissecting);
     }
     if (!result.ok()) {
         const std::size_t item = result.refusal().item;
@@ -80,7 +85,8 @@ int run_dissect(Context& context, const DissectOptions& options) {
     }
     if (!save_mesh(context, *mesh, options.output)) return exit_refused;
     context.out << options.input << " -> " << options.output << ": " << list->faces.size() << " cut faces, "
-                << result->new_vertices.size() << " new vertices, " << connected_components(*mesh).count
+                << result->new_vertices.size() << " new vertices, " << result->opened.size()
+                << " boundary faces on the cut, " << connected_components(*mesh).count
                 << " components\n";
     return exit_success;
 }
@@ -88,7 +94,7 @@ int run_dissect(Context& context, const DissectOptions& options) {
 }  // namespace
 
 void add_dissect_command(CLI::App& app, Context& context) {
-    auto options = std::make_shared<DissectOptions>();
+    auto options = std::make_shared<DissectCommand>();
     CLI::App* command = app.add_subcommand(
         "dissect", "Open the mesh along a list of faces, splitting vertices by (v,C)-connected components");
     command->add_option("IN", options->input, "Input mesh file")->required();
@@ -96,6 +102,11 @@ void add_dissect_command(CLI::App& app, Context& context) {
     command->add_option("--faces", options->faces,
                         "Text file: one face per line, 0-based vertex ids of the mesh, '#' comments")
         ->required();
+    command->add_option("--cut-label", options->cut_label,
+                        "Face label of the boundary faces the cut makes (those without a label of their own), "
+                        "written by the formats with face labels and drawn as cut faces by sxk render")
+        ->capture_default_str();
+    command->add_flag("--no-cut-label", options->no_cut_label, "Leave the faces the cut makes unlabelled");
     command->callback([&context, options] { context.exit_code = run_dissect(context, *options); });
 }
 

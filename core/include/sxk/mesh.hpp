@@ -59,9 +59,20 @@ using Point = std::array<double, 3>;
 class EditJournal;
 namespace detail {
 class UndoLog;
-}
 
-// Identifies a vertex attribute of one mesh (Mesh::add_vertex_attribute).
+// One attribute's values: those of vertex (or element) i at [i * components, (i+1) * components).
+// components == 0 marks a removed attribute (its id is not reused). Vertex and element
+// attributes are two tables of these (core/src/attribute_table.hpp).
+struct AttributeColumn {
+    std::string name;
+    int components = 0;
+    std::vector<double> default_value;
+    std::vector<double> values;
+};
+}  // namespace detail
+
+// Identifies a vertex or element attribute of one mesh (Mesh::add_vertex_attribute,
+// Mesh::add_element_attribute); the two kinds have ids of their own.
 using AttributeId = std::uint32_t;
 
 // One element's vertex substitution pi for change_elements: vertex j of the element's current
@@ -97,7 +108,7 @@ public:
     // least the topological one. Anything else throws std::invalid_argument.
     Mesh(int topological_dimension, int ambient_dimension);
 
-    // Copies connectivity, geometry, labels and vertex attributes; never watchers (a watcher watches one mesh).
+    // Copies connectivity, geometry, labels and vertex and element attributes; never watchers (a watcher watches one mesh).
     Mesh(const Mesh& other);
     Mesh& operator=(const Mesh& other);
     Mesh(Mesh&& other) noexcept;
@@ -204,14 +215,55 @@ public:
     // the span; use set_vertex_attribute inside a step). The span is invalidated by adding or
     // removing vertices.
     std::span<double> vertex_attribute(AttributeId attribute, VertexId v) {
-        VertexAttribute& a = m_attributes[attribute];
+        detail::AttributeColumn& a = m_attributes[attribute];
         const auto n = static_cast<std::size_t>(a.components);
         return {a.values.data() + v * n, n};
     }
     std::span<const double> vertex_attribute(AttributeId attribute, VertexId v) const {
-        const VertexAttribute& a = m_attributes[attribute];
+        const detail::AttributeColumn& a = m_attributes[attribute];
         const auto n = static_cast<std::size_t>(a.components);
         return {a.values.data() + v * n, n};
+    }
+
+    // ---- element attributes -------------------------------------------------------------------
+    // Named per-element fields of `components` doubles each: a solver's material parameters,
+    // rest-shape data, a stiffness factor. Every element has a value. An element made by
+    // replace_elements takes the values of its origin (the old element it comes from: a split
+    // child its parent's; see replace_elements), assign_elements gives every element the default
+    // value, and change_elements (dissection) keeps them with the element's identity. Values are
+    // kept for rollback by set_element_attribute and by the edits. Ids and refusals as for
+    // vertex attributes (add_vertex_attribute); element and vertex attributes are separate.
+    Outcome<AttributeId> add_element_attribute(std::string name, int components,
+                                               std::span<const double> default_value = {});
+    AttributeId find_element_attribute(std::string_view name) const;
+    Outcome<Done> remove_element_attribute(AttributeId attribute);
+    bool is_element_attribute(AttributeId attribute) const {
+        return attribute < m_element_attributes.size() && m_element_attributes[attribute].components > 0;
+    }
+    std::vector<AttributeId> element_attributes() const;
+    const std::string& element_attribute_name(AttributeId attribute) const {
+        return m_element_attributes[attribute].name;
+    }
+    int element_attribute_components(AttributeId attribute) const {
+        return m_element_attributes[attribute].components;
+    }
+    std::span<const double> element_attribute_default(AttributeId attribute) const {
+        return m_element_attributes[attribute].default_value;
+    }
+    // Kept for rollback inside an EditJournal step. Refuses when the attribute or the element
+    // does not exist or the size is wrong.
+    Outcome<Done> set_element_attribute(AttributeId attribute, ElementId t, std::span<const double> value);
+    // The value of a live attribute at a live element t: writable in place, the unobserved bulk
+    // path (use set_element_attribute inside a step). Invalidated by edits that add elements.
+    std::span<double> element_attribute(AttributeId attribute, ElementId t) {
+        detail::AttributeColumn& a = m_element_attributes[attribute];
+        const auto n = static_cast<std::size_t>(a.components);
+        return {a.values.data() + t * n, n};
+    }
+    std::span<const double> element_attribute(AttributeId attribute, ElementId t) const {
+        const detail::AttributeColumn& a = m_element_attributes[attribute];
+        const auto n = static_cast<std::size_t>(a.components);
+        return {a.values.data() + t * n, n};
     }
 
     // ---- elements -----------------------------------------------------------------------------
@@ -288,17 +340,24 @@ public:
 
     // Thesis §7.3 replace-elements, with face reuse and the matched-pair optimisation: removes
     // `old_elements`, adds one element per new simplex. Faces whose simplex occurs both before
-    // and after keep their FaceId. New elements get `labels[i]` (or, if labels is empty, the
-    // label of old_elements[0], or 0). Returns the ids of the new elements in input order.
+    // and after keep their FaceId. Returns the ids of the new elements in input order.
     //
-    // Refuses (mesh untouched) when: an old id is not an element or repeats; a new simplex has
+    // Origins: new element i comes from old_elements[origins[i]] (a split child from its parent)
+    // and takes that element's attribute values, and its label unless `labels` is given; with
+    // `origins` empty every new element comes from old_elements[0]; with no old elements they
+    // get the attributes' defaults and label 0. New elements get `labels[i]` when labels is not
+    // empty.
+    //
+    // Refuses (mesh untouched) when: labels or origins have the wrong size or an origin is not
+    // an index into old_elements; an old id is not an element or repeats; a new simplex has
     // the wrong size, a repeated vertex or an unknown vertex; two new simplexes have the same
     // vertices; a face occurs twice with the same orientation among the new simplexes; or a new
     // face already exists with the same orientation in an element that stays (invariant 7.4); or
     // the star of a vertex would no longer be face-connected (a pinched vertex).
     Outcome<std::vector<ElementId>> replace_elements(std::span<const ElementId> old_elements,
                                                      std::span<const Simplex> new_simplexes,
-                                                     std::span<const int> labels = {});
+                                                     std::span<const int> labels = {},
+                                                     std::span<const std::uint32_t> origins = {});
     // The same without the checks that walk vertex stars (a new face or element already in an
     // element that stays, invariant 7.4; pinched stars), for an operation that proved both from
     // its own checks. The proof is a token only ProvenEdit (core/src/mesh_checks.hpp, a private
@@ -309,7 +368,8 @@ public:
     };
     Outcome<std::vector<ElementId>> replace_elements(std::span<const ElementId> old_elements,
                                                      std::span<const Simplex> new_simplexes,
-                                                     std::span<const int> labels, StarChecksProof proof);
+                                                     std::span<const int> labels,
+                                                     std::span<const std::uint32_t> origins, StarChecksProof proof);
 
     // Thesis §7.3 change-elements: applies a vertex substitution per element, keeping every
     // element and face identity (Fig. 7.5). Refuses (mesh untouched) when an element is unknown
@@ -348,11 +408,12 @@ public:
 
     // ---- revisions ----------------------------------------------------------------------------
     // Changes with every observed change of the mesh (edits, vertex additions and removals,
-    // moves, labels, attribute values set through set_vertex_attribute); never repeats. An undo
+    // moves, labels, attribute values set through set_vertex_attribute and set_element_attribute,
+    // adding and removing attributes); never repeats. An undo
     // history uses it to refuse undoing over changes made outside it.
     std::uint64_t revision() const { return m_revision; }
 
-    // Bytes held by the connectivity, geometry and vertex attribute arrays (capacity, not size).
+    // Bytes held by the connectivity, geometry and attribute arrays (capacity, not size).
     std::size_t memory_bytes() const;
 
 private:
@@ -369,15 +430,6 @@ private:
         ElementId element = invalid_id;  // invalid_id: free; then mate is the next free id
         FaceId mate = invalid_id;
     };
-    // One vertex attribute: values of vertex v at [v * components, (v+1) * components).
-    // components == 0 marks a removed attribute (its id is not reused).
-    struct VertexAttribute {
-        std::string name;
-        int components = 0;
-        std::vector<double> default_value;
-        std::vector<double> values;
-    };
-
     friend class EditJournal;
     friend class detail::UndoLog;
     // replace_elements' body. proven == true skips the checks that walk vertex stars (a new
@@ -385,7 +437,10 @@ private:
     // with a StarChecksProof.
     Outcome<std::vector<ElementId>> replace_elements_impl(std::span<const ElementId> old_elements,
                                                           std::span<const Simplex> new_simplexes,
-                                                          std::span<const int> labels, bool proven);
+                                                          std::span<const int> labels,
+                                                          std::span<const std::uint32_t> origins, bool proven);
+    // Grows every element attribute to the element pool's size, new slots at the default.
+    void grow_element_attributes();
 
     ElementId allocate_element();
     void free_element(ElementId t);
@@ -456,7 +511,8 @@ private:
     std::size_t m_element_count = 0;
     detail::BoundaryMap m_boundary;
     FaceLabels m_face_labels;
-    std::vector<VertexAttribute> m_attributes;
+    std::vector<detail::AttributeColumn> m_attributes;          // vertex attributes
+    std::vector<detail::AttributeColumn> m_element_attributes;  // sized to the element pool
     std::vector<Watcher*> m_watchers;
     EditJournal* m_journal = nullptr;   // the journal attached, not copied
     detail::UndoLog* m_undo = nullptr;  // its open step's record, not copied

@@ -118,13 +118,13 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
 
     detail::SmallVector<Simplex, 32> survivors;
     detail::SmallVector<ElementId, 32> originals;
-    detail::SmallVector<int, 32> labels;
-    for (const ElementId t : star_from) {
-        const Simplex& tau = mesh.simplex(t);
+    detail::SmallVector<std::uint32_t, 32> origins;  // a survivor keeps its element's label and attributes
+    for (std::uint32_t i = 0; i < star_from.size(); ++i) {
+        const Simplex& tau = mesh.simplex(star_from[i]);
         if (tau.contains(to)) continue;
         survivors.push_back(tau.substituted(from, to));
-        originals.push_back(t);
-        labels.push_back(mesh.label(t));
+        originals.push_back(star_from[i]);
+        origins.push_back(i);
     }
     // Geometry of what changes shape: the re-attached elements (survivors[i], before: the
     // simplex of originals[i]), and for the point overload the elements of star(to) that stay
@@ -224,8 +224,8 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
     // Tetrahedral meshes allow vertex links that are not spheres or discs, so they keep the
     // generic checks.
     auto result = mesh.topological_dimension() == 2
-                      ? ProvenEdit::replace(mesh, star_from, survivors, labels)
-                      : mesh.replace_elements(star_from, survivors, labels);
+                      ? ProvenEdit::replace(mesh, star_from, survivors, {}, origins)
+                      : mesh.replace_elements(star_from, survivors, {}, origins);
     if (!result.ok()) return result.refusal().prefixed("collapse_edge: ");
     for (const Simplex& face : gone_labels) mesh.erase_face_label(face);
     for (const auto& [face, label] : moved_labels)

@@ -16,16 +16,19 @@ namespace {
 // C is a set of unoriented faces: a face in C counts with its mate (thesis §7.3).
 Simplex unoriented(const Simplex& sigma) { return Simplex(+1, sigma.vertices()); }
 
-bool is_mesh_face(const Mesh& mesh, const Simplex& sigma) {
+// A face of the mesh with sigma's vertices (either orientation), or invalid_id.
+FaceId find_mesh_face(const Mesh& mesh, const Simplex& sigma) {
     const VertexId v = sigma.vertex(0);
-    if (mesh.vertex_element(v) == invalid_id) return false;
+    if (mesh.vertex_element(v) == invalid_id) return invalid_id;
     for (ElementId t : star(mesh, v)) {
         const Simplex& tau = mesh.simplex(t);
         for (int j = 0; j < tau.count(); ++j)
-            if (tau.subn(j).same_vertices(sigma)) return true;
+            if (tau.subn(j).same_vertices(sigma)) return mesh.face(t, j);
     }
-    return false;
+    return invalid_id;
 }
+
+bool is_mesh_face(const Mesh& mesh, const Simplex& sigma) { return find_mesh_face(mesh, sigma) != invalid_id; }
 
 // Union-find over the positions of star(v); star sizes are small, so path halving suffices.
 std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
@@ -35,9 +38,10 @@ std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
 
 }  // namespace
 
-Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
+Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces, const DissectOptions& options) {
     const int d = mesh.topological_dimension();
     std::unordered_set<Simplex, SimplexHash> cut;
+    std::vector<std::pair<FaceId, FaceId>> joined;  // the interior faces of C with their mates
     std::vector<VertexId> cut_vertices;
     for (std::size_t i = 0; i < cut_faces.size(); ++i) {
         const Simplex& sigma = cut_faces[i];
@@ -52,10 +56,12 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
         if (!known)
             return Refusal{RefusalCode::bad_argument,
                            name + " " + to_text(sigma) + " has a repeated or unknown vertex", i};
-        if (!is_mesh_face(mesh, sigma))
+        const FaceId face = find_mesh_face(mesh, sigma);
+        if (face == invalid_id)
             return Refusal{RefusalCode::not_found,
                            name + " " + to_text(sigma) + " is not a face of the mesh", i};
-        cut.insert(unoriented(sigma));
+        // an interior face of C: it opens when its two sides end up without a mate
+        if (cut.insert(unoriented(sigma)).second && mesh.mate(face) != invalid_id) joined.emplace_back(face, mesh.mate(face));
         cut_vertices.insert(cut_vertices.end(), sigma.vertices().begin(), sigma.vertices().end());
     }
     std::sort(cut_vertices.begin(), cut_vertices.end());
@@ -160,6 +166,16 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces) {
         if (!mesh.face_label(r.after)) mesh.set_face_label(r.after, r.label);
     for (const Relabel& r : relabel)
         if (!is_mesh_face(mesh, r.before)) mesh.erase_face_label(r.before);
+    // the cut mark: after the labels that followed their faces, so a labelled face keeps its own
+    for (const auto& [f, g] : joined) {
+        if (mesh.mate(f) == g) continue;  // Fig. 7.7: still joined
+        for (const FaceId side : {f, g}) {
+            result.opened.push_back(side);
+            const Simplex key = unoriented(mesh.face_simplex(side));
+            if (options.cut_label && !mesh.face_label(key)) mesh.set_face_label(key, *options.cut_label);
+        }
+    }
+    std::sort(result.opened.begin(), result.opened.end());
     return result;
 }
 

@@ -497,12 +497,12 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
     // what it returns
     SmallVector<Simplex, 16> children;
     SmallVector<ElementId, 16> parent_of_child;
-    SmallVector<int, 16> labels;
-    for (const ElementId parent : parents)
+    SmallVector<std::uint32_t, 16> origins;  // a child is its parent's: label and element attributes
+    for (std::uint32_t p = 0; p < parents.size(); ++p)
         for (const VertexId v : replaced) {
-            children.push_back(mesh.simplex(parent).substituted(v, m));
-            parent_of_child.push_back(parent);
-            labels.push_back(mesh.label(parent));
+            children.push_back(mesh.simplex(parents[p]).substituted(v, m));
+            parent_of_child.push_back(parents[p]);
+            origins.push_back(p);
         }
     if (auto refused =
             refuse_bad_children(mesh, children, parent_of_child, moved, operation, vanishing_with))
@@ -536,7 +536,7 @@ inline Outcome<SplitResult> split_parents(Mesh& mesh, std::span<const ElementId>
     // (b) around each vertex the children of a parent are face-connected among themselves
     // (through the faces containing m) and keep the parent's faces that do not contain the
     // split simplex, so every path through a star across the parents can be rerouted.
-    auto result = ProvenEdit::replace(mesh, parents, children, labels);
+    auto result = ProvenEdit::replace(mesh, parents, children, {}, origins);
     if (!result.ok()) {
         (void)mesh.remove_last_vertex();  // m is in no element: the refused edit added nothing
         return result.refusal().prefixed(std::string(operation) + ": ");

@@ -213,15 +213,14 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
     Mesh& mesh = state.mesh();
     const std::vector<ElementId> originals = plan.refined_originals();
     std::vector<int> leaves;
-    for (ElementId t : originals) plan.append_leaves(t, leaves);
-    std::vector<Simplex> simplexes;
-    std::vector<int> labels;
-    simplexes.reserve(leaves.size());
-    labels.reserve(leaves.size());
-    for (int n : leaves) {
-        simplexes.push_back(plan.node(n).simplex);
-        labels.push_back(mesh.label(plan.node(n).root));
+    std::vector<std::uint32_t> origins;  // a leaf is its original's: label and element attributes
+    for (std::uint32_t r = 0; r < originals.size(); ++r) {
+        plan.append_leaves(originals[r], leaves);
+        origins.resize(leaves.size(), r);
     }
+    std::vector<Simplex> simplexes;
+    simplexes.reserve(leaves.size());
+    for (int n : leaves) simplexes.push_back(plan.node(n).simplex);
     // Face labels: a labelled face of a bisected original that is no face of a leaf passes its
     // label to the leaf faces lying on it (all their vertices on it, by the midpoints' lineage).
     std::vector<Simplex> split_faces;
@@ -272,7 +271,7 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
         }
     }
     TetBisectionAccess::set_own_edit(state, true);
-    auto replaced = mesh.replace_elements(originals, simplexes, labels);
+    auto replaced = mesh.replace_elements(originals, simplexes, {}, origins);
     TetBisectionAccess::set_own_edit(state, false);
     if (!replaced.ok()) {
         undo_vertices();

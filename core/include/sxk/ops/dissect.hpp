@@ -35,6 +35,12 @@
 //   labels (keyed by vertex set) follow faces whose vertices were replaced by copies; the
 //   original key keeps its label while some element still has that face (a labelled cut face
 //   labels both of the boundary faces it becomes).
+//   Cut mark: both boundary faces of every face of C that opened (it had a mate and has none
+//   now) get the face label options.cut_label (default_cut_label; none when it is empty) unless
+//   they have one already, so the cut surface is in every file format that writes face labels
+//   (Medit, Gmsh, VTU, TetGen .face) and follows later edits as face labels do (splits pass
+//   them to the pieces, collapses to the moved faces, flips refuse to remove them). The
+//   result lists those faces, both sides, in `opened`.
 //   Inverse: none in the kernel (stitching is the merge of the copies back into v).
 // Refusals (mesh untouched), reasons begin with "dissect: ":
 //   "cut face I has K vertices, not D" (I: index in cut_faces, D = topological dimension);
@@ -44,6 +50,7 @@
 //   anyway, the copies (in no element yet) are removed again, so no refusal adds a vertex.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -54,11 +61,24 @@
 
 namespace sxk {
 
+// The face label of a cut surface (DissectOptions::cut_label): a number unlikely to be one of a
+// generator's surface patch references; `sxk render` draws boundary faces with it as cut faces.
+inline constexpr int default_cut_label = 9999;
+
+struct DissectOptions {
+    // The label of the opened faces that have none; empty: leave them unlabelled.
+    std::optional<int> cut_label = default_cut_label;
+};
+
 struct DissectResult {
     // (original vertex, new copy), in order of creation.
     std::vector<std::pair<VertexId, VertexId>> new_vertices;
+    // The boundary faces the cut made, both sides of every face of C that opened, by FaceId
+    // (face ids survive change_elements), in increasing order.
+    std::vector<FaceId> opened;
 };
 
-SXK_API Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces);
+SXK_API Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces,
+                                       const DissectOptions& options = {});
 
 }  // namespace sxk
