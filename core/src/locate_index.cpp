@@ -63,25 +63,38 @@ std::string check_tree(const detail::BoxTree<D>& boxes, const std::vector<std::u
                        const std::function<typename detail::BoxTree<D>::Box(std::uint32_t)>& tight, const char* what) {
     for (const std::uint32_t id : items) {
         if (!boxes.is_live(id)) return std::string(what) + " " + std::to_string(id) + " is not indexed";
-        if (!covers<D>(boxes.boxes[id], tight(id)))
+        if (!covers<D>(boxes.box(id), tight(id)))
             return std::string(what) + " " + std::to_string(id) + " has a stale box";
     }
     if (boxes.live_count != items.size())
         return "the tree holds " + std::to_string(boxes.live_count) + " live boxes for " + std::to_string(items.size()) +
                " " + what + "s";
-    std::size_t live = 0, retired = 0;
-    for (std::size_t id = 0; id < boxes.states.size(); ++id) {
-        live += boxes.states[id] == detail::BoxTree<D>::live;
-        retired += boxes.states[id] == detail::BoxTree<D>::retired;
+    // the entries: members that name them back, counts that add up, each in the tree once
+    std::size_t in_tree = 0, members = 0, empty = 0;
+    for (std::uint32_t key = 0; key < boxes.entries.size(); ++key) {
+        const auto& entry = boxes.entries[key];
+        if (!entry.in_tree) continue;
+        ++in_tree;
+        std::uint32_t counted = 0;
+        boxes.any_member(key, [&](std::uint32_t id) {
+            counted += boxes.entry_of[id] == key ? 1 : boxes.max_members + 1;
+            return counted > boxes.max_members;
+        });
+        if (counted != entry.members || counted > boxes.max_members)
+            return "tree entry " + std::to_string(key) + " lists " + std::to_string(counted) + " members, counts " +
+                   std::to_string(entry.members);
+        members += counted;
+        empty += counted == 0;
     }
-    if (live != boxes.live_count || retired != boxes.retired_count || boxes.tree.size() != live + retired)
-        return "the tree holds " + std::to_string(boxes.tree.size()) + " entries for " + std::to_string(live) +
-               " live and " + std::to_string(retired) + " retired ids";
-    // every entry is the one box its id has (no stale duplicate left behind by a removal)
+    if (members != boxes.live_count || empty != boxes.empty_count || boxes.tree.size() != in_tree)
+        return "the tree holds " + std::to_string(boxes.tree.size()) + " entries for " + std::to_string(in_tree) +
+               " in use, " + std::to_string(members) + " members of " + std::to_string(boxes.live_count) +
+               " and " + std::to_string(empty) + " empty of " + std::to_string(boxes.empty_count);
+    // every tree value is its entry's box (no stale duplicate left behind by a removal)
     for (const auto& value : boxes.tree)
-        if (value.second >= boxes.states.size() || boxes.states[value.second] == detail::BoxTree<D>::absent ||
-            !detail::bg::equals(boxes.boxes[value.second], value.first))
-            return "the tree holds a stale box of " + std::string(what) + " " + std::to_string(value.second);
+        if (value.second >= boxes.entries.size() || !boxes.entries[value.second].in_tree ||
+            !detail::bg::equals(boxes.entries[value.second].box, value.first))
+            return "the tree holds a stale box of entry " + std::to_string(value.second);
     return {};
 }
 

@@ -27,9 +27,11 @@ BoundaryPoint nearest(const SpatialIndex::Trees& trees, const Mesh& mesh, const 
     for (auto it = tree.qbegin(detail::bgi::nearest(q, everything)); it != tree.qend(); ++it) {
         const double box_distance = std::sqrt(static_cast<double>(detail::bg::comparable_distance(q, it->first)));
         if (best.found() && box_distance > best.distance * slack) break;
-        if (!boxes.is_live(it->second)) continue;
-        const BoundaryPoint candidate = nearest_point_on_face(mesh, it->second, x, positions);
-        if (candidate.distance < best.distance) best = candidate;
+        boxes.any_member(it->second, [&](FaceId f) {
+            const BoundaryPoint candidate = nearest_point_on_face(mesh, f, x, positions);
+            if (candidate.distance < best.distance) best = candidate;
+            return false;
+        });
     }
     return best;
 }

@@ -24,15 +24,16 @@ Location locate_in_tree(const SpatialIndex::Trees& trees, const Mesh& mesh, cons
     const auto& boxes = detail::element_tree<D>(trees);
     const auto query = detail::BoxTree<D>::point_box(x);
     bool first = true;
-    for (auto it = boxes.tree.qbegin(detail::bgi::intersects(query)); it != boxes.tree.qend(); ++it) {
-        if (!boxes.is_live(it->second)) continue;
-        if (const Location found = locate_in_element(mesh, it->second, x, positions); found.found()) return found;
-        if (!first) continue;
-        first = false;
-        if (const ElementId walked = walk_to_point(mesh, x, it->second, positions, candidate_walk_steps);
-            walked != invalid_id)
-            if (const Location found = locate_in_element(mesh, walked, x, positions); found.found()) return found;
-    }
+    Location found;
+    for (auto it = boxes.tree.qbegin(detail::bgi::intersects(query)); it != boxes.tree.qend(); ++it)
+        if (boxes.any_member(it->second, [&](ElementId t) {
+                if ((found = locate_in_element(mesh, t, x, positions)).found()) return true;
+                if (!first) return false;
+                first = false;
+                const ElementId walked = walk_to_point(mesh, x, t, positions, candidate_walk_steps);
+                return walked != invalid_id && (found = locate_in_element(mesh, walked, x, positions)).found();
+            }))
+            return found;
     return {};
 }
 
@@ -46,23 +47,24 @@ Location locate_on_surface(const SpatialIndex::Trees& trees, const Mesh& mesh, c
     Location best;
     double best_distance = std::numeric_limits<double>::infinity();
     const auto& tree = trees.elements3.tree;
-    for (auto it = tree.qbegin(detail::bgi::intersects(query)); it != tree.qend(); ++it) {
-        if (!trees.elements3.is_live(it->second)) continue;
-        const Location found = locate_in_element(mesh, it->second, x, positions, tolerance);
-        if (!found.found()) continue;
-        const Point q = [&] {
-            const Simplex& s = mesh.simplex(found.element);
-            Point p{};
-            for (int j = 0; j < 3; ++j)
-                for (std::size_t k = 0; k < 3; ++k)
-                    p[k] += found.barycentric[static_cast<std::size_t>(j)] * detail::position(mesh, s.vertex(j), positions)[k];
-            return p;
-        }();
-        if (const double distance = detail::distance_squared(q, x); distance < best_distance) {
-            best_distance = distance;
-            best = found;
-        }
-    }
+    for (auto it = tree.qbegin(detail::bgi::intersects(query)); it != tree.qend(); ++it)
+        trees.elements3.any_member(it->second, [&](ElementId t) {
+            const Location found = locate_in_element(mesh, t, x, positions, tolerance);
+            if (!found.found()) return false;
+            const Point q = [&] {
+                const Simplex& s = mesh.simplex(found.element);
+                Point p{};
+                for (int j = 0; j < 3; ++j)
+                    for (std::size_t k = 0; k < 3; ++k)
+                        p[k] += found.barycentric[static_cast<std::size_t>(j)] * detail::position(mesh, s.vertex(j), positions)[k];
+                return p;
+            }();
+            if (const double distance = detail::distance_squared(q, x); distance < best_distance) {
+                best_distance = distance;
+                best = found;
+            }
+            return false;
+        });
     return best;
 }
 

@@ -42,10 +42,12 @@ RayHit first_hit(const detail::BoxTree<D>& boxes, const Mesh& mesh, const Point&
         // a box's distance from the origin bounds the distance of every hit inside it
         const double box_distance = std::sqrt(static_cast<double>(detail::bg::comparable_distance(origin, it->first)));
         if (best.found() && box_distance > best.t * length * slack) break;
-        if (!boxes.is_live(it->second)) continue;
-        const RayHit hit = surface ? ray_meets_triangle_element(mesh, it->second, o, d, positions)
-                                   : ray_meets_face(mesh, it->second, o, d, positions);
-        if (hit.found() && hit.t < best.t) best = hit;
+        boxes.any_member(it->second, [&](std::uint32_t id) {
+            const RayHit hit = surface ? ray_meets_triangle_element(mesh, id, o, d, positions)
+                                       : ray_meets_face(mesh, id, o, d, positions);
+            if (hit.found() && hit.t < best.t) best = hit;
+            return false;
+        });
     }
     return best;
 }

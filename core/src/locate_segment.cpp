@@ -22,9 +22,10 @@ std::vector<ElementId> crossed(const SpatialIndex::Trees& trees, const Mesh& mes
     }
     std::vector<ElementId> hits;
     for (const auto& candidate : candidates)
-        if (detail::element_tree<D>(trees).is_live(candidate.second) &&
-            segment_meets_element(mesh, candidate.second, a, b, positions))
-            hits.push_back(candidate.second);
+        detail::element_tree<D>(trees).any_member(candidate.second, [&](ElementId t) {
+            if (segment_meets_element(mesh, t, a, b, positions)) hits.push_back(t);
+            return false;
+        });
     detail::sort_unique(hits);
     return hits;
 }

@@ -53,37 +53,56 @@ inline float float_above(double x) {
     return std::nextafter(f, std::numeric_limits<float>::infinity());
 }
 
-// One rtree of boxes keyed by a 32-bit id (element or face), with the box each id was inserted
-// with (bgi::rtree::remove finds a value by its box). Single-precision boxes: the tree's nodes
-// are half the size, and the walk through them is memory-bound at 1M elements
-// (docs/performance.md "locate"). quadratic<8>: of linear/quadratic/rstar at 8-32 entries,
-// the fastest insertion and point query on a 1M-tetrahedron Kuhn cube (R* inserts 3-5x slower).
+// One rtree of boxes over 32-bit ids (elements or boundary faces). Single-precision boxes: the
+// tree's nodes are half the size, and the walk through them is memory-bound at 1M elements
+// (docs/performance.md "locate"). quadratic<8>: of linear/quadratic/rstar at 8-32 entries, the
+// fastest insertion and point query on a 1M-tetrahedron Kuhn cube (R* inserts 3-5x slower).
 //
-// Boxes are conservative: an entry's box contains its element's, and may be larger. An edit
-// frees ids and hands them out again at once (the pools' free lists), and a tree operation costs
-// ~1.5 us at 1M entries against ~3 us for a whole flip (docs/performance.md "locate"), so:
-//   * a removed id is RETIRED: its entry stays in the tree, skipped by every query;
-//   * an id added again keeps its entry when the entry's box holds the new box and is not more
-//     than `slack_factor` times wider along any axis (a flipped diagonal, a split child in
-//     its parent's id, a move within the box): no tree operation at all;
-//   * retired entries are removed for good, oldest first and at most two per removal event, once
-//     there are more than 64 + live/64 of them (no stall: removing them all at once could mean
-//     125k removals of ~1.5 us each at 1M).
+// The tree holds ENTRIES, not ids: an entry is a box and the few ids (at most max_members) whose
+// boxes it holds; queries test the members of every entry they meet. A tree operation costs
+// ~1.5 us at 1M entries against ~3 us for a whole flip (docs/performance.md "locate"), and an
+// edit removes elements and adds others in the same place, so:
+//   * an id added (or re-boxed after a move) joins an entry that holds its box and is not more
+//     than `slack_factor` times wider along any axis, looked for among the entries that lost a
+//     member lately (its parent's, when a split's child is added: the pools hand the parents'
+//     ids to the children in another order, so keying entries by id missed most of them);
+//     only when none holds it does it get an entry of its own, one tree insertion;
+//   * an entry left without members stays in the tree as a host for what comes next; empty
+//     entries are removed for good, oldest first and at most two per removal event, once there
+//     are more than 64 + live/64 of them (no stall: removing them all at once could mean 125k
+//     removals of ~1.5 us each at 1M).
 template <int D>
 struct BoxTree {
     using Coordinates = bg::model::point<float, D, bg::cs::cartesian>;
     using QueryPoint = bg::model::point<double, D, bg::cs::cartesian>;
     using Box = bg::model::box<Coordinates>;
-    using Value = std::pair<Box, std::uint32_t>;
+    using Value = std::pair<Box, std::uint32_t>;  // an entry's box and key
     using Tree = bgi::rtree<Value, bgi::quadratic<8>>;
-    enum State : std::uint8_t { absent = 0, live = 1, retired = 2 };
     static constexpr float slack_factor = 4;
+    static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+    // A query tests every member of an entry it meets: few, so that a hosted id costs a query
+    // about what a tree entry of its own would.
+    static constexpr std::uint32_t max_members = 4;
+    static constexpr std::size_t recent_size = 16;
+
+    struct Entry {
+        Box box;
+        std::uint32_t first = none;  // first member id; next_member links the others
+        std::uint32_t members = 0;
+        bool in_tree = false;
+    };
 
     Tree tree;
-    std::vector<Box> boxes;     // by id: the box of its entry in the tree
-    std::vector<State> states;  // by id
-    std::size_t live_count = 0, retired_count = 0;
-    std::deque<std::uint32_t> retired_order;  // ids as they were retired (revived ones too)
+    std::vector<Entry> entries;                // by key
+    std::vector<std::uint32_t> free_keys;      // keys of entries no longer in the tree
+    std::vector<std::uint32_t> entry_of;       // by id: its entry's key, or none
+    std::vector<std::uint32_t> next_member;    // by id: the next member of its entry, or none
+    std::size_t live_count = 0, empty_count = 0;
+    std::deque<std::uint32_t> empty_order;     // keys as they became empty (refilled ones too)
+    std::array<std::uint32_t, recent_size> recent;  // keys of entries that lost a member lately
+    std::size_t recent_next = 0;
+
+    BoxTree() { recent.fill(none); }
 
     static Box box_of(std::span<const Point* const> points) {
         Box box;
@@ -136,83 +155,139 @@ struct BoxTree {
 
     void clear() {
         tree.clear();
-        boxes.clear();
-        states.clear();
-        retired_order.clear();
-        live_count = retired_count = 0;
+        entries.clear();
+        free_keys.clear();
+        entry_of.clear();
+        next_member.clear();
+        empty_order.clear();
+        recent.fill(none);
+        live_count = empty_count = 0;
     }
-    void grow(std::uint32_t id) {
-        if (id >= boxes.size()) {
-            boxes.resize(static_cast<std::size_t>(id) + 1);
-            states.resize(static_cast<std::size_t>(id) + 1, absent);
-        }
+    bool is_live(std::uint32_t id) const { return id < entry_of.size() && entry_of[id] != none; }
+    // The box the tree holds for a live id (its entry's).
+    const Box& box(std::uint32_t id) const { return entries[entry_of[id]].box; }
+    // Calls f(id) for each member of the entry `key` until f returns true; true if one did.
+    template <class F>
+    bool any_member(std::uint32_t key, F&& f) const {
+        for (std::uint32_t id = entries[key].first; id != none; id = next_member[id])
+            if (f(id)) return true;
+        return false;
     }
-    bool is_live(std::uint32_t id) const { return id < states.size() && states[id] == live; }
+
     // id (added, changed or moved) now has the tight box `box`.
     void insert(std::uint32_t id, const Box& box) {
-        grow(id);
-        if (states[id] != absent && holds(boxes[id], box)) {
-            if (states[id] == retired) {
-                --retired_count;
-                ++live_count;
+        if (id >= entry_of.size()) {
+            entry_of.resize(static_cast<std::size_t>(id) + 1, none);
+            next_member.resize(static_cast<std::size_t>(id) + 1, none);
+        }
+        if (entry_of[id] != none) {
+            if (holds(entries[entry_of[id]].box, box)) return;
+            unlink(id);
+        }
+        for (const std::uint32_t key : recent)
+            if (key != none && entries[key].in_tree && entries[key].members < max_members &&
+                holds(entries[key].box, box)) {
+                link(id, key);
+                return;
             }
-            states[id] = live;
-            return;
+        std::uint32_t key;
+        if (!free_keys.empty()) {
+            key = free_keys.back();
+            free_keys.pop_back();
+        } else {
+            key = static_cast<std::uint32_t>(entries.size());
+            entries.emplace_back();
         }
-        if (states[id] != absent) {
-            tree.remove(Value(boxes[id], id));
-            (states[id] == live ? live_count : retired_count) -= 1;
-        }
-        boxes[id] = box;
-        states[id] = live;
-        ++live_count;
-        tree.insert(Value(box, id));
+        entries[key] = Entry{box, none, 0, true};
+        tree.insert(Value(box, key));
+        ++empty_count;  // link counts it full again
+        link(id, key);
     }
     void erase(std::uint32_t id) {
         if (!is_live(id)) return;
-        states[id] = retired;
-        --live_count;
-        ++retired_count;
-        retired_order.push_back(id);
+        unlink(id);
         trim(2);
     }
     void update(std::uint32_t id, const Box& box) { insert(id, box); }
-    // Removes up to `budget` of the oldest retired entries from the tree while there are more
-    // than 64 + live/64; keeps the queue of retired ids within a few times their number.
+    // Removes up to `budget` of the oldest empty entries from the tree while there are more
+    // than 64 + live/64; keeps the queue of empty keys within a few times their number.
     void trim(int budget) {
         const std::size_t limit = 64 + live_count / 64;
-        while (retired_count > limit && budget > 0 && !retired_order.empty()) {
-            const std::uint32_t id = retired_order.front();
-            retired_order.pop_front();
-            if (id >= states.size() || states[id] != retired) continue;  // revived since
-            tree.remove(Value(boxes[id], id));
-            states[id] = absent;
-            --retired_count;
+        while (empty_count > limit && budget > 0 && !empty_order.empty()) {
+            const std::uint32_t key = empty_order.front();
+            empty_order.pop_front();
+            Entry& e = entries[key];
+            if (!e.in_tree || e.members != 0) continue;  // refilled since, or gone
+            tree.remove(Value(e.box, key));
+            e.in_tree = false;
+            free_keys.push_back(key);
+            --empty_count;
             --budget;
         }
-        if (retired_order.size() > 4 * (retired_count + 64)) {
+        if (empty_order.size() > 4 * (empty_count + 64)) {
             std::deque<std::uint32_t> still;
-            for (const std::uint32_t id : retired_order)
-                if (id < states.size() && states[id] == retired) still.push_back(id);
-            retired_order.swap(still);
+            for (const std::uint32_t key : empty_order)
+                if (entries[key].in_tree && entries[key].members == 0) still.push_back(key);
+            empty_order.swap(still);
         }
     }
     // Replaces the whole tree by a bulk load (the packing constructor: O(n log n), better nodes
-    // than n insertions).
+    // than n insertions), one entry per id: `values` pairs boxes with ids.
     void load(std::vector<Value>& values) {
         clear();
-        for (const Value& v : values) {
-            grow(v.second);
-            boxes[v.second] = v.first;
-            states[v.second] = live;
+        std::uint32_t largest = 0;
+        for (const Value& v : values) largest = std::max(largest, v.second);
+        if (!values.empty()) {
+            entry_of.assign(static_cast<std::size_t>(largest) + 1, none);
+            next_member.assign(static_cast<std::size_t>(largest) + 1, none);
+        }
+        entries.resize(values.size());
+        for (std::uint32_t key = 0; key < values.size(); ++key) {
+            const std::uint32_t id = values[key].second;
+            entries[key] = Entry{values[key].first, id, 1, true};
+            entry_of[id] = key;
+            values[key].second = key;
         }
         live_count = values.size();
         tree = Tree(values.begin(), values.end());
     }
     std::size_t memory_bytes() const {
         // the tree's nodes hold the values plus about 40% slack at a fill of 8/(8*0.7)
-        return boxes.capacity() * sizeof(Box) + states.capacity() + retired_order.size() * sizeof(std::uint32_t) +
+        return entries.capacity() * sizeof(Entry) + (entry_of.capacity() + next_member.capacity() +
+                                                     free_keys.capacity() + empty_order.size()) *
+                                                        sizeof(std::uint32_t) +
                tree.size() * sizeof(Value) * 14 / 10;
+    }
+
+private:
+    void link(std::uint32_t id, std::uint32_t key) {
+        Entry& e = entries[key];
+        if (e.members == 0) --empty_count;
+        next_member[id] = e.first;
+        e.first = id;
+        ++e.members;
+        entry_of[id] = key;
+        ++live_count;
+    }
+    void unlink(std::uint32_t id) {
+        const std::uint32_t key = entry_of[id];
+        Entry& e = entries[key];
+        if (e.first == id) {
+            e.first = next_member[id];
+        } else {
+            std::uint32_t before = e.first;
+            while (next_member[before] != id) before = next_member[before];
+            next_member[before] = next_member[id];
+        }
+        next_member[id] = none;
+        entry_of[id] = none;
+        --live_count;
+        if (--e.members == 0) {
+            ++empty_count;
+            empty_order.push_back(key);
+        }
+        recent[recent_next] = key;
+        recent_next = (recent_next + 1) % recent_size;
     }
 };
 

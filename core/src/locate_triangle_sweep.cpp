@@ -16,15 +16,17 @@ TriangleHits hit_by(const SpatialIndex::Trees& trees, const Mesh& mesh, const Po
     TriangleHits hits;
     detail::element_tree<D>(trees).tree.query(detail::bgi::intersects(query), std::back_inserter(candidates));
     for (const auto& candidate : candidates)
-        if (detail::element_tree<D>(trees).is_live(candidate.second) &&
-            triangle_meets_element(mesh, candidate.second, a, b, c, positions))
-            hits.elements.push_back(candidate.second);
+        detail::element_tree<D>(trees).any_member(candidate.second, [&](ElementId t) {
+            if (triangle_meets_element(mesh, t, a, b, c, positions)) hits.elements.push_back(t);
+            return false;
+        });
     candidates.clear();
     detail::face_tree<D>(trees).tree.query(detail::bgi::intersects(query), std::back_inserter(candidates));
     for (const auto& candidate : candidates)
-        if (detail::face_tree<D>(trees).is_live(candidate.second) &&
-            triangle_meets_face(mesh, candidate.second, a, b, c, positions))
-            hits.boundary_faces.push_back(candidate.second);
+        detail::face_tree<D>(trees).any_member(candidate.second, [&](FaceId f) {
+            if (triangle_meets_face(mesh, f, a, b, c, positions)) hits.boundary_faces.push_back(f);
+            return false;
+        });
     detail::sort_unique(hits.elements);
     detail::sort_unique(hits.boundary_faces);
     return hits;
