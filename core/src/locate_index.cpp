@@ -1,6 +1,9 @@
 // SpatialIndex: building the trees and keeping them in step with the mesh's events
 // (sxk/locate.hpp; the events are those of sxk/watcher.hpp, thesis §7.4).
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <string>
 #include <vector>
@@ -11,6 +14,51 @@
 
 namespace sxk {
 namespace {
+
+// The seed grid of locate (locate_trees.hpp) for planar and tetrahedral meshes: cells of about
+// SeedGrid::elements_per_cell elements over the bounding box, each seeded with an element whose
+// centroid lies in it (cells without one stay empty: a locate there uses the tree).
+void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) {
+    grid = detail::SeedGrid{};
+    const int d = mesh.topological_dimension();
+    if (d != mesh.ambient_dimension() || mesh.element_count() == 0) return;
+    std::array<double, 3> high{};
+    for (int k = 0; k < 3; ++k) {
+        grid.low[static_cast<std::size_t>(k)] = std::numeric_limits<double>::infinity();
+        high[static_cast<std::size_t>(k)] = -std::numeric_limits<double>::infinity();
+    }
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        if (mesh.vertex_element(v) == invalid_id) continue;
+        const Point& p = detail::position(mesh, v, positions);
+        for (std::size_t k = 0; k < 3; ++k) {
+            grid.low[k] = std::min(grid.low[k], p[k]);
+            high[k] = std::max(high[k], p[k]);
+        }
+    }
+    double volume = 1;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(d); ++k) volume *= std::max(high[k] - grid.low[k], 0.0);
+    const double wanted = std::max(1.0, static_cast<double>(mesh.element_count()) / detail::SeedGrid::elements_per_cell);
+    if (!(volume > 0) || !std::isfinite(volume)) return;  // flat or unbounded: the tree alone
+    const double side = std::pow(volume / wanted, 1.0 / d);
+    std::size_t total = 1;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(d); ++k) {
+        const double extent = high[k] - grid.low[k];
+        grid.cells[k] = static_cast<std::size_t>(std::clamp(std::ceil(extent / side), 1.0, 1e6));
+        grid.cell[k] = extent / static_cast<double>(grid.cells[k]);
+        total *= grid.cells[k];
+    }
+    if (total > 4 * static_cast<std::size_t>(wanted) + 16) return;  // a needle-shaped box: not worth it
+    grid.seeds = std::vector<std::atomic<std::uint32_t>>(total);
+    for (auto& seed : grid.seeds) seed.store(invalid_id, std::memory_order_relaxed);
+    for (const ElementId t : elements(mesh)) {
+        const Simplex& s = mesh.simplex(t);
+        Point centroid{0, 0, 0};
+        for (int j = 0; j < s.count(); ++j)
+            for (std::size_t k = 0; k < 3; ++k) centroid[k] += detail::position(mesh, s.vertex(j), positions)[k] / s.count();
+        if (const std::size_t cell = grid.cell_of(centroid, d); cell != detail::SeedGrid::npos)
+            grid.seeds[cell].store(t, std::memory_order_relaxed);
+    }
+}
 
 template <int D>
 void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
@@ -23,6 +71,7 @@ void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
     values.reserve(mesh.boundary_face_count());
     mesh.for_each_boundary_face([&](FaceId f) { values.emplace_back(detail::face_box<D>(mesh, f, positions), f); });
     detail::face_tree<D>(trees).load(values);
+    build_seeds(trees.seeds, mesh, positions);
 }
 
 // Re-boxes the elements around the moved vertices and their boundary faces (a face's box
@@ -148,7 +197,7 @@ std::size_t SpatialIndex::indexed_boundary_faces() const {
 
 std::size_t SpatialIndex::memory_bytes() const {
     return m_trees->elements2.memory_bytes() + m_trees->faces2.memory_bytes() + m_trees->elements3.memory_bytes() +
-           m_trees->faces3.memory_bytes();
+           m_trees->faces3.memory_bytes() + m_trees->seeds.seeds.size() * sizeof(std::uint32_t);
 }
 
 Outcome<Done> SpatialIndex::validate() const {

@@ -12,6 +12,9 @@ namespace {
 // ~2 us of exact tests, about what the rtree costs on a 1M-element mesh (docs/performance.md
 // "locate").
 constexpr std::size_t hint_walk_steps = 128;
+// From the seed of x's grid cell (locate_trees.hpp), a cell or two away at most: a longer walk
+// means a stale seed, and the tree is cheaper than walking on.
+constexpr std::size_t seed_walk_steps = 16;
 
 // The rtree's first candidate is next to x; when it does not contain x, a short walk from it
 // usually reaches the element that does in a step or two through the mesh's neighbour cache,
@@ -83,8 +86,21 @@ Location SpatialIndex::locate(const Point& x, ElementId hint) const {
                 return found;
     }
     if (surface) return locate_on_surface(*m_trees, mesh, x, m_options.positions, tolerance);
-    return mesh.ambient_dimension() == 2 ? locate_in_tree<2>(*m_trees, mesh, x, m_options.positions)
-                                         : locate_in_tree<3>(*m_trees, mesh, x, m_options.positions);
+    // the seed of x's grid cell, then the tree; the answer seeds the cell (locate_trees.hpp)
+    detail::SeedGrid& grid = m_trees->seeds;
+    const std::size_t cell = grid.empty() ? detail::SeedGrid::npos : grid.cell_of(x, mesh.ambient_dimension());
+    if (cell != detail::SeedGrid::npos) {
+        const ElementId seed = grid.seeds[cell].load(std::memory_order_relaxed);
+        if (mesh.is_element(seed))
+            if (const ElementId walked = walk_to_point(mesh, x, seed, m_options.positions, seed_walk_steps);
+                walked != invalid_id)
+                if (const Location found = locate_in_element(mesh, walked, x, m_options.positions); found.found())
+                    return found;
+    }
+    const Location found = mesh.ambient_dimension() == 2 ? locate_in_tree<2>(*m_trees, mesh, x, m_options.positions)
+                                                         : locate_in_tree<3>(*m_trees, mesh, x, m_options.positions);
+    if (cell != detail::SeedGrid::npos && found.found()) grid.seeds[cell].store(found.element, std::memory_order_relaxed);
+    return found;
 }
 
 }  // namespace sxk

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -295,9 +296,44 @@ private:
 
 namespace sxk {
 
+namespace detail {
+
+// Where a locate without a hint starts walking: a uniform grid over the mesh's bounding box at
+// build time, about one cell per `elements_per_cell` elements (1.5: of 0.75, 1.5 and 4, the
+// fastest at 1M tetrahedra, docs/performance.md "locate"), each holding an element near the
+// cell (first: one whose centroid is in it; later: the last answer found in it). A seed that
+// died, or whose id now names an element elsewhere, makes the short walk from it fail and the
+// tree decide; the answer becomes the cell's seed. Why beside the rtree: its descent misses the
+// cache at 1M elements (7 levels of nodes, docs/performance.md "locate"), the grid costs one
+// load and a walk of a step or two. Seeds are atomics so that const queries from several threads
+// may refresh them (relaxed: any live element is a correct start).
+struct SeedGrid {
+    static constexpr double elements_per_cell = 1.5;
+    std::array<double, 3> low{}, cell{1, 1, 1};
+    std::array<std::size_t, 3> cells{0, 0, 0};
+    std::vector<std::atomic<std::uint32_t>> seeds;
+
+    bool empty() const { return seeds.empty(); }
+    // The cell of x, or npos outside the grid (or for non-finite x).
+    std::size_t cell_of(const Point& x, int dimension) const {
+        std::size_t index = 0;
+        for (int k = dimension - 1; k >= 0; --k) {
+            const auto uk = static_cast<std::size_t>(k);
+            const double at = (x[uk] - low[uk]) / cell[uk];
+            if (!(at >= 0) || !(at < static_cast<double>(cells[uk]))) return npos;
+            index = index * cells[uk] + static_cast<std::size_t>(at);
+        }
+        return index;
+    }
+    static constexpr std::size_t npos = std::numeric_limits<std::size_t>::max();
+};
+
+}  // namespace detail
+
 struct SpatialIndex::Trees {
     detail::BoxTree<2> elements2, faces2;  // planar meshes
     detail::BoxTree<3> elements3, faces3;  // surfaces in space, tetrahedral meshes
+    detail::SeedGrid seeds;                // planar and tetrahedral meshes
 };
 
 namespace detail {

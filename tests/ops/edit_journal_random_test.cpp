@@ -121,7 +121,18 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
                 if (::testing::Test::HasFatalFailure()) return;
             }
             const std::uint64_t choice = rng() % 10;
-            if (choice < 4) {
+            if (choice == 9 && !redo.empty()) {
+                // redo right after an undo: this step's edits are rolled back first (a committed
+                // step would clear what there is to redo), then the undone step comes back
+                ASSERT_TRUE(journal.rollback().ok());
+                ++counts.rollbacks;
+                ASSERT_TRUE(snapshot(mesh) == before) << "step " << i << ": the rollback left another mesh";
+                ASSERT_TRUE(journal.redo().ok()) << "step " << i;
+                ++counts.redos;
+                ASSERT_TRUE(snapshot(mesh) == redo.back().second) << "step " << i << ": redo";
+                history.push_back(redo.back());
+                redo.pop_back();
+            } else if (choice < 4) {
                 ASSERT_TRUE(journal.rollback().ok());
                 ++counts.rollbacks;
                 ASSERT_TRUE(snapshot(mesh) == before) << "step " << i << ": the rollback left another mesh";
@@ -143,12 +154,6 @@ void run(std::uint32_t kind, int steps, const char* name, Counts& counts) {
                     ASSERT_TRUE(snapshot(mesh) == history.back().first) << "step " << i << ": undo";
                     redo.push_back(history.back());
                     history.pop_back();
-                } else if (choice == 9 && !redo.empty()) {
-                    ASSERT_TRUE(journal.redo().ok()) << "step " << i;
-                    ++counts.redos;
-                    ASSERT_TRUE(snapshot(mesh) == redo.back().second) << "step " << i << ": redo";
-                    history.push_back(redo.back());
-                    redo.pop_back();
                 }
             }
             const auto valid = mesh.validate();
