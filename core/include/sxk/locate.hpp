@@ -127,7 +127,8 @@ public:
     // or none. With a live `hint` it first walks from the hint through face neighbours (exact
     // orientation tests, walk_to_point; at most 128 steps), which costs the distance walked, so
     // pass the previous answer when following a tool; when the walk leaves the mesh, meets a flat
-    // element, gives up or there is no hint, the rtree's candidates at x decide. Non-finite
+    // element, gives up or there is no hint, a short walk from the seed of x's cell in a grid
+    // (planar and tetrahedral meshes) and then the rtree's candidates at x decide. Non-finite
     // coordinates are in no element.
     Location locate(const Point& x, ElementId hint = invalid_id) const;
 
