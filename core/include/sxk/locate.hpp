@@ -154,11 +154,12 @@ public:
     // The live elements and boundary faces indexed (flat elements included).
     std::size_t indexed_elements() const;
     std::size_t indexed_boundary_faces() const;
-    // Bytes held by the trees and the box arrays.
+    // Bytes held by the trees, their entries and the seed grid.
     std::size_t memory_bytes() const;
-    // O(n), for tests: every live element and boundary face is in its tree exactly once with a
-    // box that holds the box its positions give now, nothing else is live, and every entry is the
-    // one box of its id ("spatial index: element 7 has a stale box").
+    // O(n), for tests: every live element and boundary face is a member of one tree entry whose
+    // box holds the box its positions give now, nothing else is a member, the entries' member
+    // lists and counts agree, and every tree value is its entry's box ("spatial index: element 7
+    // has a stale box").
     Outcome<Done> validate() const;
 
     // ---- Watcher ------------------------------------------------------------------------------
