@@ -36,7 +36,7 @@ Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
     // would name no face: drop them. A face with the same vertices that still exists is a
     // neighbour's boundary face now, and keeps the label.
     for (const Simplex& face : faces_of_doomed)
-        if (element_containing(mesh, face.vertices()) == invalid_id) mesh.face_labels().erase(face);
+        if (element_containing(mesh, face.vertices()) == invalid_id) mesh.erase_face_label(face);  // recorded: a rollback puts it back
     return Done{};
 }
 

@@ -56,10 +56,12 @@ Refused peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
     const std::array<ElementId, 1> doomed{t};
     const auto removed = mesh.replace_elements(doomed, {});
     if (!removed) return removed.refusal();
-    // its boundary faces are gone; the faces it exposed carry the boundary's label on
-    for (const Simplex& face : boundary) mesh.face_labels().erase(Simplex(+1, face.vertices()));
+    // its boundary faces are gone; the faces it exposed carry the boundary's label on (recorded
+    // setters: the removal runs inside the plug-in's EditStep, whose rollback puts them back)
+    for (const Simplex& face : boundary) mesh.erase_face_label(face);
     if (labelled)
-        for (const Simplex& face : exposed) mesh.face_labels().try_emplace(Simplex(+1, face.vertices()), label);
+        for (const Simplex& face : exposed)
+            if (!mesh.face_label(face)) mesh.set_face_label(face, label);
     return std::nullopt;
 }
 
