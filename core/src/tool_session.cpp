@@ -43,6 +43,7 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     if (m_ended) return Refusal{RefusalCode::not_applicable, "step: the session has ended"};
     EditJournal& journal = m_journal.journal();
     const bool outermost = journal.depth() == 0;
+    bool recorded = false;  // an outermost step that recorded nothing leaves no history entry
     const std::size_t vertices_before = m_mesh.vertex_count();
     const std::size_t elements_before = m_mesh.element_count();
     const bool in_step = m_mesh.revision() == m_revision;  // nothing changed since our last step
@@ -53,13 +54,14 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
         EditStep step(journal);
         const ScopedWatcher watching(m_mesh, watcher);
         applied = apply(pose, report);
+        recorded = journal.recorded() > 0;
         if (applied) (void)step.commit();
     }  // a refusal is rolled back here
     if (!applied) {
         if (in_step) m_revision = m_mesh.revision();  // the mesh is as after our last step again
         return applied.refusal();
     }
-    m_kept.push_back(outermost);
+    m_kept.push_back(!outermost ? Kept::application_step : recorded ? Kept::history_entry : Kept::nothing);
     m_revision = m_mesh.revision();
     report.elements = std::move(watcher.elements);
     sort_unique(report.elements);
@@ -80,9 +82,13 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
 Outcome<Done> ToolSession::undo_step() {
     if (m_kept.empty())
         return Refusal{RefusalCode::not_applicable, "undo_step: the session has no step to undo"};
-    if (!m_kept.back())
+    if (m_kept.back() == Kept::application_step)
         return Refusal{RefusalCode::not_applicable,
                        "undo_step: the step is part of the application's open step"};
+    if (m_kept.back() == Kept::nothing) {
+        m_kept.pop_back();
+        return Done{};
+    }
     if (m_mesh.revision() != m_revision)
         return Refusal{RefusalCode::stale,
                        "undo_step: the mesh changed since the session's last step"};

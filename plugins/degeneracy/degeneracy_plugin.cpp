@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command_line.hpp"
+#include "degeneracy_brush.hpp"
 #include "sxk/io.hpp"
 
 namespace sxk::degeneracy {
@@ -323,7 +324,9 @@ class DegeneracyPlugin final : public Plugin {
 public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
     ServiceOffer offer(std::string_view service_id) override {
-        return service_id == DegeneracyService::service_id ? offer_of(&m_service) : ServiceOffer{};
+        if (service_id == DegeneracyService::service_id) return offer_of(&m_service);
+        if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
+        return {};
     }
 
 private:
@@ -334,6 +337,7 @@ private:
         static_cast<Outcome<Report> (*)(Mesh&, std::span<const ElementId>, const Options&)>(
             &remove_degeneracies),
         &classify};
+    ToolFactory m_tools{&brush_tools, &begin_brush};
 };
 
 }  // namespace

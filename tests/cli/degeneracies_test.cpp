@@ -17,6 +17,7 @@
 #include "sxk/mesh.hpp"
 #include "sxk/plugin_host.hpp"
 #include "sxk/quality.hpp"
+#include "sxk/tool_session.hpp"
 
 namespace sxk::test {
 namespace {
@@ -501,6 +502,54 @@ TEST(DegeneracyService, TheCommandEditsAMeshInMemoryAsOneStep) {
     ASSERT_TRUE(journal.undo().ok());
     EXPECT_EQ(mesh.element_count(), before.element_count());
     EXPECT_TRUE(mesh.validate().ok());
+}
+
+// The plug-in's ToolFactory: a brush session found through the host, each step one undoable
+// transaction, refusals with their reasons.
+TEST(DegeneracyService, TheBrushIsAToolSessionOfItsToolFactory) {
+    PluginHost host;
+    host.load_folder(SXK_PLUGIN_BUILD_DIR);
+    const auto factory = host.service<ToolFactory>("degeneracy");
+    ASSERT_TRUE(factory.ok()) << factory.reason();
+    const auto tools = (*factory)->tools();
+    ASSERT_EQ(tools.size(), 1u);
+    EXPECT_EQ(tools[0], "degeneracies");
+    std::istringstream text(cap_mesh);
+    Mesh mesh = read_mesh(text, Format::medit, "cap.mesh");
+    const Mesh before = mesh;
+
+    const std::vector<std::string> no_radius;
+    EXPECT_EQ((*factory)->begin("snapcut", mesh, no_radius).reason(),
+              "no tool called snapcut in degeneracy (it has: degeneracies)");
+    const auto missing = (*factory)->begin("degeneracies", mesh, no_radius);
+    EXPECT_EQ(missing.code(), RefusalCode::bad_argument);
+    EXPECT_EQ(missing.reason(), "degeneracies brush: --radius is required");
+    const std::vector<std::string> negative{"--radius", "-1"};
+    EXPECT_EQ((*factory)->begin("degeneracies", mesh, negative).reason(),
+              "degeneracies brush: --radius must be positive, not -1.000000");
+
+    const std::vector<std::string> options{"--radius", "0.2"};
+    auto brush = (*factory)->begin("degeneracies", mesh, options);
+    ASSERT_TRUE(brush.ok()) << brush.reason();
+    ToolPose far;
+    far.position = {5, 5, 5};
+    const auto nothing = (*brush)->step(far);
+    ASSERT_TRUE(nothing.ok()) << nothing.reason();
+    EXPECT_EQ(nothing->actions, std::vector<std::string>{"no element within the brush"});
+    EXPECT_EQ(mesh.element_count(), 5u);
+    ToolPose at_cap;
+    at_cap.position = {0.5, 0.3, 0.001};  // vertex 4 of the file, the cap's apex
+    const auto step = (*brush)->step(at_cap);
+    ASSERT_TRUE(step.ok()) << step.reason();
+    ASSERT_EQ(step->actions.size(), 1u);
+    EXPECT_NE(step->actions[0].find("1 degenerate, 1 removed"), std::string::npos) << step->actions[0];
+    EXPECT_EQ(mesh.element_count(), 6u);
+    EXPECT_FALSE(step->elements.empty());
+    ASSERT_TRUE(mesh.validate().ok());
+    EXPECT_EQ((*brush)->steps(), 2u);
+    ASSERT_TRUE((*brush)->undo_step().ok());
+    test::expect_same_state(mesh, before);
+    ASSERT_TRUE(mesh.validate().ok());
 }
 
 // An application loads degeneracy.so and calls remove_degeneracies through the service.

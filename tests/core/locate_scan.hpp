@@ -170,6 +170,26 @@ inline void expect_index_agrees(const SpatialIndex& index, std::mt19937_64& rng,
         std::vector<FaceId> faces = scanned.boundary_faces;
         std::sort(faces.begin(), faces.end());
         EXPECT_EQ(hits.boundary_faces, faces);
+        // the box spanned by x and y, against every element's vertices
+        Point low{}, high{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            low[k] = std::min(x[k], y[k]);
+            high[k] = std::max(x[k], y[k]);
+        }
+        std::vector<ElementId> in_box;
+        for (const ElementId t : elements(mesh))
+            for (const VertexId v : mesh.simplex(t).vertices()) {
+                const Point& p = positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+                bool inside = true;
+                for (int k = 0; k < mesh.ambient_dimension(); ++k)
+                    inside = inside && p[static_cast<std::size_t>(k)] >= low[static_cast<std::size_t>(k)] &&
+                             p[static_cast<std::size_t>(k)] <= high[static_cast<std::size_t>(k)];
+                if (inside) {
+                    in_box.push_back(t);
+                    break;
+                }
+            }
+        EXPECT_EQ(index.elements_with_vertex_in_box(low, high), in_box);
         const BoundaryPoint nearest = index.nearest_boundary_point(x);
         const double scanned_distance = scan_nearest_distance(mesh, x, positions);
         EXPECT_EQ(nearest.found(), scanned_distance < std::numeric_limits<double>::infinity());

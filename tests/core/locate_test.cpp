@@ -87,6 +87,17 @@ TEST(SpatialIndex, TriangleSweepOnTheUnitSquare) {
     EXPECT_EQ(flat.elements, (std::vector<ElementId>{0, 1}));
 }
 
+TEST(SpatialIndex, ElementsWithAVertexInABoxOnTheUnitSquare) {
+    Mesh mesh = test::unit_square();  // <0,1,2> and <0,2,3>
+    const SpatialIndex index(mesh);
+    EXPECT_EQ(index.elements_with_vertex_in_box({0.9, -0.1, 0}, {1.1, 0.1, 0}), std::vector<ElementId>{0});  // vertex 1
+    EXPECT_EQ(index.elements_with_vertex_in_box({-1, 0.5, 7}, {0, 2, 9}), std::vector<ElementId>{1});        // vertex 3, z ignored
+    EXPECT_EQ(index.elements_with_vertex_in_box({1, 1, 0}, {1, 1, 0}), (std::vector<ElementId>{0, 1}));      // vertex 2 exactly
+    EXPECT_TRUE(index.elements_with_vertex_in_box({0.2, 0.2, 0}, {0.8, 0.8, 0}).empty());  // inside, no vertex
+    EXPECT_TRUE(index.elements_with_vertex_in_box({1, 1, 0}, {0, 0, 0}).empty());          // low > high
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(SpatialIndex, NearestBoundaryPointAndPickOnTheUnitSquare) {
     Mesh mesh = test::unit_square();
     const SpatialIndex index(mesh);

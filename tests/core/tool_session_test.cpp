@@ -80,6 +80,43 @@ TEST(ToolSession, AStepIsOneTransaction) {
     mesh.remove_watcher(mirror);
 }
 
+// Edits only when the pose is right of x = 0: a frame where the tool touches nothing.
+class SometimesTool final : public ToolSession {
+public:
+    using ToolSession::ToolSession;
+
+protected:
+    Outcome<Done> apply(const ToolPose& pose, StepReport& report) override {
+        if (pose.position[0] <= 0) return Done{};
+        if (auto split = split_edge(mesh(), 0, 1, 0.5); !split) return split.refusal();
+        report.actions.push_back("split edge 0-1");
+        return Done{};
+    }
+};
+
+// A step that changed nothing leaves no entry in the journal's history: undoing it takes back
+// nothing, and the step before it is undone next (it used to undo that one at once).
+TEST(ToolSession, UndoingAStepThatChangedNothingTakesBackNothing) {
+    Mesh mesh = test::planar_grid(2);
+    const auto start = snapshot(mesh);
+    SometimesTool tool(mesh);
+    ToolPose right, left;
+    right.position = {1, 0, 0};
+    left.position = {-1, 0, 0};
+    ASSERT_TRUE(tool.step(right).ok());
+    const auto after_split = snapshot(mesh);
+    const auto idle = tool.step(left);
+    ASSERT_TRUE(idle.ok()) << idle.reason();
+    EXPECT_TRUE(idle->elements.empty());
+    EXPECT_EQ(tool.steps(), 2u);
+    ASSERT_TRUE(tool.undo_step().ok());
+    EXPECT_TRUE(snapshot(mesh) == after_split);
+    ASSERT_TRUE(tool.undo_step().ok());
+    EXPECT_TRUE(snapshot(mesh) == start);
+    EXPECT_EQ(tool.undo_step().reason(), "undo_step: the session has no step to undo");
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(ToolSession, CancelTakesBackEveryStep) {
     Mesh mesh = test::planar_grid(4);
     const auto start = snapshot(mesh);

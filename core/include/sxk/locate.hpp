@@ -142,6 +142,11 @@ public:
     // triangle's bounding box.
     TriangleHits elements_hit_by_triangle(const Point& a, const Point& b, const Point& c) const;
 
+    // The elements with at least one vertex in the closed axis-aligned box [low, high] (each
+    // coordinate compared exactly), sorted by id: what a brush of that size touches. Planar
+    // meshes ignore z. Empty when low > high along an axis or a bound is NaN.
+    std::vector<ElementId> elements_with_vertex_in_box(const Point& low, const Point& high) const;
+
     // The point of the boundary (the faces without a mate) nearest x, with its face, or none when
     // the mesh has no boundary. Ties between faces go to either.
     BoundaryPoint nearest_boundary_point(const Point& x) const;

@@ -83,9 +83,11 @@ protected:
 private:
     Mesh& m_mesh;
     JournalScope m_journal;
-    // per kept step: whether it is an entry of the journal's history (undo_step can take it
-    // back) or part of an application's step
-    std::vector<bool> m_kept;
+    // per kept step: an entry of the journal's history (undo_step takes it back), part of an
+    // application's open step (the application undoes it), or a step that changed nothing (the
+    // journal keeps no entry for it; undoing it is taking back nothing)
+    enum class Kept : std::uint8_t { history_entry, application_step, nothing };
+    std::vector<Kept> m_kept;
     std::uint64_t m_revision = 0;  // the mesh's revision after this session's last change
     bool m_ended = false;
 };
