@@ -1,7 +1,7 @@
 // Private helpers shared by split_edge.cpp, split_face.cpp, split_element.cpp,
 // collapse_edge.cpp and flip_edge.cpp: exact orientation of a simplex that is not (yet) an
 // element, with some vertices at positions that are not (yet) in the mesh, filtered exact tests
-// on triangles in space, the elements around a vertex or a simplex (allocation-free walks), and
+// on triangles in space, the elements around a simplex (on the star walks of star_walk.hpp), and
 // the common transaction of the three splits (split_parents).
 #pragma once
 
@@ -107,105 +107,6 @@ inline Sign normal_alignment_filtered(const Point& a, const Point& b, const Poin
         if (dot < -bound) return Sign::negative;
     }
     return normal_alignment(a, b, c, d, e, f);
-}
-
-// ---- star walks without allocation -------------------------------------------------------------
-// Triangle meshes: star(v) in exactly sxk::star's order, visited by two walks round v's fan
-// instead of a breadth-first search. A breadth-first walk from the anchor over a fan (a path or
-// a cycle of triangles joined by edges containing v, which every vertex of a valid triangle mesh
-// has) meets the anchor, then one triangle per branch and level, the branch through the
-// anchor's lower face index first; two walks, one per branch, advanced level by level, meet the
-// triangles in that order without a list of the ones seen, and their loads are two independent
-// chains (the walk is bound by cache misses). visit(t) returns true to stop. Returns false,
-// having visited a prefix of star(v) only, when v's star is not a fan (an invalid mesh): the
-// caller then walks it breadth first.
-// walk_fan_from starts at any triangle `anchor` of star(v) instead of v's anchor (the order is
-// then breadth first from that triangle).
-template <class Visit>
-bool walk_fan_from(const Mesh& mesh, VertexId v, ElementId anchor, Visit&& visit) {
-    if (anchor == invalid_id) return true;
-    if (visit(anchor)) return true;
-    const Simplex& first = mesh.simplex(anchor);
-    // one walk per face of the anchor containing v, in face index order: at triangle t it leaves
-    // across the edge opposite x (x in t, x != v)
-    struct Walk {
-        ElementId t;
-        VertexId x;
-        ElementId next = invalid_id;
-    };
-    std::array<Walk, 2> walks{};
-    for (int j = 0, w = 0; j < 3; ++j)
-        if (first.vertex(j) != v && w < 2) walks[static_cast<std::size_t>(w++)] = {anchor, first.vertex(j)};
-    for (std::size_t level = 0; walks[0].t != invalid_id || walks[1].t != invalid_id; ++level) {
-        if (level > mesh.element_count()) return false;
-        for (Walk& w : walks) {
-            if (w.t == invalid_id) continue;
-            const int i = mesh.simplex(w.t).index(w.x);
-            if (i < 0) return false;
-            w.next = mesh.neighbor(w.t, i);
-        }
-        const bool both = walks[0].t != invalid_id && walks[1].t != invalid_id;
-        // a cycle of odd length closes when a walk steps onto the other's triangle, one of even
-        // length on a triangle both step onto (met once, by the first walk)
-        if (both && (walks[0].next == walks[1].t || walks[1].next == walks[0].t)) return true;
-        if (both && walks[0].next == walks[1].next && walks[0].next != invalid_id) {
-            (void)visit(walks[0].next);
-            return true;
-        }
-        for (Walk& w : walks) {
-            if (w.t == invalid_id) continue;
-            if (w.next == invalid_id) {  // the boundary: this branch is done
-                w.t = invalid_id;
-                continue;
-            }
-            if (w.next == anchor) return false;  // a branch came round alone: not a fan
-            if (visit(w.next)) return true;
-            // next was entered across {v, y}, y the vertex of t other than v and x: leave it
-            // across the edge opposite y
-            const Simplex& tau = mesh.simplex(w.t);
-            for (int j = 0; j < 3; ++j)
-                if (tau.vertex(j) != v && tau.vertex(j) != w.x) {
-                    w.x = tau.vertex(j);
-                    break;
-                }
-            w.t = w.next;
-        }
-    }
-    return true;
-}
-
-template <class Visit>
-bool walk_fan(const Mesh& mesh, VertexId v, Visit&& visit) {
-    return walk_fan_from(mesh, v, mesh.vertex_element(v), std::forward<Visit>(visit));
-}
-
-// star(v) in the order sxk::star lists it (breadth first from v's anchor, faces in index order),
-// appended to `out`: no allocation for stars of up to N elements.
-template <std::size_t N>
-void star_into(const Mesh& mesh, VertexId v, SmallVector<ElementId, N>& out) {
-    const ElementId anchor = mesh.vertex_element(v);
-    if (anchor == invalid_id) return;
-    const std::size_t first = out.size();
-    if (mesh.topological_dimension() == 2) {
-        if (walk_fan(mesh, v, [&](ElementId t) {
-                out.push_back(t);
-                return false;
-            }))
-            return;
-        out.resize(first);  // not a fan: breadth first below
-    }
-    out.push_back(anchor);
-    const int k = mesh.element_vertex_count();
-    for (std::size_t next = first; next < out.size(); ++next) {
-        const ElementId t = out[next];
-        const Simplex& tau = mesh.simplex(t);
-        for (int i = 0; i < k; ++i) {
-            if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
-            const ElementId n = mesh.neighbor(t, i);
-            if (n != invalid_id && std::find(out.begin() + first, out.end(), n) == out.end())
-                out.push_back(n);
-        }
-    }
 }
 
 // i such that mesh.face(t, i) == f (Mesh::face_slot when t = face_element(f), inline).
