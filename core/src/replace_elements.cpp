@@ -13,6 +13,7 @@
 
 #include "edit_log.hpp"
 #include "mesh_checks.hpp"
+#include "star_walk.hpp"
 #include "sxk/mesh.hpp"
 #include "undo_log.hpp"
 
@@ -46,11 +47,10 @@ bool sorted_contains(const Sorted& sorted, const T& value) {
 constexpr std::size_t small_edit = 16;
 constexpr std::size_t star_inline = 256;
 
-// The stars of every vertex an edit touches, each walked ONCE (from the anchor, across faces
-// containing the vertex, as has_face_outside and star_pieces_after walk them) and used both for
-// the invariant 7.4 checks and for the star connectivity check. star(vertices[k]) before the
-// edit is elements[offsets[k] .. offsets[k+1]); pieces[k] is the number of face-connected
-// pieces it would have after the edit.
+// The stars of every vertex an edit touches, each walked ONCE (for_each_in_star, star_walk.hpp)
+// and used both for the invariant 7.4 checks and for the star connectivity check.
+// star(vertices[k]) before the edit is elements[offsets[k] .. offsets[k+1]); pieces[k] is the
+// number of face-connected pieces it would have after the edit.
 //
 // Star pieces without sorting the whole star: two elements that stay and are mates across a
 // face containing v are joined as the walk meets them; only faces that lose their mate (to a
@@ -85,63 +85,12 @@ std::uint64_t face_key(const Simplex& tau, int i, VertexId v) {
 
 int face_sign(const Simplex& tau, int i) { return (i & 1) ? -tau.sign() : tau.sign(); }
 
-// Where each element met by one star walk sits in the walk's list: a scan while the list is
-// short (a 3D star has ~25 elements), then an open-addressing table that doubles as the list
-// grows, so that the stars of large edits (an AMP replay replaces thousands of elements around
-// vertices with hundreds in their star) cost linear, not quadratic, time.
-class StarPositions {
-public:
-    // The position of t in the list, or the list's size when absent.
-    std::uint32_t find(std::span<const ElementId> list, ElementId t) {
-        m_list = list;
-        if (list.size() <= scanned) {
-            const auto it = std::find(list.begin(), list.end(), t);
-            return static_cast<std::uint32_t>(it - list.begin());
-        }
-        if (2 * list.size() > m_slots.size()) rebuild();
-        catch_up();
-        for (std::size_t slot = hash(t);; slot = (slot + 1) & (m_slots.size() - 1)) {
-            if (m_slots[slot].element == invalid_id) return static_cast<std::uint32_t>(list.size());
-            if (m_slots[slot].element == t) return m_slots[slot].position;
-        }
-    }
-
-private:
-    struct Slot {
-        ElementId element;
-        std::uint32_t position;
-    };
-    static constexpr std::size_t scanned = 32;
-    std::size_t hash(ElementId t) const { return (t * 2654435761u) & (m_slots.size() - 1); }
-    void insert(ElementId t, std::uint32_t position) {
-        std::size_t slot = hash(t);
-        while (m_slots[slot].element != invalid_id) slot = (slot + 1) & (m_slots.size() - 1);
-        m_slots[slot] = {t, position};
-    }
-    void rebuild() {
-        std::size_t size = 128;
-        while (size < 4 * m_list.size()) size *= 2;
-        m_slots.assign(size, Slot{invalid_id, 0});
-        m_indexed = 0;
-    }
-    // enters the elements appended to the list since the last look-up
-    void catch_up() {
-        for (; m_indexed < m_list.size(); ++m_indexed)
-            insert(m_list[m_indexed], static_cast<std::uint32_t>(m_indexed));
-    }
-    std::span<const ElementId> m_list;
-    std::vector<Slot> m_slots;
-    std::size_t m_indexed = 0;
-};
-
 // Walks star(v) of `mesh`, appends its elements to stars.elements and returns the number of
 // pieces it would have after removing `removed` (sorted) and adding `added`.
 std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId> removed,
                         std::span<const Simplex> added, TouchedStars& stars,
                         detail::SmallVector<std::uint32_t, star_inline>& parent,
                         detail::SmallVector<OpenFace, star_inline>& open) {
-    auto& seen = stars.elements;
-    const std::size_t base = seen.size();
     parent.clear();
     open.clear();
     std::uint32_t nodes = 0, unions = 0;
@@ -157,37 +106,31 @@ std::uint32_t walk_star(const Mesh& mesh, VertexId v, std::span<const ElementId>
             ++unions;
         }
     };
-    const int k = mesh.element_vertex_count();
-    StarPositions positions;
-    if (mesh.vertex_element(v) != invalid_id) {
-        seen.push_back(mesh.vertex_element(v));
-        parent.push_back(0);
-        for (std::size_t next = base; next < seen.size(); ++next) {
-            const ElementId t = seen[next];
-            const auto local = static_cast<std::uint32_t>(next - base);
-            const bool stays = !sorted_contains(removed, t);
+    detail::StarList around;
+    // every element of the star is a node of its own until joined
+    auto add_listed_nodes = [&] {
+        while (parent.size() < around.size()) parent.push_back(static_cast<std::uint32_t>(parent.size()));
+    };
+    bool stays = false;  // of the element whose faces are crossed
+    detail::for_each_in_star(
+        mesh, v, mesh.vertex_element(v), around,
+        [&](std::size_t, ElementId t, const Simplex&) {
+            stays = !sorted_contains(removed, t);
             nodes += stays;
-            const Simplex& tau = mesh.simplex(t);
-            for (int i = 0; i < k; ++i) {
-                if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
-                const ElementId n = mesh.neighbor(t, i);
-                std::uint32_t position = 0;
-                if (n != invalid_id) {
-                    const std::span<const ElementId> list(seen.begin() + base, seen.end());
-                    position = positions.find(list, n);
-                    if (position == list.size()) {
-                        seen.push_back(n);
-                        parent.push_back(position);
-                    }
-                }
-                if (!stays) continue;
-                if (n != invalid_id && !sorted_contains(removed, n))
-                    join(local, position);
-                else
-                    open.push_back({face_key(tau, i, v), face_sign(tau, i), local});
-            }
-        }
-    }
+            return false;
+        },
+        [&](std::size_t position, const Simplex& tau, int i, ElementId n, std::size_t n_position) {
+            add_listed_nodes();
+            if (!stays) return;
+            const auto local = static_cast<std::uint32_t>(position);
+            if (n != invalid_id && !sorted_contains(removed, n))
+                join(local, static_cast<std::uint32_t>(n_position));
+            else
+                open.push_back({face_key(tau, i, v), face_sign(tau, i), local});
+        });
+    add_listed_nodes();
+    for (const ElementId t : around) stars.elements.push_back(t);
+    const int k = mesh.element_vertex_count();
     for (const Simplex& tau : added) {
         if (!tau.contains(v)) continue;
         const auto node = static_cast<std::uint32_t>(parent.size());
@@ -234,27 +177,19 @@ bool exists_outside(const Mesh& mesh, const Simplex& sigma, std::span<const Elem
 }  // namespace
 
 bool Mesh::has_face_outside(const Simplex& sigma, std::span<const ElementId> excluded) const {
-    // sigma's elements all contain sigma.vertex(0): walk that vertex's star (face-connected in
-    // a valid mesh) and look for sigma in elements that are not excluded.
+    // sigma's elements all contain sigma.vertex(0): walk that vertex's star and look for sigma
+    // in elements that are not excluded.
     const VertexId v = sigma.vertex(0);
-    if (m_vertex_element[v] == invalid_id) return false;
-    std::vector<ElementId> seen{m_vertex_element[v]};
-    for (std::size_t next = 0; next < seen.size(); ++next) {
-        const ElementId t = seen[next];
-        const Simplex& tau = m_elements[t].simplex;
-        const bool counts = std::find(excluded.begin(), excluded.end(), t) == excluded.end();
+    detail::StarList around;
+    return detail::for_each_in_star(*this, v, m_vertex_element[v], around, [&](std::size_t, ElementId t, const Simplex& tau) {
+        if (std::find(excluded.begin(), excluded.end(), t) != excluded.end()) return false;
         // a whole element with sigma's vertices (either orientation) also counts: an element
         // and its mirror image glued along all faces is no simplicial mesh
-        if (counts && sigma.count() == m_dimension + 1 && tau.same_vertices(sigma)) return true;
-        for (int i = 0; i <= m_dimension; ++i) {
-            if (counts && tau.subn(i) == sigma) return true;
-            if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
-            const ElementId n = neighbor(t, i);
-            if (n != invalid_id && std::find(seen.begin(), seen.end(), n) == seen.end())
-                seen.push_back(n);
-        }
-    }
-    return false;
+        if (sigma.count() == m_dimension + 1 && tau.same_vertices(sigma)) return true;
+        for (int i = 0; i <= m_dimension; ++i)
+            if (tau.subn(i) == sigma) return true;
+        return false;
+    });
 }
 
 Outcome<std::vector<ElementId>> Mesh::replace_elements(std::span<const ElementId> old_elements,

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "star_walk.hpp"
 #include "sxk/mesh.hpp"
 
 namespace sxk {
@@ -24,20 +25,11 @@ std::size_t Mesh::star_pieces_after(VertexId v, std::span<const ElementId> remov
             if (tau.vertex(i) != v) faces.push_back({tau.subn(i), nodes});
         ++nodes;
     };
-    if (m_vertex_element[v] != invalid_id) {
-        std::vector<ElementId> seen{m_vertex_element[v]};
-        for (std::size_t next = 0; next < seen.size(); ++next) {
-            const ElementId t = seen[next];
-            const Simplex& tau = m_elements[t].simplex;
-            if (!std::binary_search(removed.begin(), removed.end(), t)) add_node(tau);
-            for (int i = 0; i <= m_dimension; ++i) {
-                if (tau.vertex(i) == v) continue;
-                const ElementId n = neighbor(t, i);
-                if (n != invalid_id && std::find(seen.begin(), seen.end(), n) == seen.end())
-                    seen.push_back(n);
-            }
-        }
-    }
+    detail::StarList around;
+    detail::for_each_in_star(*this, v, m_vertex_element[v], around, [&](std::size_t, ElementId t, const Simplex& tau) {
+        if (!std::binary_search(removed.begin(), removed.end(), t)) add_node(tau);
+        return false;
+    });
     for (const Simplex& tau : added)
         if (tau.contains(v)) add_node(tau);
     if (nodes <= 1) return nodes;

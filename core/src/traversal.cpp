@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "star_walk.hpp"
+
 namespace sxk {
 
 std::vector<ElementId> cycle_around(const Mesh& mesh, FaceId entry, int j) {
@@ -33,20 +35,9 @@ std::vector<ElementId> cycle_around(const Mesh& mesh, FaceId entry, int j) {
 }
 
 void collect_star(const Mesh& mesh, VertexId v, ElementId start, std::vector<ElementId>& out) {
-    if (start == invalid_id) return;
-    const std::size_t first = out.size();
-    out.push_back(start);
-    const int k = mesh.element_vertex_count();
-    for (std::size_t next = first; next < out.size(); ++next) {
-        const ElementId t = out[next];
-        const Simplex& tau = mesh.simplex(t);
-        for (int i = 0; i < k; ++i) {
-            if (tau.vertex(i) == v) continue;  // the face opposite v does not contain v
-            const ElementId n = mesh.neighbor(t, i);
-            if (n != invalid_id && std::find(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), n) == out.end())
-                out.push_back(n);
-        }
-    }
+    detail::StarList around;
+    detail::list_star(mesh, v, start, around);
+    out.insert(out.end(), around.begin(), around.end());
 }
 
 std::vector<ElementId> star(const Mesh& mesh, VertexId v) {

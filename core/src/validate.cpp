@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "mesh_checks.hpp"
+#include "star_walk.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/predicates.hpp"
 
@@ -229,8 +231,23 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
     for (ElementId t = 0; t < m_elements.size(); ++t)
         if (is_element(t))
             for (VertexId v : m_elements[t].simplex.vertices()) ++incidence[v];
-    std::vector<VertexId> stamp(m_elements.size(), invalid_id);
-    std::vector<ElementId> stack;
+    // The walks' list marks each element with the vertex whose star it was last listed in (and
+    // its position there), so that walking every star costs O(1) per element met.
+    struct MarkedStar {
+        std::vector<std::pair<VertexId, std::uint32_t>>& marks;  // per element of the pool
+        VertexId v;
+        std::vector<ElementId>& elements;
+        std::size_t size() const { return elements.size(); }
+        ElementId operator[](std::size_t i) const { return elements[i]; }
+        std::size_t insert(ElementId t) {
+            if (marks[t].first == v) return marks[t].second;
+            marks[t] = {v, static_cast<std::uint32_t>(elements.size())};
+            elements.push_back(t);
+            return elements.size() - 1;
+        }
+    };
+    std::vector<std::pair<VertexId, std::uint32_t>> marks(m_elements.size(), {invalid_id, 0});
+    std::vector<ElementId> listed;
     for (VertexId v = 0; v < vertex_count(); ++v) {
         const ElementId a = m_vertex_element[v];
         if (incidence[v] == 0) {
@@ -245,22 +262,10 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
                            "vertex anchor: vertex " + std::to_string(v) + " names element " +
                            (a == invalid_id ? std::string("none") : std::to_string(a)) +
                            ", which does not contain it"};
-        std::uint32_t reached = 0;
-        stack.assign(1, a);
-        stamp[a] = v;
-        while (!stack.empty()) {
-            const ElementId t = stack.back();
-            stack.pop_back();
-            ++reached;
-            for (int i = 0; i < k; ++i) {
-                if (m_elements[t].simplex.vertex(i) == v) continue;
-                const ElementId n = neighbor(t, i);
-                if (n != invalid_id && stamp[n] != v) {
-                    stamp[n] = v;
-                    stack.push_back(n);
-                }
-            }
-        }
+        listed.clear();
+        MarkedStar listing{marks, v, listed};
+        detail::for_each_in_star(*this, v, a, listing, [](std::size_t, ElementId, const Simplex&) { return false; });
+        const std::size_t reached = listed.size();
         if (reached != incidence[v])
             return Refusal{RefusalCode::invalid_mesh,
                            "star connectivity: the star of vertex " + std::to_string(v) +

@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "fixtures.hpp"
+#include "star_walk.hpp"
 
 namespace sxk {
 namespace {
@@ -69,6 +73,49 @@ TEST(Star, OfAnIsolatedVertexIsEmpty) {
     const VertexId lonely = mesh.add_vertex({5, 5, 0});
     EXPECT_TRUE(star(mesh, lonely).empty());
     EXPECT_TRUE(mesh.validate().ok());
+}
+
+// A disk of n triangles around vertex 0: a star far beyond StarList's table in place.
+TEST(Star, OfAVertexWithHundredsOfElements) {
+    constexpr VertexId n = 400;
+    Mesh mesh(2, 2);
+    mesh.add_vertex({0, 0, 0});
+    for (VertexId i = 0; i < n; ++i) {
+        const double angle = 2 * 3.141592653589793 * i / n;
+        mesh.add_vertex({std::cos(angle), std::sin(angle), 0});
+    }
+    std::vector<Simplex> triangles;
+    for (VertexId i = 0; i < n; ++i) triangles.push_back(Simplex(+1, {0, 1 + i, 1 + (i + 1) % n}));
+    ASSERT_TRUE(mesh.assign_elements(triangles).ok());
+    ASSERT_TRUE(mesh.validate().ok());
+    const std::vector<ElementId> around = star(mesh, 0);
+    EXPECT_EQ(sorted(around), brute_force_containing(mesh, Simplex(+1, {0})));
+    // breadth first from the anchor: every element after the first is a neighbour of an
+    // element listed before it
+    for (std::size_t i = 1; i < around.size(); ++i) {
+        bool reached = false;
+        for (std::size_t j = 0; j < i && !reached; ++j)
+            for (int s = 0; s < 3; ++s) reached = reached || mesh.neighbor(around[j], s) == around[i];
+        EXPECT_TRUE(reached) << i;
+    }
+}
+
+// The walk's list (core/src/star_walk.hpp) answers positions like a scanned list, through its
+// scanned start, its table in place and the heap tables it grows into.
+TEST(StarList, GivesThePositionsOfAScannedList) {
+    detail::StarList list;
+    std::vector<ElementId> expected;
+    std::uint32_t x = 12345;
+    for (int step = 0; step < 5000; ++step) {
+        x = x * 1664525u + 1013904223u;
+        const ElementId t = (x >> 8) % 1500;
+        const auto found = std::find(expected.begin(), expected.end(), t);
+        const std::size_t position = static_cast<std::size_t>(found - expected.begin());
+        if (found == expected.end()) expected.push_back(t);
+        ASSERT_EQ(list.insert(t), position) << "step " << step;
+        ASSERT_EQ(list.size(), expected.size());
+    }
+    EXPECT_TRUE(std::equal(list.begin(), list.end(), expected.begin(), expected.end()));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// The fast paths of the surface operations (core/src/ops/split_collapse_checks.hpp, used by
-// flip_edge, split_edge and collapse_edge) against the slow definitions they replace:
+// The fast paths of the surface operations (core/src/ops/filtered_triangle_tests.hpp,
+// edge_star.hpp, link_condition.hpp, core/src/star_walk.hpp; used by flip_edge, split_edge and
+// collapse_edge) against the slow definitions they replace:
 //
 //   triangle_normal + collinear_filtered / normal_alignment_filtered   sxk::collinear,
 //                                                                       sxk::normal_alignment
@@ -25,7 +26,9 @@
 
 #include "../../fuzz/ops_driver.hpp"
 #include "core/fixtures.hpp"
-#include "ops/split_collapse_checks.hpp"
+#include "ops/edge_star.hpp"
+#include "ops/filtered_triangle_tests.hpp"
+#include "ops/link_condition.hpp"
 #include "split_collapse_fixtures.hpp"
 #include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/flip_edge.hpp"

@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/edge_star.hpp"
 #include "ops/split_collapse_fixtures.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/refine_around_tetrahedra.hpp"

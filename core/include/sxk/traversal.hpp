@@ -20,8 +20,8 @@ SXK_API std::vector<ElementId> cycle_around(const Mesh& mesh, FaceId entry, int 
 // no element.
 SXK_API std::vector<ElementId> star(const Mesh& mesh, VertexId v);
 
-// The same walk starting from a given element that contains v; appends to `out`.
-// `scratch` avoids allocation in hot loops (it is cleared first).
+// The same walk starting from a given element that contains v; appends to `out` (which may hold
+// other elements: only the walk's own are listed once each).
 SXK_API void collect_star(const Mesh& mesh, VertexId v, ElementId start,
                           std::vector<ElementId>& out);
 

@@ -19,7 +19,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/edge_star.hpp"
+#include "ops/orientation_checks.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/split_edge.hpp"
 #include "sxk/outcome.hpp"

@@ -9,7 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/filtered_triangle_tests.hpp"
+#include "ops/link_condition.hpp"
+#include "ops/orientation_checks.hpp"
 #include "sxk/quality.hpp"
 
 namespace sxk {
@@ -83,7 +85,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
                            " is on the boundary: the collapse would move the boundary"};
 
     // Link condition (thesis Fig. 3.10): otherwise the result is not a manifold. Triangle meshes
-    // test it on the two stars directly (split_collapse_checks.hpp: the same answer).
+    // test it on the two stars directly (link_condition.hpp: the same answer).
     if (!(mesh.topological_dimension() == 2
               ? detail::link_condition_holds_2d(mesh, star_from, star_to, from, to)
               : detail::link_condition_holds(mesh, star_from, star_to, from, to)))
@@ -156,7 +158,7 @@ Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail:
             // A triangle in space: flat when its vertices are collinear (simplex_orientation's
             // Sign::zero; it is never "inverted"); and it cannot be inverted, but it can turn
             // over: compare the normal before and after (degree-4 sign, exact). Both tests on
-            // normals computed once (filtered exact tests, split_collapse_checks.hpp).
+            // normals computed once (filtered exact tests, filtered_triangle_tests.hpp).
             const Simplex& old_simplex = before(i);
             std::array<Point, 3> old_points{}, new_points{};
             for (int j = 0; j < 3; ++j) {

@@ -6,13 +6,22 @@
 #include <string>
 
 #include "mesh_checks.hpp"
+#include "ops/edge_star.hpp"
+#include "ops/filtered_triangle_tests.hpp"
 #include "ops/label_constraints.hpp"
-#include "ops/split_collapse_checks.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk {
 namespace {
+
+// i such that mesh.face(t, i) == f (Mesh::face_slot when t = face_element(f), inline).
+int slot_of(const Mesh& mesh, ElementId t, FaceId f) {
+    const int k = mesh.element_vertex_count();
+    for (int i = 0; i < k; ++i)
+        if (mesh.face(t, i) == f) return i;
+    return -1;
+}
 
 std::string vertex_set(std::array<VertexId, 3> v) {
     std::sort(v.begin(), v.end());
@@ -45,7 +54,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     // face_simplex(edge), c and d without Mesh::face_slot calls: t0's slot of `edge` is the
     // index of c (invariant 7.1)
     const ElementId t0 = mesh.face_element(edge);
-    const int slot0 = detail::slot_of(mesh, t0, edge);
+    const int slot0 = slot_of(mesh, t0, edge);
     const Simplex edge_simplex = mesh.simplex(t0).subn(slot0);
     // the oriented edge <a,b> as t0 = <a,b,c> sees it (t0 = edge_simplex.sup(c))
     const VertexId a = edge_simplex.sign() > 0 ? edge_simplex.vertex(0) : edge_simplex.vertex(1);
@@ -60,7 +69,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
     if (auto refused = detail::refuse_material_interface(mesh, pair, "flip_edge"))
         return *refused;
     const VertexId c = mesh.simplex(t0).vertex(slot0);
-    const VertexId d = mesh.simplex(t1).vertex(detail::slot_of(mesh, t1, mate));
+    const VertexId d = mesh.simplex(t1).vertex(slot_of(mesh, t1, mate));
 
     // Thesis Fig. 5.9: when c-d is already an edge the flip would represent it twice (on a
     // surface: anywhere; in the plane: a vertex of degree 3). Walking around c (its fan of
@@ -90,7 +99,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
         } else {
             // a triangle in space has no orientation of its own, but a collinear one has no
             // normal and is never a valid element, whatever the caller decided. Each normal is
-            // computed once (filtered exact tests, split_collapse_checks.hpp) for both the
+            // computed once (filtered exact tests, filtered_triangle_tests.hpp) for both the
             // collinearity and the fold test.
             const std::array<detail::TriangleNormal, 2> normals{
                 detail::triangle_normal(p(a), p(d), p(c)), detail::triangle_normal(p(d), p(b), p(c))};

@@ -5,7 +5,7 @@
 // Mesh::face_labels() keys a label by the sorted vertex set of a (d-1)-face; validate() checks
 // that every key is a face of the mesh. A label marks a constraint (a material interface drawn
 // as faces, a boundary patch); the splits, collapse and dissect carry labels over to the faces
-// that descend from a labelled one (split_collapse_checks.hpp, collapse_edge.cpp, dissect.cpp),
+// that descend from a labelled one (split_parents.hpp, collapse_edge.cpp, dissect.cpp),
 // but a flip removes a face and makes one across it: there is no descendant to carry the label,
 // so the flips refuse, and make_delaunay_by_flips leaves such an edge (constrained Delaunay).
 #pragma once

@@ -3,7 +3,8 @@
 
 #include <array>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/edge_star.hpp"
+#include "ops/split_parents.hpp"
 
 namespace sxk {
 

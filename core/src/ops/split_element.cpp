@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/split_parents.hpp"
 
 namespace sxk {
 

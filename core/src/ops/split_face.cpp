@@ -1,7 +1,7 @@
 // split_face (thesis §3.2 subdivision; connectivity edit by §7.3 replace-elements).
 #include "sxk/ops/split_face.hpp"
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/split_parents.hpp"
 
 namespace sxk {
 

@@ -9,7 +9,7 @@
 #include <span>
 #include <utility>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/orientation_checks.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/traversal.hpp"
 
@@ -31,7 +31,7 @@ const Point& AmpClosurePlan::position(VertexId v, Positions positions) const {
     return positions == Positions::reference ? planned.reference : planned.deformed;
 }
 
-// simplex_orientation (split_collapse_checks.hpp) on the overlay's positions
+// simplex_orientation (orientation_checks.hpp) on the overlay's positions
 Sign AmpClosurePlan::orientation(const Simplex& s, Positions positions) const {
     const Sign raw = orient3d(position(s.vertex(0), positions), position(s.vertex(1), positions),
                               position(s.vertex(2), positions), position(s.vertex(3), positions));

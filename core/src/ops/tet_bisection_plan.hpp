@@ -31,7 +31,8 @@
 #include <utility>
 #include <vector>
 
-#include "ops/split_collapse_checks.hpp"
+#include "ops/edge_star.hpp"
+#include "ops/orientation_checks.hpp"
 #include "ops/tet_bisection_recursion.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -189,7 +190,7 @@ private:
         return (std::uint64_t(low) << 32) | high;
     }
 
-    // simplex_orientation (split_collapse_checks.hpp) on the overlay's positions
+    // simplex_orientation (orientation_checks.hpp) on the overlay's positions
     Sign orientation(const Simplex& s, Positions positions) const {
         const Sign raw = orient3d(position(s.vertex(0), positions), position(s.vertex(1), positions),
                                   position(s.vertex(2), positions), position(s.vertex(3), positions));
