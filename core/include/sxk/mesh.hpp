@@ -58,7 +58,9 @@ using Point = std::array<double, 3>;
 
 class EditJournal;
 namespace detail {
+class EditLog;
 class UndoLog;
+struct ReplacePlan;
 
 // One attribute's values: those of vertex (or element) i at [i * components, (i+1) * components).
 // components == 0 marks a removed attribute (its id is not reused). Vertex and element
@@ -439,6 +441,18 @@ private:
                                                           std::span<const Simplex> new_simplexes,
                                                           std::span<const int> labels,
                                                           std::span<const std::uint32_t> origins, bool proven);
+    // Its phases after the checks, in this order (core/src/replace_elements.cpp): labels,
+    // inherited attribute values, old vertices and neighbours read while the old elements exist;
+    // the old faces detached and the old elements freed; new face pairs made mates; the new
+    // elements allocated onto reused and paired faces; their attribute rows written; their other
+    // faces mated across the boundary or put on it; their neighbour cache set.
+    void read_before_removal(detail::ReplacePlan& plan) const;
+    void remove_old_elements(detail::ReplacePlan& plan, detail::EditLog& log);
+    void pair_new_faces(detail::ReplacePlan& plan, detail::EditLog& log);
+    void add_new_elements(detail::ReplacePlan& plan, detail::EditLog& log);
+    void give_inherited_attributes(const detail::ReplacePlan& plan);
+    void add_remaining_faces(detail::ReplacePlan& plan, detail::EditLog& log);
+    void link_new_elements(const detail::ReplacePlan& plan);
     // Grows every element attribute to the element pool's size, new slots at the default.
     void grow_element_attributes();
 
