@@ -179,6 +179,9 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
                     mesh.m_reference.push_back(entry.reference);
                     mesh.m_deformed.push_back(entry.deformed);
                     mesh.m_vertex_element.push_back(entry.anchor);
+                    // a vertex back at an id a watcher may have seen another vertex at (one the
+                    // step added and a rollback took away): its position is news, told as a move
+                    if (tell) moved.push_back(static_cast<VertexId>(mesh.m_reference.size() - 1));
                     std::size_t at = entry.offset;
                     for (detail::AttributeColumn& a : mesh.m_attributes) {
                         const auto n = static_cast<std::size_t>(a.components);
@@ -199,6 +202,7 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
     std::vector<FaceState> faces_after;
     for (ElementId t : elements) elements_after.push_back(element_state(t));
     for (FaceId f : faces) faces_after.push_back(face_state(f));
+    sort_unique(moved);
     moved.erase(std::remove_if(moved.begin(), moved.end(), [&](VertexId v) { return v >= mesh.vertex_count(); }),
                 moved.end());
     for (Watcher* w : mesh.m_watchers) {

@@ -176,7 +176,8 @@ struct MirrorWatcher : Watcher {
         reference.assign(mesh.reference_positions().begin(), mesh.reference_positions().end());
         deformed.assign(mesh.deformed_positions().begin(), mesh.deformed_positions().end());
     }
-    void element_removed(const Mesh&, ElementId t, const Simplex& was) override {
+    void element_removed(const Mesh& mesh, ElementId t, const Simplex& was) override {
+        grow(mesh);  // a rollback may have taken vertices away: ids past the count are forgotten
         const auto it = elements.find(t);
         ASSERT_NE(it, elements.end()) << "element " << t << " removed but not known";
         EXPECT_EQ(it->second, was) << "element " << t << " removed with another simplex";
@@ -190,6 +191,7 @@ struct MirrorWatcher : Watcher {
     }
     void element_added(const Mesh& mesh, ElementId t) override {
         EXPECT_TRUE(elements.emplace(t, mesh.simplex(t)).second) << "element " << t << " added twice";
+        grow(mesh);
     }
     void boundary_removed(const Mesh&, FaceId f, const Simplex& was) override {
         const auto it = boundary.find(f);
@@ -217,7 +219,9 @@ struct MirrorWatcher : Watcher {
             if (writes_deformed(which)) deformed[v] = mesh.deformed(v);
         }
     }
-    // Vertices have no event of their own: new ones are taken as the mesh has them.
+    // Vertices have no event of their own: new ones are taken as the mesh has them, at every
+    // element event, and ids past the vertex count are forgotten (a rollback took them away;
+    // an undo or redo that puts vertices back tells them as moved, docs/kernel.md "Watchers").
     void grow(const Mesh& mesh) {
         for (std::size_t v = reference.size(); v < mesh.vertex_count(); ++v) {
             reference.push_back(mesh.reference(static_cast<VertexId>(v)));
