@@ -44,11 +44,21 @@ std::vector<AttributeId> live_attributes(const AttributeTable& table) {
     return live;
 }
 
+namespace {
+
+// The refusal of an id that names no live column ("FUNCTION: ID is not KIND"), or nothing.
+std::optional<Refusal> refuse_unknown(const AttributeTable& table, AttributeId attribute, std::string_view function,
+                                      std::string_view kind) {
+    if (attribute < table.size() && table[attribute].components > 0) return std::nullopt;
+    return Refusal{RefusalCode::not_found,
+                   std::string(function) + ": " + std::to_string(attribute) + " is not " + std::string(kind)};
+}
+
+}  // namespace
+
 Outcome<Done> remove_attribute(AttributeTable& table, AttributeId attribute, std::string_view function,
                                std::string_view kind) {
-    if (attribute >= table.size() || table[attribute].components == 0)
-        return Refusal{RefusalCode::not_found, std::string(function) + ": " + std::to_string(attribute) +
-                                                   " is not " + std::string(kind)};
+    if (auto refused = refuse_unknown(table, attribute, function, kind)) return *refused;
     table[attribute] = AttributeColumn{};
     return Done{};
 }
@@ -56,9 +66,7 @@ Outcome<Done> remove_attribute(AttributeTable& table, AttributeId attribute, std
 std::optional<Refusal> refuse_value(const AttributeTable& table, AttributeId attribute,
                                     std::span<const double> value, std::string_view function,
                                     std::string_view kind) {
-    if (attribute >= table.size() || table[attribute].components == 0)
-        return Refusal{RefusalCode::not_found, std::string(function) + ": " + std::to_string(attribute) +
-                                                   " is not " + std::string(kind)};
+    if (auto refused = refuse_unknown(table, attribute, function, kind)) return refused;
     const auto n = static_cast<std::size_t>(table[attribute].components);
     if (value.size() != n)
         return Refusal{RefusalCode::bad_argument, std::string(function) + ": \"" + table[attribute].name +
