@@ -2,12 +2,15 @@
 // intersection of a segment or a triangle with an element or a face, nearest points and ray hits.
 // Decisions are exact (CGAL's filtered kernel, core/src/cgal_kernel.hpp); the quantities
 // (weights, distances, t) are computed in double precision.
+#include <CGAL/Exact_rational.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
+#include <vector>
 
 #include "cgal_kernel.hpp"
 #include "locate_trees.hpp"
@@ -247,13 +250,74 @@ RayHit ray_meets(const Mesh& mesh, const detail::ElementPoints& e, const Point& 
     return ray_hit_quantities(e, o, d);
 }
 
-// The weights of x in the sub-simplex of the vertices `kept` (the others get 0): least squares
+// The weights of x in the sub-simplex of the vertices `kept` (the others get 0), as ratios of
+// exact determinants: in the affine hull of the kept vertices (x lies there: the exact test put
+// it on exactly the faces opposite the others), projected onto the coordinate axes where the
+// kept simplex is not flat, which keeps every ratio. Each weight comes out within a few units in
+// the last place of its true value, however thin the element. Rational arithmetic costs tens of
+// microseconds, so it is the fallback of fast_weights_in below, taken when those fail their check.
+using Rational = CGAL::Exact_rational;
+
+Rational determinant(const std::array<std::array<Rational, 3>, 3>& a, int m) {
+    if (m == 1) return a[0][0];
+    if (m == 2) return a[0][0] * a[1][1] - a[0][1] * a[1][0];
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
+// The determinant of the m corners q[1..m] less q[0], on the axes `axes`.
+Rational projected_volume(const std::array<const Point*, 4>& q, int m, const std::array<std::size_t, 3>& axes) {
+    std::array<std::array<Rational, 3>, 3> a;
+    for (int j = 0; j < m; ++j)
+        for (int k = 0; k < m; ++k)
+            a[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] =
+                Rational((*q[static_cast<std::size_t>(j + 1)])[axes[static_cast<std::size_t>(k)]]) -
+                Rational((*q[0])[axes[static_cast<std::size_t>(k)]]);
+    return determinant(a, m);
+}
+
+std::array<double, 4> exact_weights_in(const detail::ElementPoints& e, const std::array<int, 4>& kept, int count,
+                                       const Point& x, int dimension) {
+    std::array<double, 4> w{};
+    const int m = count - 1;
+    std::array<const Point*, 4> q{};
+    for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) q[j] = e.p[static_cast<std::size_t>(kept[j])];
+    // the projections onto m of the `dimension` axes; the kept simplex is a face of an element
+    // that is not flat, so one of them at least is not flat either
+    std::vector<std::array<std::size_t, 3>> projections;
+    for (std::size_t a = 0; a < static_cast<std::size_t>(dimension); ++a) {
+        if (m == 1) projections.push_back({a, 0, 0});
+        for (std::size_t b = a + 1; b < static_cast<std::size_t>(dimension); ++b) {
+            if (m == 2) projections.push_back({a, b, 0});
+            for (std::size_t c = b + 1; c < static_cast<std::size_t>(dimension); ++c)
+                if (m == 3) projections.push_back({a, b, c});
+        }
+    }
+    for (const auto& axes : projections) {
+        const Rational whole = projected_volume(q, m, axes);
+        if (CGAL::is_zero(whole)) continue;
+        for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
+            std::array<const Point*, 4> part = q;
+            part[j] = &x;
+            w[static_cast<std::size_t>(kept[j])] = CGAL::to_double(projected_volume(part, m, axes) / whole);
+        }
+        break;
+    }
+    if (m == 0) w[static_cast<std::size_t>(kept[0])] = 1;
+    normalise(w);
+    return w;
+}
+
+// The weights of x in the sub-simplex of the vertices `kept` in double precision: least squares
 // of sum w_j p_j = x with sum w_j = 1 by Gram-Schmidt (orthogonal, not normalised: no square
-// roots, so the midpoint of an edge gets exactly 1/2 and 1/2), whose residual stays small for
-// thin elements, where ratios of volumes (Cramer's rule) gave points 0.02 away from x in the
-// random edit tests (tests/ops/locate_random_test.cpp).
+// roots, so the midpoint of an edge gets exactly 1/2 and 1/2). Cramer's rule in doubles gave
+// points 0.02 away from x in thin elements; this solve gave 1.75e-3 on a near-flat face of a
+// deformed tetrahedron (EditJournalRandom.JitteredKuhnCube, SXK_SEED=3763780165). So the answer
+// is checked: every kept weight must be positive (the exact test put x strictly inside the kept
+// simplex) and the weights must give back x to a few rounding errors of the coordinates'
+// magnitude; otherwise exact_weights_in answers.
 std::array<double, 4> weights_in(const detail::ElementPoints& e, const std::array<int, 4>& kept, int count,
-                                 const Point& x) {
+                                 const Point& x, int dimension) {
     const Point& base = *e.p[static_cast<std::size_t>(kept[0])];
     const auto k = static_cast<std::size_t>(count - 1);
     std::array<Point, 3> v{};                  // a_j made orthogonal to a_0..a_{j-1}
@@ -283,6 +347,23 @@ std::array<double, 4> weights_in(const detail::ElementPoints& e, const std::arra
         rest -= y[j];
     }
     w[static_cast<std::size_t>(kept[0])] = rest;
+    // the check: positive kept weights, and the point they give within 64 units in the last
+    // place of the largest coordinate involved
+    double magnitude = 0, miss = 0;
+    for (std::size_t m = 0; m < 3; ++m) {
+        double back = 0;
+        magnitude = std::max(magnitude, std::abs(x[m]));
+        for (std::size_t j = 0; j <= k; ++j) {
+            const Point& p = *e.p[static_cast<std::size_t>(kept[j])];
+            back += w[static_cast<std::size_t>(kept[j])] * p[m];
+            magnitude = std::max(magnitude, std::abs(p[m]));
+        }
+        miss = std::max(miss, std::abs(back - x[m]));
+    }
+    bool positive = true;
+    for (std::size_t j = 0; j <= k; ++j) positive = positive && w[static_cast<std::size_t>(kept[j])] > 0;
+    if (!positive || miss > 64 * std::numeric_limits<double>::epsilon() * magnitude)
+        return exact_weights_in(e, kept, count, x, dimension);
     normalise(w);
     return w;
 }
@@ -375,7 +456,7 @@ Location locate_in_element(const Mesh& mesh, ElementId t, const Point& x, Positi
         if (part != Sign::zero) kept[static_cast<std::size_t>(count++)] = i;
     }
     location.element = t;
-    location.barycentric = weights_in(e, kept, count, d == 2 ? planar(x) : x);
+    location.barycentric = weights_in(e, kept, count, d == 2 ? planar(x) : x, d);
     return location;
 }
 

@@ -55,6 +55,32 @@ TEST(SpatialIndex, LocatesInsideOnTheDiagonalAtAVertexAndOutside) {
     EXPECT_EQ(index.locate({0.25, 0.75, 0}, 77).element, 1u);
 }
 
+// A tetrahedron from EditJournalRandom.JitteredKuhnCube (SXK_SEED=3763780165, step 1776) and a
+// point the exact test puts strictly inside it. The double-precision solve gave weights
+// 0.585, -0.0061, 0.406, 0.0154, which reproduce x to 2e-16 and were then clamped to a point
+// 1.75e-3 away; the weights must be positive and give back x.
+TEST(SpatialIndex, WeightsInANearFlatTetrahedronArePositiveAndGiveBackThePoint) {
+    Mesh mesh(3, 3);
+    mesh.add_vertex({0x1.3575757575757p+0, 0x1.f737373737373p+0, 0x1.b636363636364p-1});
+    mesh.add_vertex({0x1.1a449a49f6e1cp+0, 0x1.6a6eb14e70898p+0, 0x1.f2dc60c11f3cfp-1});
+    mesh.add_vertex({0x1.a297c29a70e65p+0, 0x1.9e4061b0414dcp+0, 0x1.76107189a1289p+0});
+    mesh.add_vertex({0x1.b030303030302p+0, 0x1.e4a4a4a4a4a4ap+0, 0x1.66e6e6e6e6e6ep+0});
+    const std::array<Simplex, 1> tetrahedron{Simplex(+1, {0, 1, 2, 3})};
+    ASSERT_TRUE(mesh.assign_elements(tetrahedron).ok());
+    const Point x{0x1.63d69beea2f4bp+0, 0x1.d3a99622c65d7p+0, 0x1.1c0186394db9cp+0};
+    const Location found = locate_in_element(mesh, 0, x, Positions::reference, 0);
+    ASSERT_TRUE(found.found());
+    double sum = 0;
+    for (std::size_t j = 0; j < 4; ++j) {
+        EXPECT_GT(found.barycentric[j], 0.0) << "weight " << j;
+        sum += found.barycentric[j];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-15);
+    const Point back = test::point_of(mesh, found, Positions::reference);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(back[k], x[k], 1e-14) << "coordinate " << k;
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(SpatialIndex, SegmentsOnTheUnitSquare) {
     Mesh mesh = test::unit_square();
     const SpatialIndex index(mesh);
