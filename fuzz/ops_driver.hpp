@@ -98,7 +98,7 @@ struct Snapshot {
     std::vector<std::uint64_t> positions;  // bit patterns, reference then deformed per vertex
     std::vector<ElementId> anchors;
     std::vector<std::int64_t> elements;  // per slot: live, sign, vertices, label, faces, neighbours
-    std::vector<FaceId> faces;           // per slot: element, mate
+    std::vector<std::uint32_t> faces;    // per slot: element id, mate face id
     std::vector<FaceId> boundary;
     FaceLabels face_labels;
     std::vector<std::uint64_t> attributes;
@@ -123,8 +123,8 @@ inline Snapshot snapshot(const Mesh& mesh) {
         for (int i = 0; i < tau.count(); ++i) s.elements.push_back(mesh.neighbor(t, i));
     }
     for (FaceId f = 0; f < mesh.face_capacity(); ++f) {
-        s.faces.push_back(mesh.is_face(f) ? mesh.face_element(f) : invalid_id);
-        s.faces.push_back(mesh.is_face(f) ? mesh.mate(f) : invalid_id);
+        s.faces.push_back(mesh.is_face(f) ? mesh.face_element(f) : ElementId{invalid_id});
+        s.faces.push_back(mesh.is_face(f) ? mesh.mate(f) : FaceId{invalid_id});
     }
     s.boundary = mesh.boundary_faces();
     s.face_labels = mesh.face_labels();
@@ -516,7 +516,7 @@ inline Step run_step(Mesh& mesh, Choices& choices, std::size_t max_elements) {
         if (d == 2) {
 #ifdef SXK_OPS_DRIVER_HAS_REFINE_AROUND
             step.operation = "refine_around" + where;
-            record(refine_around(mesh, x, h, choices.next() % 2 ? t : invalid_id));
+            record(refine_around(mesh, x, h, choices.next() % 2 ? t : ElementId{invalid_id}));
 #endif
         } else {
 #ifdef SXK_OPS_DRIVER_HAS_REFINE_AROUND_TETRAHEDRA

@@ -241,7 +241,7 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
                 m_faces[f] = FaceRecord{static_cast<ElementId>(i), mates[f]};
                 // face ids are i * k + j here, so the mate's element is its id / k
                 e.neighbors[static_cast<std::size_t>(j)] =
-                    mates[f] == invalid_id ? invalid_id : static_cast<ElementId>(mates[f] / static_cast<std::size_t>(k));
+                    mates[f] == invalid_id ? ElementId{invalid_id} : static_cast<ElementId>(mates[f] / static_cast<std::size_t>(k));
                 if (mates[f] == invalid_id) m_boundary.insert(e.simplex.subn(j), static_cast<FaceId>(f));
                 ElementId& anchor = m_vertex_element[e.simplex.vertex(j)];
                 if (anchor == invalid_id) anchor = static_cast<ElementId>(i);
@@ -253,7 +253,8 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
         m_faces.clear();
         m_boundary.clear();
         std::fill(m_vertex_element.begin(), m_vertex_element.end(), invalid_id);
-        m_free_element = m_free_face = invalid_id;
+        m_free_element = invalid_id;
+        m_free_face = invalid_id;
         m_element_count = 0;
         throw;
     }
@@ -288,7 +289,8 @@ Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes
     m_elements.clear();
     m_faces.clear();
     m_boundary.clear();
-    m_free_element = m_free_face = invalid_id;
+    m_free_element = invalid_id;
+    m_free_face = invalid_id;
     std::fill(m_vertex_element.begin(), m_vertex_element.end(), invalid_id);
     for (detail::AttributeColumn& a : m_element_attributes) a.values.clear();  // allocate_element grows them
     for (std::size_t i = 0; i < simplexes.size(); ++i) {

@@ -86,7 +86,7 @@ VertexId Mesh::opposite_vertex(ElementId t, FaceId f) const {
 
 FaceId Mesh::opposite_face(ElementId t, VertexId v) const {
     const int i = m_elements[t].simplex.index(v);
-    return i < 0 ? invalid_id : m_elements[t].faces[static_cast<std::size_t>(i)];
+    return i < 0 ? FaceId{invalid_id} : m_elements[t].faces[static_cast<std::size_t>(i)];
 }
 
 int Mesh::face_slot(FaceId f) const {
@@ -117,7 +117,7 @@ std::vector<FaceId> Mesh::boundary_faces() const {
 ElementId Mesh::allocate_element() {
     if (m_free_element != invalid_id) {
         const ElementId t = m_free_element;
-        m_free_element = m_elements[t].faces[0];
+        m_free_element = ElementId{m_elements[t].faces[0]};  // a free element links the next in faces[0]
         element_for_write(t) = ElementRecord{};
         ++m_element_count;
         return t;
@@ -133,7 +133,7 @@ ElementId Mesh::allocate_element() {
 void Mesh::free_element(ElementId t) {
     ElementRecord& e = element_for_write(t);
     e = ElementRecord{};
-    e.faces[0] = m_free_element;
+    e.faces[0] = FaceId{m_free_element};  // the free list's link (allocate_element)
     m_free_element = t;
     --m_element_count;
 }

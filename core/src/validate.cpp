@@ -137,7 +137,7 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
         const ElementRecord& e = m_elements[t];
         for (std::size_t i = 0; i < uk; ++i) {
             const FaceId g = m_faces[e.faces[i]].mate;
-            const ElementId expected = g == invalid_id ? invalid_id : m_faces[g].element;
+            const ElementId expected = g == invalid_id ? ElementId{invalid_id} : m_faces[g].element;
             if (e.neighbors[i] != expected)
                 return Refusal{RefusalCode::invalid_mesh,
                                "neighbour cache: " + element_name(t, e.simplex) + " names " +

@@ -205,7 +205,7 @@ TEST(Flip23, RandomTwoThreeAndThreeTwoFlipsOnAJitteredKuhnCube) {
         bool ok = false;
         if (random() % 2 == 0) {
             // a random interior face
-            std::uniform_int_distribution<FaceId> pick(0, static_cast<FaceId>(mesh.face_capacity() - 1));
+            std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<FaceId>(mesh.face_capacity() - 1));
             FaceId f = pick(random);
             while (!mesh.is_face(f) || mesh.mate(f) == invalid_id) f = pick(random);
             const auto result = flip_23(mesh, f);
@@ -213,7 +213,7 @@ TEST(Flip23, RandomTwoThreeAndThreeTwoFlipsOnAJitteredKuhnCube) {
             accepted_23 += ok;
         } else {
             // a random edge of degree 3 (tried a few times; otherwise whatever edge was drawn)
-            std::uniform_int_distribution<ElementId> pick(0, static_cast<ElementId>(mesh.element_capacity() - 1));
+            std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<ElementId>(mesh.element_capacity() - 1));
             FaceId entry = invalid_id;
             int j = 0;
             for (int tries = 0; tries < 40; ++tries) {

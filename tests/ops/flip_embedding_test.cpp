@@ -39,7 +39,7 @@ TEST(FlipEmbedding, TrustingTheEmbeddingChangesNoOutcome) {
     int refused = 0;
     for (int attempt = 0; attempt < 6000; ++attempt) {
         const int kind = static_cast<int>(random() % 3);
-        std::uniform_int_distribution<ElementId> pick(0, static_cast<ElementId>(searching.element_capacity() - 1));
+        std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<ElementId>(searching.element_capacity() - 1));
         ElementId t = pick(random);
         while (!searching.is_element(t)) t = pick(random);
         const FaceId entry = searching.face(t, static_cast<int>(random() % 4));

@@ -117,7 +117,7 @@ std::vector<Mesh> small_triangle_meshes() {
 // A grid whose fans were reshaped by flips: vertices of odd and even degree, open and closed.
 Mesh flipped_grid() {
     Mesh flipped = test::planar_grid(4);
-    for (FaceId f = 0; f < flipped.face_capacity(); f += 3)
+    for (FaceId f = 0; f < flipped.face_capacity(); f = f + 3)
         if (flipped.is_face(f)) (void)flip_edge(flipped, f);
     EXPECT_TRUE(flipped.validate().ok());
     return flipped;

@@ -297,7 +297,7 @@ void print(const char* name, const Report& report) {
             p.elements_after, p.min_aspect_ratio_after);
     }
     for (std::size_t i = 0; i < report.remaining_reasons.size() && i < 20; ++i)
-        std::printf("[ figures  ]   remaining %u: %s\n", report.remaining_elements[i],
+        std::printf("[ figures  ]   remaining %u: %s\n", report.remaining_elements[i].value(),
                     report.remaining_reasons[i].c_str());
     std::fflush(stdout);
 }

@@ -63,7 +63,7 @@ void print(const char* name, const Report& report) {
                     p.found[1], p.found[2], p.found[3], p.found[4]);
     }
     for (std::size_t i = 0; i < report.remaining_reasons.size() && i < 20; ++i)
-        std::printf("[ figures  ]   remaining %u: %s\n", report.remaining_elements[i],
+        std::printf("[ figures  ]   remaining %u: %s\n", report.remaining_elements[i].value(),
                     report.remaining_reasons[i].c_str());
     std::fflush(stdout);
 }
