@@ -81,7 +81,7 @@ void locate(benchmark::State& state, Case* c, bool walk) {
         const sxk::Point& x = points[next];
         next = (next + 1) % points.size();
         const auto start = Clock::now();
-        const sxk::Location location = c->index->locate(x, walk ? hint : sxk::invalid_id);
+        const sxk::Location location = c->index->locate(x, walk ? hint : sxk::ElementId{sxk::invalid_id});
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
         state.SetIterationTime(seconds);
         us.push_back(seconds * 1e6);
