@@ -64,7 +64,9 @@ TEST(Ids, TheMeshAnswersInItsOwnKinds) {
             const ElementId owner = mesh.face_element(f);
             EXPECT_EQ(owner, t);
             const FaceId mate = mesh.mate(f);
-            if (mate != invalid_id) EXPECT_NE(mesh.face_element(mate), t);
+            if (mate != invalid_id) {
+                EXPECT_NE(mesh.face_element(mate), t);
+            }
         }
     EXPECT_TRUE(mesh.validate().ok());
 }
