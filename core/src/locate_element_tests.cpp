@@ -1,7 +1,8 @@
 // The element-level tests of sxk/locate.hpp: containment with barycentric coordinates, exact
 // intersection of a segment or a triangle with an element or a face, nearest points and ray hits.
 // Decisions are exact (CGAL's filtered kernel, core/src/cgal_kernel.hpp); the quantities
-// (weights, distances, t) are computed in double precision.
+// (weights, distances, t) are computed in double precision, and weights that fail their check
+// again in exact rational arithmetic.
 #include <CGAL/Exact_rational.h>
 #include <CGAL/intersections.h>
 
@@ -254,8 +255,9 @@ RayHit ray_meets(const Mesh& mesh, const detail::ElementPoints& e, const Point& 
 // exact determinants: in the affine hull of the kept vertices (x lies there: the exact test put
 // it on exactly the faces opposite the others), projected onto the coordinate axes where the
 // kept simplex is not flat, which keeps every ratio. Each weight comes out within a few units in
-// the last place of its true value, however thin the element. Rational arithmetic costs tens of
-// microseconds, so it is the fallback of fast_weights_in below, taken when those fail their check.
+// the last place of its true value, however thin the element. Rational arithmetic costs far more
+// than the double solve, so this is the fallback of weights_in below, taken when its double
+// answer fails its check.
 using Rational = CGAL::Exact_rational;
 
 Rational determinant(const std::array<std::array<Rational, 3>, 3>& a, int m) {

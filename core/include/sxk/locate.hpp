@@ -38,7 +38,10 @@
 //     picks hit the triangles themselves.
 //   * Distances, hit parameters and barycentric coordinates are computed in double precision
 //     (they are quantities, not decisions): the weights are clamped to [0, 1] and sum to 1 up to
-//     rounding, and a weight the exact test found to be zero is exactly 0.
+//     rounding, and a weight the exact test found to be zero is exactly 0. Where the weights of
+//     the double solve do not give the point back within 64 units in the last place of the
+//     largest coordinate involved (thin elements), they are recomputed as ratios of exact
+//     determinants, each then within a few units in the last place of its true value.
 //
 // Cost: an edit pays O(log n) per element (and boundary face) it removes, adds or re-boxes; a
 // locate pays the walk from its hint, bounded, then O(log n) in the rtree; the other queries
