@@ -156,10 +156,15 @@ double t_in_plane(const detail::ElementPoints& e, const Point& o, const Point& d
         if (std::abs(denominator) > 1e-12 * scale) {
             const double t = cross2(w, edge) / denominator, s = cross2(w, direction) / denominator;
             if (t >= 0 && s >= -1e-9 && s <= 1 + 1e-9) best = std::min(best, t);
-        } else {  // along the edge: its nearer end ahead, or 0 when the origin is on it
+        } else if (std::abs(cross2(w, direction)) <=
+                   1e-9 * std::sqrt(dd) * (std::hypot(w[0], w[1]) + std::hypot(edge[0], edge[1]))) {
+            // along the edge: its nearer end ahead, 0 when the origin is on it, nothing when it is
+            // behind. An edge parallel to the ray but off its line is not met along it (the
+            // other edges give the crossing): taking it for one gave t = 0 for a ray 0.03 away
+            // (EditJournalRandom.OctahedronSurface, SXK_SEED=358757303, step 1180)
             const double ta = (w[0] * direction[0] + w[1] * direction[1]) / dd;
             const double tb = ((b[0] - origin[0]) * direction[0] + (b[1] - origin[1]) * direction[1]) / dd;
-            best = std::min(best, std::min(ta, tb) <= 0 ? 0.0 : std::min(ta, tb));
+            if (std::max(ta, tb) >= 0) best = std::min(best, std::min(ta, tb) <= 0 ? 0.0 : std::min(ta, tb));
         }
     }
     if (best == std::numeric_limits<double>::infinity()) {  // rounding: the nearest corner ahead

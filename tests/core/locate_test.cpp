@@ -81,6 +81,29 @@ TEST(SpatialIndex, WeightsInANearFlatTetrahedronArePositiveAndGiveBackThePoint) 
     EXPECT_TRUE(mesh.validate().ok());
 }
 
+// A surface triangle from EditJournalRandom.OctahedronSurface (SXK_SEED=358757303, step 1180)
+// and a ray in its plane that starts 0.03 outside it and ends on its corner p1 at t = 1 (origin +
+// direction == p1 exactly). The triangle's edge p2-p0 is parallel to the ray in the projection
+// but off its line; it was taken for an edge the ray runs along, which answered t = 0.
+TEST(SpatialIndex, ARayInATrianglesPlaneMeetsItWhereItMeetsIt) {
+    Mesh mesh(2, 3);
+    mesh.add_vertex({0x1.bc759a96060bp-2, -0x1.cbc8b6a40ad78p-3, 0x1.2a1ac1ba746e4p-2});
+    mesh.add_vertex({0x1.65c6c4ba2ea63p-2, -0x1.3b4c5aa468c34p-3, 0x1.fc2f35994f6acp-2});
+    mesh.add_vertex({0x1.d49d42728d59p-2, -0x1.15bd52cc7cacfp-3, 0x1.a39f8aa0d9924p-2});
+    const std::array<Simplex, 1> triangle{Simplex(+1, {0, 1, 2})};
+    ASSERT_TRUE(mesh.assign_elements(triangle).ok());
+    const Point origin{0x1.4d9f1cdda7584p-2, -0x1.f157be7bf6eddp-3, 0x1.82aa6cb2ea46cp-2};
+    const Point direction{0x1.827a7dc874dfp-6, 0x1.6c16c7af1c552p-4, 0x1.e6132399949p-4};
+    const RayHit hit = ray_meets_triangle_element(mesh, 0, origin, direction, Positions::reference);
+    ASSERT_TRUE(hit.found());
+    EXPECT_NEAR(hit.t, 1.0, 1e-12);
+    EXPECT_NEAR(hit.barycentric[1], 1.0, 1e-9);
+    // the same ray from beyond the corner, pointing away, misses
+    const Point beyond{origin[0] + 2 * direction[0], origin[1] + 2 * direction[1], origin[2] + 2 * direction[2]};
+    EXPECT_FALSE(ray_meets_triangle_element(mesh, 0, beyond, direction, Positions::reference).found());
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(SpatialIndex, SegmentsOnTheUnitSquare) {
     Mesh mesh = test::unit_square();
     const SpatialIndex index(mesh);
