@@ -11,8 +11,8 @@
 // (`t * k + j`) as integers do; but C++ allows one user-defined conversion in an implicit
 // conversion, and FaceId -> std::uint32_t -> ElementId would take two. Turning one into the
 // other is therefore always written out (`ElementId{f / k}`). The wrapper is one 32-bit integer
-// with trivial members: the same size, layout and code as the integer (measured with the
-// tet_flips benchmark, docs/performance.md).
+// with trivial members: the integer's size and layout, and no cost the tet_flips benchmark can
+// tell from its run-to-run spread (docs/performance.md "Distinct id types").
 #pragma once
 
 #include <cstdint>
