@@ -91,7 +91,7 @@ void BoundaryMap::clear() {
 void BoundaryMap::reserve(std::size_t count) {
     const std::size_t wanted = std::bit_ceil(std::max<std::size_t>(16, 2 * count));
     if (wanted <= m_slots.size()) return;
-    std::vector<Slot> old = std::exchange(m_slots, std::vector<Slot>(wanted));
+    LargeVector<Slot> old = std::exchange(m_slots, LargeVector<Slot>(wanted));
     const std::size_t mask = m_slots.size() - 1;
     for (const Slot& slot : old) {
         if (slot.face == invalid_id) continue;

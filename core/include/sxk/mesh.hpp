@@ -47,6 +47,7 @@
 
 #include "sxk/config.hpp"
 #include "sxk/detail/boundary_map.hpp"
+#include "sxk/detail/large_array.hpp"
 #include "sxk/ids.hpp"
 #include "sxk/outcome.hpp"
 #include "sxk/simplex.hpp"
@@ -311,6 +312,10 @@ public:
     std::size_t boundary_face_count() const { return m_boundary.size(); }
     // The boundary face representing exactly sigma (orientation included), or invalid_id.
     FaceId find_boundary_face(const Simplex& sigma) const;
+    // The boundary face with sigma's vertices in either orientation (of sigma and -sigma at most
+    // one is on the boundary), or invalid_id: one probe of the boundary map and no visit to the
+    // pools, for callers to whom the orientation does not matter (face labels).
+    FaceId find_boundary_face_unoriented(const Simplex& sigma) const { return m_boundary.find(sigma); }
     template <class Visit>  // visit(FaceId)
     void for_each_boundary_face(Visit&& visit) const {
         m_boundary.for_each([&](const detail::BoundaryMap::Key&, FaceId f) { visit(f); });
@@ -515,11 +520,12 @@ private:
 
     int m_dimension;
     int m_ambient;
-    std::vector<Point> m_reference;
-    std::vector<Point> m_deformed;
-    std::vector<ElementId> m_vertex_element;
-    std::vector<ElementRecord> m_elements;
-    std::vector<FaceRecord> m_faces;
+    // the arrays that grow with the mesh: huge pages when large (sxk/detail/large_array.hpp)
+    detail::LargeVector<Point> m_reference;
+    detail::LargeVector<Point> m_deformed;
+    detail::LargeVector<ElementId> m_vertex_element;
+    detail::LargeVector<ElementRecord> m_elements;
+    detail::LargeVector<FaceRecord> m_faces;
     ElementId m_free_element = invalid_id;
     FaceId m_free_face = invalid_id;
     std::size_t m_element_count = 0;

@@ -34,6 +34,10 @@ struct TetgenText {
     std::string face_name;
 };
 Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report);
+// Whether a .ele text's header announces tetrahedra (its second field, 4 by default; 3 or 6
+// mean triangles): decides between the .face and the .edge file before the .ele file is read.
+// When that field is malformed, reading the .ele file fails with its own message.
+bool tetgen_announces_tetrahedra(std::string_view ele, const std::string& ele_name);
 
 std::string write_medit(const Mesh& mesh, const WriteOptions& options);
 std::string write_gmsh(const Mesh& mesh, const WriteOptions& options);

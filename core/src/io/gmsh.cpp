@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <span>
 #include <unordered_map>
 
 #include "formats.hpp"
@@ -66,7 +67,7 @@ int type_size(std::int64_t type) {
 // Node tags -> vertex ids. Tags are usually 1..N, so a vector does; sparse tags go to a map.
 class NodeMap {
 public:
-    void build(const std::vector<std::int64_t>& tags, const std::vector<std::size_t>& lines,
+    void build(std::span<const std::int64_t> tags, std::span<const std::size_t> lines,
                const Cursor& in) {
         std::int64_t largest = 0;
         for (std::int64_t tag : tags)

@@ -64,7 +64,7 @@ bool blank(std::string_view text) {
 }
 
 // Every reader starts the same way: refuse binary data, then an empty file.
-std::string_view checked(const std::string& data, const std::string& name) {
+std::string_view checked(std::string_view data, const std::string& name) {
     const std::string_view text = io::check_text(data, name);
     if (blank(text))
         throw InputError(name, 0, "empty file");
@@ -107,8 +107,8 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, Re
         ele.replace_extension(".ele");
         face.replace_extension(".face");
         edge.replace_extension(".edge");
-        const std::string node_data = io::load_file(node);
-        const std::string ele_data = io::load_file(ele);
+        const detail::TextBuffer node_data = io::load_file(node);
+        const detail::TextBuffer ele_data = io::load_file(ele);
         io::TetgenText text;
         text.node_name = node.string();
         text.ele_name = ele.string();
@@ -116,16 +116,9 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, Re
         text.ele = checked(ele_data, text.ele_name);
         // which of .face/.edge applies depends on the .ele file; read both if present, the
         // reader picks one
-        std::string face_data;
+        detail::TextBuffer face_data;
         std::string_view face_text;
-        const bool tetrahedra = [&] {
-            // the .ele header "count nodes-per-element ..."; nodes per element defaults to 4
-            io::Cursor header(text.ele, text.ele_name, '#');
-            header.next_line();
-            header.next_in_line();
-            const std::string_view per_element = header.next_in_line();
-            return per_element != "3" && per_element != "6";
-        }();
+        const bool tetrahedra = io::tetgen_announces_tetrahedra(text.ele, text.ele_name);
         const std::filesystem::path& labels = tetrahedra ? face : edge;
         if (std::filesystem::exists(labels)) {
             text.face_name = labels.string();
@@ -135,20 +128,20 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, Re
         }
         return io::read_tetgen_text(text, options, report);
     }
-    const std::string data = io::load_file(path);
+    const detail::TextBuffer data = io::load_file(path);
     return read_text(checked(data, name), *format, name, options, report);
 }
 
 Mesh read_mesh(std::istream& in, Format format, const std::string& name, const ReadOptions& options,
                ReadReport* report) {
-    const std::string data = io::load_stream(in, name);
+    const detail::TextBuffer data = io::load_stream(in, name);
     return read_text(checked(data, name), format, name, options, report);
 }
 
 Mesh read_tetgen(std::istream& node, const std::string& node_name, std::istream& ele,
                  const std::string& ele_name, const ReadOptions& options, ReadReport* report) {
-    const std::string node_data = io::load_stream(node, node_name);
-    const std::string ele_data = io::load_stream(ele, ele_name);
+    const detail::TextBuffer node_data = io::load_stream(node, node_name);
+    const detail::TextBuffer ele_data = io::load_stream(ele, ele_name);
     io::TetgenText text;
     text.node_name = node_name;
     text.ele_name = ele_name;

@@ -45,7 +45,7 @@ void refuse_non_file(std::filesystem::file_type type, const std::string& name) {
 
 }  // namespace
 
-std::string load_file(const std::filesystem::path& path, std::size_t limit) {
+detail::TextBuffer load_file(const std::filesystem::path& path, std::size_t limit) {
     const std::string name = path.string();
     std::error_code error;
     refuse_non_file(std::filesystem::status(path, error).type(), name);
@@ -55,7 +55,7 @@ std::string load_file(const std::filesystem::path& path, std::size_t limit) {
                                                          &std::fclose);
     if (!file)
         throw InputError(name, 0, std::string("cannot open: ") + std::strerror(errno));
-    std::string data;
+    detail::TextBuffer data;
     struct stat opened {};
     if (::fstat(::fileno(file.get()), &opened) == 0 && S_ISREG(opened.st_mode)) {
         if (static_cast<std::uintmax_t>(opened.st_size) > limit)
@@ -76,8 +76,8 @@ std::string load_file(const std::filesystem::path& path, std::size_t limit) {
     return data;
 }
 
-std::string load_stream(std::istream& in, const std::string& name, std::size_t limit) {
-    std::string data;
+detail::TextBuffer load_stream(std::istream& in, const std::string& name, std::size_t limit) {
+    detail::TextBuffer data;
     char chunk[65536];
     while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
         const auto got = static_cast<std::size_t>(in.gcount());
@@ -97,10 +97,8 @@ namespace sxk {
 namespace {
 
 // The checked text without its byte order mark (check_text drops it from its view).
-std::string checked_text(std::string data, const std::string& name) {
-    const std::string_view text = io::check_text(data, name);
-    data.erase(0, data.size() - text.size());
-    return data;
+std::string checked_text(const detail::TextBuffer& data, const std::string& name) {
+    return std::string(io::check_text(data, name));
 }
 
 }  // namespace

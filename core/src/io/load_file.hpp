@@ -8,16 +8,17 @@
 #include <iosfwd>
 #include <string>
 
-#include "sxk/io.hpp"  // max_input_bytes
+#include "sxk/detail/large_array.hpp"  // TextBuffer
+#include "sxk/io.hpp"                  // max_input_bytes
 
 namespace sxk::io {
 
-// The file's bytes. Regular files and FIFOs (a shell's <(...)) are read, at most `limit` bytes;
+// The file's bytes (in huge pages when large: sxk/detail/large_array.hpp). Regular files and FIFOs (a shell's <(...)) are read, at most `limit` bytes;
 // a directory, a character or block device (/dev/zero), a socket, a file that cannot be opened
 // or read, and one larger than `limit` throw InputError(path, 0, reason).
-std::string load_file(const std::filesystem::path& path, std::size_t limit = max_input_bytes);
+detail::TextBuffer load_file(const std::filesystem::path& path, std::size_t limit = max_input_bytes);
 // The stream's bytes, at most `limit`; InputError(name, 0, reason) otherwise.
-std::string load_stream(std::istream& in, const std::string& name,
+detail::TextBuffer load_stream(std::istream& in, const std::string& name,
                         std::size_t limit = max_input_bytes);
 
 }  // namespace sxk::io

@@ -1,10 +1,18 @@
 #include "raw_mesh.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
+#include "../fresh_array.hpp"
 #include "sxk/predicates.hpp"
 
 namespace sxk::io {
@@ -190,7 +198,7 @@ void check_vertex_stars(const RawMesh& raw, std::span<const Simplex> simplexes, 
 // one piece: its elements are joined through it). Returns the (original, copy) pairs.
 std::vector<std::pair<VertexId, VertexId>> split_pinched_vertices(RawMesh& raw, CellList& cells,
                                                                   CellList& faces,
-                                                                  std::vector<Simplex>& simplexes) {
+                                                                  detail::LargeVector<Simplex>& simplexes) {
     const std::size_t k = static_cast<std::size_t>(cells.size);
     const std::size_t n = simplexes.size();
     const std::size_t total = n * k;  // (element, slot) incidences
@@ -202,7 +210,7 @@ std::vector<std::pair<VertexId, VertexId>> split_pinched_vertices(RawMesh& raw, 
         std::array<VertexId, 3> key;
         std::uint32_t incidence;  // element * k + the slot opposite the face
     };
-    std::vector<FaceEntry> entries(total);
+    detail::LargeVector<FaceEntry> entries(total);
     for (std::size_t t = 0; t < n; ++t)
         for (std::size_t j = 0; j < k; ++j) {
             FaceEntry& e = entries[t * k + j];
@@ -218,7 +226,7 @@ std::vector<std::pair<VertexId, VertexId>> split_pinched_vertices(RawMesh& raw, 
 
     // Union-find over the incidences: two elements sharing a face join, for each vertex of the
     // face, that vertex's incidences in both.
-    std::vector<std::uint32_t> parent(total);
+    detail::LargeVector<std::uint32_t> parent(total);
     for (std::size_t s = 0; s < total; ++s)
         parent[s] = static_cast<std::uint32_t>(s);
     auto find = [&parent](std::uint32_t s) {
@@ -329,16 +337,22 @@ Simplex unoriented_key(std::span<const VertexId> vertices) {
     return s.sign() > 0 ? s : s.mate();
 }
 
-void add_face_labels(const CellList& faces, Mesh& mesh, const ReadOptions& options, ReadReport* report) {
-    const int d = mesh.topological_dimension();
+// The labelled faces, each listed once, as the map the mesh keeps; what a reading says of them
+// before the mesh exists (a repeated vertex, a repeat; ReadReport's label conflicts).
+struct CollectedLabels {
+    FaceLabels labels;
+    std::size_t conflicts = 0;
+    std::string first_conflict;
+};
+
+CollectedLabels collect_face_labels(const CellList& faces) {
+    const std::size_t d = static_cast<std::size_t>(faces.size);
     const char* kind = cell_name(faces.size);
-    FaceLabels& labels = mesh.face_labels();
+    CollectedLabels collected;
+    FaceLabels& labels = collected.labels;
     labels.reserve(faces.count());
-    std::unordered_map<Simplex, std::size_t, SimplexHash> interior;  // not on the boundary
-    bool listed_first = true;  // try the face as listed before its mate
     for (std::size_t i = 0; i < faces.count(); ++i) {
-        const std::span<const VertexId> vertices(
-            faces.vertices.data() + i * static_cast<std::size_t>(d), static_cast<std::size_t>(d));
+        const std::span<const VertexId> vertices(faces.vertices.data() + i * d, d);
         const Simplex key = unoriented_key(vertices);
         if (!key.has_distinct_vertices())
             fail(faces.file, faces.lines[i],
@@ -349,8 +363,7 @@ void add_face_labels(const CellList& faces, Mesh& mesh, const ReadOptions& optio
                 continue;
             // listed before: find where (rare, so a scan rather than a second map)
             std::size_t first = 0;
-            while (unoriented_key({faces.vertices.data() + first * static_cast<std::size_t>(d),
-                                   static_cast<std::size_t>(d)}) != key)
+            while (unoriented_key({faces.vertices.data() + first * d, d}) != key)
                 ++first;
             const std::string repeat = std::string(kind) + " " + std::to_string(faces.number(i)) +
                                        " repeats " + kind + " " +
@@ -359,25 +372,39 @@ void add_face_labels(const CellList& faces, Mesh& mesh, const ReadOptions& optio
                 fail(faces.file, faces.lines[i], repeat);
             // the same face with another reference (CGAL: the subdomains on its two sides):
             // the first listed is kept, and the caller hears of it
-            if (report && report->label_conflicts++ == 0)
-                report->first_label_conflict =
+            if (collected.conflicts++ == 0)
+                collected.first_conflict =
                     InputError(faces.file, faces.lines[i],
                                repeat + " with reference " + std::to_string(faces.labels[i]) +
                                    ", not " + std::to_string(at->second))
                         .what();
-            continue;
         }
-        // Files list their boundary faces oriented one way (all outward, or all inward): ask
-        // first for the orientation found last, one boundary-map lookup per face instead of
-        // 1.5 (each costs cache misses into the face and element pools; docs/performance.md, "io")
-        const Simplex listed(+1, vertices);
-        const Simplex first = listed_first ? listed : listed.mate();
-        if (mesh.find_boundary_face(first) == invalid_id) {
-            if (mesh.find_boundary_face(first.mate()) == invalid_id)
-                interior.emplace(key, i);
-            else
-                listed_first = !listed_first;
-        }
+    }
+    return collected;
+}
+
+// Gives the mesh its face labels: every labelled face must be a face of some element (a
+// boundary face, or an interface between materials).
+void place_face_labels(CollectedLabels collected, const CellList& faces, Mesh& mesh,
+                       const ReadOptions& options, ReadReport* report) {
+    const int d = mesh.topological_dimension();
+    const char* kind = cell_name(faces.size);
+    if (report && collected.conflicts > 0) {
+        if (report->label_conflicts == 0)
+            report->first_label_conflict = std::move(collected.first_conflict);
+        report->label_conflicts += collected.conflicts;
+    }
+    FaceLabels& labels = mesh.face_labels();
+    labels = std::move(collected.labels);
+    std::unordered_map<Simplex, std::size_t, SimplexHash> interior;  // not on the boundary
+    for (std::size_t i = 0; i < faces.count(); ++i) {
+        const Simplex key = unoriented_key(
+            {faces.vertices.data() + i * static_cast<std::size_t>(d), static_cast<std::size_t>(d)});
+        // a label belongs to the vertex set: either side of a boundary face will do, so one
+        // probe of the boundary map, no visit to the face and element pools (docs/performance.md,
+        // "io")
+        if (mesh.find_boundary_face_unoriented(key) == invalid_id)
+            interior.emplace(key, i);
     }
     if (interior.empty())
         return;
@@ -407,6 +434,68 @@ void add_face_labels(const CellList& faces, Mesh& mesh, const ReadOptions& optio
     }
 }
 
+// The elements as canonical simplexes, each judged on its own in parallel (the exact
+// orientation tests are a sizeable part of a read; docs/performance.md "io"): a repeated vertex,
+// and when the topological dimension is the ambient one, the orientation. An inverted element is
+// refused, or turned over with ReadOptions::reorient (counted in `reoriented`), or kept by a
+// lenient read. The element named in a refusal is the first in file order, as a single thread
+// would find it.
+detail::LargeVector<Simplex> oriented_simplexes(const RawMesh& raw, const CellList& cells,
+                                                int ambient, const ReadOptions& options,
+                                                std::size_t& reoriented) {
+    enum class Verdict : std::uint8_t { fine, reoriented, repeated_vertex, inverted };
+    const std::size_t k = static_cast<std::size_t>(cells.size);
+    const std::size_t n = cells.count();
+    const bool oriented_here = cells.size - 1 == ambient;
+    auto judge = [&](std::size_t i, Simplex& s) {
+        const std::span<const VertexId> vertices(cells.vertices.data() + i * k, k);
+        s = Simplex(+1, vertices);
+        if (!s.has_distinct_vertices())
+            return Verdict::repeated_vertex;
+        if (!oriented_here)
+            return Verdict::fine;
+        const auto& p = raw.points;
+        const Sign sign =
+            k == 4 ? orient3d(p[vertices[0]], p[vertices[1]], p[vertices[2]], p[vertices[3]])
+                   : orient2d(p[vertices[0]], p[vertices[1]], p[vertices[2]]);
+        if (sign != Sign::negative || !(options.reorient || !options.lenient))
+            return Verdict::fine;
+        if (!options.reorient)
+            return Verdict::inverted;
+        s = s.mate();
+        return Verdict::reoriented;
+    };
+    detail::LargeVector<Simplex> simplexes = detail::fresh_vector<Simplex>(n);
+    std::atomic<std::size_t> first_refused{n};
+    std::atomic<std::size_t> turned_over{0};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          std::size_t turned = 0;
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                              const Verdict verdict = judge(i, simplexes[i]);
+                              turned += verdict == Verdict::reoriented ? 1 : 0;
+                              if (verdict != Verdict::repeated_vertex &&
+                                  verdict != Verdict::inverted)
+                                  continue;
+                              std::size_t seen = first_refused.load(std::memory_order_relaxed);
+                              while (i < seen && !first_refused.compare_exchange_weak(
+                                                     seen, i, std::memory_order_relaxed)) {
+                              }
+                              break;  // later elements of this range cannot come first
+                          }
+                          turned_over.fetch_add(turned, std::memory_order_relaxed);
+                      });
+    if (const std::size_t i = first_refused.load(); i < n) {
+        Simplex ignored;
+        fail(cells.file, cells.lines[i],
+             "element " + std::to_string(cells.number(i)) +
+                 (judge(i, ignored) == Verdict::repeated_vertex ? " has a repeated vertex"
+                                                               : " is inverted"));
+    }
+    reoriented = turned_over.load();
+    return simplexes;
+}
+
 }  // namespace
 
 Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOptions& options,
@@ -432,71 +521,80 @@ Mesh build_mesh(RawMesh& raw, const std::string& fallback_file, const ReadOption
         for (Point& p : raw.points)
             p[2] = 0.0;  // -0.0 too: a planar mesh has z == +0
 
-    std::vector<Simplex> simplexes(n);
+    // The labelled faces are gathered into their map while the elements are built: the two share
+    // nothing until the labels are placed on the mesh (docs/performance.md "io"). Problems are
+    // reported in the order of a sequential reading: the elements' first, then the labels'.
+    std::optional<Mesh> mesh;
+    std::optional<Outcome<Done>> built;
     std::size_t reoriented = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::span<const VertexId> vertices(cells.vertices.data() + i * k, k);
-        Simplex s(+1, vertices);
-        if (!s.has_distinct_vertices())
-            fail(cells.file, cells.lines[i],
-                 "element " + std::to_string(cells.number(i)) + " has a repeated vertex");
-        if (d == ambient) {
-            const auto& p = raw.points;
-            const Sign sign =
-                d == 3 ? orient3d(p[vertices[0]], p[vertices[1]], p[vertices[2]], p[vertices[3]])
-                       : orient2d(p[vertices[0]], p[vertices[1]], p[vertices[2]]);
-            if (sign == Sign::negative && (options.reorient || !options.lenient)) {
-                if (!options.reorient)
-                    fail(cells.file, cells.lines[i],
-                         "element " + std::to_string(cells.number(i)) + " is inverted");
-                s = s.mate();
-                ++reoriented;
+    detail::LargeVector<Simplex> simplexes;
+    std::optional<CollectedLabels> labels;
+    std::exception_ptr build_problem, label_problem;
+    tbb::parallel_invoke(
+        [&] {
+            try {
+                simplexes = oriented_simplexes(raw, cells, ambient, options, reoriented);
+                mesh.emplace(d, ambient);
+                mesh->reserve(raw.points.size(), n);
+                for (const Point& p : raw.points)
+                    mesh->add_vertex(p);
+                // lenient: keep duplicates, non-manifold faces and pinched vertices (validate()
+                // names them)
+                built = options.lenient ? mesh->assign_elements_unchecked(simplexes, cells.labels)
+                                        : mesh->assign_elements(simplexes, cells.labels);
+            } catch (...) {
+                build_problem = std::current_exception();
             }
-        }
-        simplexes[i] = s;
-    }
-
-    Mesh mesh(d, ambient);
-    mesh.reserve(raw.points.size(), n);
-    for (const Point& p : raw.points)
-        mesh.add_vertex(p);
+        },
+        [&] {
+            try {
+                labels = collect_face_labels(faces);
+            } catch (...) {
+                label_problem = std::current_exception();
+            }
+        });
+    if (build_problem)
+        std::rethrow_exception(build_problem);
     if (options.lenient) {
-        // keep duplicates, non-manifold faces and pinched vertices: validate() names them
-        if (auto built = mesh.assign_elements_unchecked(simplexes, cells.labels); !built) {
-            const std::size_t item = built.refusal().item;
-            fail(cells.file, item < n ? cells.lines[item] : 0, built.reason());
+        if (!*built) {
+            const std::size_t item = built->refusal().item;
+            fail(cells.file, item < n ? cells.lines[item] : 0, built->reason());
         }
     } else {
-        Outcome<Done> built = mesh.assign_elements(simplexes, cells.labels);
-        const bool pinched = !built && built.code() == RefusalCode::pinched_star;
+        const bool pinched = !*built && built->code() == RefusalCode::pinched_star;
         if (pinched && options.split_pinched) {
             const std::size_t file_vertices = raw.points.size();
             std::vector<std::pair<VertexId, VertexId>> copies =
                 split_pinched_vertices(raw, cells, faces, simplexes);
             for (std::size_t v = file_vertices; v < raw.points.size(); ++v)
-                mesh.add_vertex(raw.points[v]);
-            built = mesh.assign_elements(simplexes, cells.labels);
+                mesh->add_vertex(raw.points[v]);
+            built = mesh->assign_elements(simplexes, cells.labels);
             if (report) {
                 for (std::size_t c = 0; c < copies.size(); ++c)
                     if (c == 0 || copies[c].first != copies[c - 1].first)
                         ++report->pinched_vertices;
                 report->vertex_copies = std::move(copies);
             }
+            // the split renamed vertices of labelled faces: gather them again
+            label_problem = nullptr;
+            labels = collect_face_labels(faces);
         }
-        if (!built) {
+        if (!*built) {
             // a pinched vertex is best named on the vertex's own line
-            if (built.code() == RefusalCode::pinched_star)
+            if (built->code() == RefusalCode::pinched_star)
                 check_vertex_stars(raw, simplexes, static_cast<int>(k));
-            const std::size_t item = built.refusal().item;
+            const std::size_t item = built->refusal().item;
             if (item >= n)
-                fail(cells.file, 0, built.reason());
-            explain_refusal(raw, cells, simplexes, item, built.reason());
+                fail(cells.file, 0, built->reason());
+            explain_refusal(raw, cells, simplexes, item, built->reason());
         }
     }
-    add_face_labels(faces, mesh, options, report);
+    if (label_problem)
+        std::rethrow_exception(label_problem);
+    place_face_labels(std::move(*labels), faces, *mesh, options, report);
     if (report)
         report->reoriented = reoriented;
-    return mesh;
+    return std::move(*mesh);
 }
 
 }  // namespace sxk::io

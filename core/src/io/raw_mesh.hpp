@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "sxk/detail/large_array.hpp"
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
 
@@ -39,10 +40,11 @@ namespace sxk::io {
 struct CellList {
     explicit CellList(int size) : size(size) {}
     int size;
-    std::vector<VertexId> vertices;  // size per cell, file order, 0-based
-    std::vector<int> labels;         // one per cell
-    std::vector<std::size_t> lines;  // one per cell
-    std::vector<std::int64_t>
+    // the arrays: huge pages when large (sxk/detail/large_array.hpp)
+    detail::LargeVector<VertexId> vertices;  // size per cell, file order, 0-based
+    detail::LargeVector<int> labels;         // one per cell
+    detail::LargeVector<std::size_t> lines;  // one per cell
+    detail::LargeVector<std::int64_t>
         numbers;       // the file's numbers (Gmsh tags, TetGen ids); empty: 1, 2, ...
     std::string file;  // where the cells were read
     // Labelled faces only: a face listed again is the same face (Medit writers list each side
@@ -56,9 +58,9 @@ struct CellList {
 };
 
 struct RawMesh {
-    std::vector<Point> points;
-    std::vector<std::size_t> point_lines;     // one per point
-    std::vector<std::int64_t> point_numbers;  // the file's numbers; empty: vertex_base + id
+    detail::LargeVector<Point> points;
+    detail::LargeVector<std::size_t> point_lines;     // one per point
+    detail::LargeVector<std::int64_t> point_numbers;  // the file's numbers; empty: vertex_base + id
     std::int64_t vertex_base = 1;
     std::string vertex_file;
 

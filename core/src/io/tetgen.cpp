@@ -12,6 +12,9 @@
 // mesh. Second-order elements (6 or 10 nodes) are refused.
 #include <climits>
 #include <cmath>
+#include <exception>
+
+#include <tbb/parallel_invoke.h>
 
 #include "formats.hpp"
 #include "raw_mesh.hpp"
@@ -76,29 +79,12 @@ void read_indices(Cursor& in, CellList& cells, int count, std::int64_t base,
     }
 }
 
-}  // namespace
-
-Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report) {
-    RawMesh raw;
-    raw.vertex_file = text.node_name;
-    raw.triangles.file = raw.tetrahedra.file = text.ele_name;
-
-    // ---- .node ---------------------------------------------------------------------------------
-    Cursor node(text.node, text.node_name, '#');
-    start(node, "the number of nodes");
-    const std::int64_t nodes =
-        node.to_integer(node.need_in_line("number of nodes"), "number of nodes", 0,
-                        static_cast<std::int64_t>(invalid_id) - 1);
-    const std::string_view dim_token = node.next_in_line();
-    const std::int64_t dimension = dim_token.empty() ? 3 : node.to_integer(dim_token, "dimension");
-    if (dimension != 2 && dimension != 3)
-        node.fail("dimension must be 2 or 3, found " + quote(dim_token));
-    const std::int64_t node_attributes =
-        optional_field(node, "number of attributes", 0, 0, INT_MAX);
-    const std::int64_t node_markers = optional_field(node, "boundary marker flag", 0, 0, 1);
-    end_of_line(node);
-    raw.ambient = static_cast<int>(dimension);
-    const std::size_t reserve = plausible_count(nodes, text.node.size(), 8);
+// The .node file from its first record on: the points, their lines and the numbering base
+// (0 or 1, as the first node says).
+void read_nodes(Cursor& node, std::int64_t nodes, std::int64_t dimension,
+                std::int64_t node_attributes, std::int64_t node_markers, std::size_t text_size,
+                RawMesh& raw) {
+    const std::size_t reserve = plausible_count(nodes, text_size, 8);
     raw.points.reserve(reserve);
     raw.point_lines.reserve(reserve);
     std::int64_t base = 0;
@@ -128,8 +114,12 @@ Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadRe
     }
     no_more_records(node, "nodes", nodes);
     raw.vertex_base = base;
+}
 
-    // ---- .ele ----------------------------------------------------------------------------------
+// The .ele file: triangles or tetrahedra with their region attribute as label. Indices are
+// checked against the `vertex_count` nodes numbered from `base`.
+void read_elements(const TetgenText& text, std::int64_t dimension, std::int64_t base,
+                   std::size_t vertex_count, RawMesh& raw) {
     Cursor ele(text.ele, text.ele_name, '#');
     start(ele, "the number of elements");
     const std::int64_t count =
@@ -160,7 +150,7 @@ Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadRe
         cells.numbers.push_back(
             ele.to_integer(ele.need_in_line("element number"), "element number"));
         cells.lines.push_back(ele.line());
-        read_indices(ele, cells, static_cast<int>(per_element), base, raw.points.size());
+        read_indices(ele, cells, static_cast<int>(per_element), base, vertex_count);
         int label = 0;
         for (std::int64_t a = 0; a < attributes; ++a) {
             const std::string_view token = ele.need_in_line("attribute");
@@ -173,40 +163,112 @@ Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadRe
         end_of_line(ele);
     }
     no_more_records(ele, "elements", count);
+}
 
-    // ---- .face / .edge -------------------------------------------------------------------------
-    if (text.face) {
-        CellList& faces = per_element == 4 ? raw.triangles : raw.edges;
-        faces.file = text.face_name;
-        Cursor in(*text.face, text.face_name, '#');
-        start(in, "the number of faces");
-        const std::int64_t face_count =
-            in.to_integer(in.need_in_line("number of faces"), "number of faces", 0,
-                          static_cast<std::int64_t>(invalid_id) - 1);
-        const std::int64_t markers = optional_field(in, "boundary marker flag", 0, 0, 1);
-        end_of_line(in);
-        const std::size_t n = plausible_count(face_count, text.face->size(), 8);
-        CellList scratch(faces.size);  // the faces are checked but not kept without markers
-        CellList& target = markers ? faces : scratch;
-        target.vertices.reserve(n * static_cast<std::size_t>(faces.size));
-        for (std::int64_t i = 0; i < face_count; ++i) {
-            record(in, "faces", face_count, i);
-            target.numbers.push_back(in.to_integer(in.need_in_line("face number"), "face number"));
-            target.lines.push_back(in.line());
-            read_indices(in, target, faces.size, base, raw.points.size());
-            target.labels.push_back(
-                markers ? static_cast<int>(in.to_integer(in.need_in_line("boundary marker"),
-                                                         "boundary marker", INT_MIN, INT_MAX))
-                        : 0);
-            // tetgen -nn appends the two tetrahedra adjacent to the face
-            if (!in.line_done()) {
-                in.to_integer(in.next_in_line(), "adjacent element");
-                in.to_integer(in.need_in_line("adjacent element"), "adjacent element");
-            }
-            end_of_line(in);
+// The .face (.edge) file into `faces` (triangles of a tetrahedral mesh, edges of a triangle
+// mesh); its markers are kept only when the header says they are present.
+void read_faces(const TetgenText& text, std::int64_t base, std::size_t vertex_count,
+                CellList& faces) {
+    faces.file = text.face_name;
+    Cursor in(*text.face, text.face_name, '#');
+    start(in, "the number of faces");
+    const std::int64_t face_count =
+        in.to_integer(in.need_in_line("number of faces"), "number of faces", 0,
+                      static_cast<std::int64_t>(invalid_id) - 1);
+    const std::int64_t markers = optional_field(in, "boundary marker flag", 0, 0, 1);
+    end_of_line(in);
+    const std::size_t n = plausible_count(face_count, text.face->size(), 8);
+    CellList scratch(faces.size);  // the faces are checked but not kept without markers
+    CellList& target = markers ? faces : scratch;
+    target.vertices.reserve(n * static_cast<std::size_t>(faces.size));
+    for (std::int64_t i = 0; i < face_count; ++i) {
+        record(in, "faces", face_count, i);
+        target.numbers.push_back(in.to_integer(in.need_in_line("face number"), "face number"));
+        target.lines.push_back(in.line());
+        read_indices(in, target, faces.size, base, vertex_count);
+        target.labels.push_back(
+            markers ? static_cast<int>(in.to_integer(in.need_in_line("boundary marker"),
+                                                     "boundary marker", INT_MIN, INT_MAX))
+                    : 0);
+        // tetgen -nn appends the two tetrahedra adjacent to the face
+        if (!in.line_done()) {
+            in.to_integer(in.next_in_line(), "adjacent element");
+            in.to_integer(in.need_in_line("adjacent element"), "adjacent element");
         }
-        no_more_records(in, "faces", face_count);
+        end_of_line(in);
     }
+    no_more_records(in, "faces", face_count);
+}
+
+}  // namespace
+
+bool tetgen_announces_tetrahedra(std::string_view ele, const std::string& ele_name) {
+    Cursor header(ele, ele_name, '#');
+    header.next_line();
+    header.next_in_line();
+    const std::string_view per_element = header.next_in_line();
+    return per_element != "3" && per_element != "6";
+}
+
+Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report) {
+    RawMesh raw;
+    raw.vertex_file = text.node_name;
+    raw.triangles.file = raw.tetrahedra.file = text.ele_name;
+
+    // The .node header and the numbering base come first; then the bodies of the three files,
+    // which only share the node count and the base, are read in parallel (the .ele file is
+    // most of the text; docs/performance.md "io"). A problem is reported as a reading in file
+    // order would: the .node file's first, then the .ele file's, then the .face file's (a later
+    // file's reading relies on the node count only once the .node file is known to be sound).
+    Cursor node(text.node, text.node_name, '#');
+    start(node, "the number of nodes");
+    const std::int64_t nodes =
+        node.to_integer(node.need_in_line("number of nodes"), "number of nodes", 0,
+                        static_cast<std::int64_t>(invalid_id) - 1);
+    const std::string_view dim_token = node.next_in_line();
+    const std::int64_t dimension = dim_token.empty() ? 3 : node.to_integer(dim_token, "dimension");
+    if (dimension != 2 && dimension != 3)
+        node.fail("dimension must be 2 or 3, found " + quote(dim_token));
+    const std::int64_t node_attributes =
+        optional_field(node, "number of attributes", 0, 0, INT_MAX);
+    const std::int64_t node_markers = optional_field(node, "boundary marker flag", 0, 0, 1);
+    end_of_line(node);
+    raw.ambient = static_cast<int>(dimension);
+    std::int64_t base = 0;  // as the first node says; a wrong first number fails read_nodes
+    {
+        Cursor first = node;
+        if (nodes > 0 && first.next_line())
+            base = first.to_integer(first.need_in_line("node number"), "node number") == 1 ? 1 : 0;
+    }
+    const std::size_t vertex_count = static_cast<std::size_t>(nodes);
+
+    std::exception_ptr node_problem, element_problem, face_problem;
+    auto guarded = [](std::exception_ptr& problem, auto&& read) {
+        return [&problem, read] {
+            try {
+                read();
+            } catch (...) {
+                problem = std::current_exception();
+            }
+        };
+    };
+    CellList faces(tetgen_announces_tetrahedra(text.ele, text.ele_name) ? 3 : 2);
+    tbb::parallel_invoke(
+        guarded(node_problem,
+                [&] {
+                    read_nodes(node, nodes, dimension, node_attributes, node_markers,
+                               text.node.size(), raw);
+                }),
+        guarded(element_problem, [&] { read_elements(text, dimension, base, vertex_count, raw); }),
+        guarded(face_problem, [&] {
+            if (text.face)
+                read_faces(text, base, vertex_count, faces);
+        }));
+    for (const std::exception_ptr& problem : {node_problem, element_problem, face_problem})
+        if (problem)
+            std::rethrow_exception(problem);
+    if (text.face)
+        (faces.size == 3 ? raw.triangles : raw.edges) = std::move(faces);
     return build_mesh(raw, text.ele_name, options, report);
 }
 

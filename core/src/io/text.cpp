@@ -1,6 +1,7 @@
 #include "text.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -16,11 +17,24 @@ namespace sxk::io {
 
 namespace {
 
+// One table lookup per byte instead of five comparisons: the cursor's loops run over every
+// byte of the file (docs/performance.md, "io").
+enum : std::uint8_t { other = 0, blank = 1, newline = 2 };
+constexpr std::array<std::uint8_t, 256> byte_classes = [] {
+    std::array<std::uint8_t, 256> classes{};
+    for (const char c : {' ', '\t', '\r', '\v', '\f'})
+        classes[static_cast<unsigned char>(c)] = blank;
+    classes[static_cast<unsigned char>('\n')] = newline;
+    return classes;
+}();
+std::uint8_t byte_class(char c) {
+    return byte_classes[static_cast<unsigned char>(c)];
+}
 bool is_blank(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+    return byte_class(c) == blank;
 }
 bool is_space(char c) {
-    return is_blank(c) || c == '\n';
+    return byte_class(c) != other;
 }
 
 std::string hex_byte(unsigned char c) {
@@ -254,6 +268,20 @@ double Cursor::to_double(std::string_view token, const char* what) const {
 }
 
 std::int64_t Cursor::to_integer(std::string_view token, const char* what) const {
+    // The common case, up to 18 plain digits (no sign, cannot overflow), without from_chars'
+    // generality; anything else takes the general path and its messages.
+    if (!token.empty() && token.size() <= 18) {
+        std::int64_t value = 0;
+        std::size_t i = 0;
+        for (; i < token.size(); ++i) {
+            const unsigned digit = static_cast<unsigned char>(token[i]) - unsigned{'0'};
+            if (digit > 9)
+                break;
+            value = value * 10 + static_cast<std::int64_t>(digit);
+        }
+        if (i == token.size())
+            return value;
+    }
     std::string_view digits = token;
     if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-')
         digits.remove_prefix(1);

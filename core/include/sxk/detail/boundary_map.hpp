@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sxk/config.hpp"
+#include "sxk/detail/large_array.hpp"
 #include "sxk/ids.hpp"
 #include "sxk/simplex.hpp"
 
@@ -60,7 +61,7 @@ private:
     std::size_t home(const Key& key) const;
     void grow();
 
-    std::vector<Slot> m_slots;  // size is zero or a power of two
+    LargeVector<Slot> m_slots;  // size is zero or a power of two
     std::size_t m_size = 0;
 };
 
