@@ -22,6 +22,13 @@ inline void populate_in_parallel(void* block, std::size_t bytes) {
     });
 }
 
+// reserve(count), the memory backed in parallel (for the readers' arrays, filled by push_back).
+template <class Vector>
+void reserve_fresh(Vector& vector, std::size_t count) {
+    vector.reserve(count);
+    populate_in_parallel(vector.data(), vector.capacity() * sizeof(typename Vector::value_type));
+}
+
 // Makes `pool` hold `count` copies of `value`, its memory backed in parallel first.
 template <class T>
 void assign_fresh(LargeVector<T>& pool, std::size_t count, const T& value) {

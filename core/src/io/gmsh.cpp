@@ -28,6 +28,7 @@
 #include <span>
 #include <unordered_map>
 
+#include "../fresh_array.hpp"
 #include "formats.hpp"
 #include "raw_mesh.hpp"
 #include "text.hpp"
@@ -258,9 +259,9 @@ private:
         m_section = "$Nodes";
         const std::int64_t count = integer("number of nodes", 0, invalid_id - 1);
         const std::size_t n = plausible_count(count, bytes_left(), 8);
-        m_raw.points.reserve(n);
-        m_raw.point_lines.reserve(n);
-        m_raw.point_numbers.reserve(n);
+        detail::reserve_fresh(m_raw.points, n);
+        detail::reserve_fresh(m_raw.point_lines, n);
+        detail::reserve_fresh(m_raw.point_numbers, n);
         for (std::int64_t i = 0; i < count; ++i) {
             const std::string_view token = m_in.need("node tag");
             if (token[0] == '$')
@@ -279,9 +280,9 @@ private:
         integer("smallest node tag", 0, INT64_MAX);
         integer("largest node tag", 0, INT64_MAX);
         const std::size_t n = plausible_count(count, bytes_left(), 8);
-        m_raw.points.reserve(n);
-        m_raw.point_lines.reserve(n);
-        m_raw.point_numbers.reserve(n);
+        detail::reserve_fresh(m_raw.points, n);
+        detail::reserve_fresh(m_raw.point_lines, n);
+        detail::reserve_fresh(m_raw.point_numbers, n);
         for (std::int64_t b = 0; b < blocks; ++b) {
             const std::int64_t dim = integer("entity dimension", 0, 3);
             integer("entity tag", INT64_MIN, INT64_MAX);
@@ -337,7 +338,7 @@ private:
         m_section = "$Elements";
         const std::int64_t count = integer("number of elements", 0, invalid_id - 1);
         const std::size_t n = plausible_count(count, bytes_left(), 16);
-        m_raw.tetrahedra.vertices.reserve(4 * n);
+        detail::reserve_fresh(m_raw.tetrahedra.vertices, 4 * n);
         for (std::int64_t i = 0; i < count; ++i) {
             const std::string_view token = m_in.need("element tag");
             if (token[0] == '$')

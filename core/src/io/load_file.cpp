@@ -11,6 +11,7 @@
 #include <memory>
 #include <system_error>
 
+#include "../fresh_array.hpp"
 #include "sxk/io.hpp"
 #include "text.hpp"
 
@@ -60,6 +61,7 @@ detail::TextBuffer load_file(const std::filesystem::path& path, std::size_t limi
     if (::fstat(::fileno(file.get()), &opened) == 0 && S_ISREG(opened.st_mode)) {
         if (static_cast<std::uintmax_t>(opened.st_size) > limit)
             too_large(name, limit);
+        detail::reserve_fresh(data, static_cast<std::size_t>(opened.st_size));
         data.resize(static_cast<std::size_t>(opened.st_size));
         data.resize(std::fread(data.data(), 1, data.size(), file.get()));
     }

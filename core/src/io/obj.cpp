@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 
+#include "../fresh_array.hpp"
 #include "formats.hpp"
 #include "raw_mesh.hpp"
 #include "text.hpp"
@@ -109,7 +110,7 @@ Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions&
         }
     }
     const auto count = static_cast<std::int64_t>(raw.points.size());
-    cells.vertices.reserve(indices.size());
+    detail::reserve_fresh(cells.vertices, indices.size());
     for (std::size_t i = 0; i < indices.size(); ++i) {
         if (indices[i] > count)
             in.fail_at(cells.lines[i / 3], "vertex index " + std::to_string(indices[i]) +
