@@ -11,7 +11,6 @@
 #include <cmath>
 #include <limits>
 #include <span>
-#include <vector>
 
 #include "cgal_kernel.hpp"
 #include "locate_trees.hpp"
@@ -289,26 +288,30 @@ std::array<double, 4> exact_weights_in(const detail::ElementPoints& e, const std
     const int m = count - 1;
     std::array<const Point*, 4> q{};
     for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) q[j] = e.p[static_cast<std::size_t>(kept[j])];
-    // the projections onto m of the `dimension` axes; the kept simplex is a face of an element
-    // that is not flat, so one of them at least is not flat either
-    std::vector<std::array<std::size_t, 3>> projections;
-    for (std::size_t a = 0; a < static_cast<std::size_t>(dimension); ++a) {
-        if (m == 1) projections.push_back({a, 0, 0});
-        for (std::size_t b = a + 1; b < static_cast<std::size_t>(dimension); ++b) {
-            if (m == 2) projections.push_back({a, b, 0});
-            for (std::size_t c = b + 1; c < static_cast<std::size_t>(dimension); ++c)
-                if (m == 3) projections.push_back({a, b, c});
-        }
-    }
-    for (const auto& axes : projections) {
+    // the weights in the projection onto the axes `axes` (the first m of them), or false when
+    // the kept simplex is flat there
+    auto solve_in = [&](const std::array<std::size_t, 3>& axes) {
         const Rational whole = projected_volume(q, m, axes);
-        if (CGAL::is_zero(whole)) continue;
+        if (CGAL::is_zero(whole)) return false;
         for (std::size_t j = 0; j < static_cast<std::size_t>(count); ++j) {
             std::array<const Point*, 4> part = q;
             part[j] = &x;
             w[static_cast<std::size_t>(kept[j])] = CGAL::to_double(projected_volume(part, m, axes) / whole);
         }
-        break;
+        return true;
+    };
+    // the projections onto m of the `dimension` axes, in order until one is not flat; the kept
+    // simplex is a face of an element that is not flat, so one of them at least is not flat
+    // either
+    const auto d = static_cast<std::size_t>(dimension);
+    bool solved = m == 0;
+    for (std::size_t a = 0; a < d && !solved; ++a) {
+        if (m == 1) solved = solve_in({a, 0, 0});
+        for (std::size_t b = a + 1; b < d && !solved; ++b) {
+            if (m == 2) solved = solve_in({a, b, 0});
+            for (std::size_t c = b + 1; c < d && !solved; ++c)
+                if (m == 3) solved = solve_in({a, b, c});
+        }
     }
     if (m == 0) w[static_cast<std::size_t>(kept[0])] = 1;
     normalise(w);

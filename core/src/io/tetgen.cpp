@@ -31,6 +31,14 @@ void start(Cursor& in, const char* what) {
         in.fail(std::string("truncated file: expected ") + what);
 }
 
+// The record count a header starts with ("the number of THINGS").
+std::int64_t header_count(Cursor& in, const std::string& things) {
+    start(in, ("the number of " + things).c_str());
+    const std::string what = "number of " + things;
+    return in.to_integer(in.need_in_line(what.c_str()), what.c_str(), 0,
+                         static_cast<std::int64_t>(invalid_id) - 1);
+}
+
 // Header fields after the first may be left out; they default as in TetGen's own reader.
 std::int64_t optional_field(Cursor& in, const char* what, std::int64_t fallback, std::int64_t low,
                             std::int64_t high) {
@@ -122,10 +130,7 @@ void read_nodes(Cursor& node, std::int64_t nodes, std::int64_t dimension,
 void read_elements(const TetgenText& text, std::int64_t dimension, std::int64_t base,
                    std::size_t vertex_count, RawMesh& raw) {
     Cursor ele(text.ele, text.ele_name, '#');
-    start(ele, "the number of elements");
-    const std::int64_t count =
-        ele.to_integer(ele.need_in_line("number of elements"), "number of elements", 0,
-                       static_cast<std::int64_t>(invalid_id) - 1);
+    const std::int64_t count = header_count(ele, "elements");
     const std::string_view per_token = ele.next_in_line();
     const std::int64_t per_element =
         per_token.empty() ? 4 : ele.to_integer(per_token, "nodes per element");
@@ -172,10 +177,7 @@ void read_faces(const TetgenText& text, std::int64_t base, std::size_t vertex_co
                 CellList& faces) {
     faces.file = text.face_name;
     Cursor in(*text.face, text.face_name, '#');
-    start(in, "the number of faces");
-    const std::int64_t face_count =
-        in.to_integer(in.need_in_line("number of faces"), "number of faces", 0,
-                      static_cast<std::int64_t>(invalid_id) - 1);
+    const std::int64_t face_count = header_count(in, "faces");
     const std::int64_t markers = optional_field(in, "boundary marker flag", 0, 0, 1);
     end_of_line(in);
     const std::size_t n = plausible_count(face_count, text.face->size(), 8);
@@ -222,10 +224,7 @@ Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadRe
     // order would: the .node file's first, then the .ele file's, then the .face file's (a later
     // file's reading relies on the node count only once the .node file is known to be sound).
     Cursor node(text.node, text.node_name, '#');
-    start(node, "the number of nodes");
-    const std::int64_t nodes =
-        node.to_integer(node.need_in_line("number of nodes"), "number of nodes", 0,
-                        static_cast<std::int64_t>(invalid_id) - 1);
+    const std::int64_t nodes = header_count(node, "nodes");
     const std::string_view dim_token = node.next_in_line();
     const std::int64_t dimension = dim_token.empty() ? 3 : node.to_integer(dim_token, "dimension");
     if (dimension != 2 && dimension != 3)
