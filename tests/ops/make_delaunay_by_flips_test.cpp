@@ -122,6 +122,27 @@ TEST(MakeDelaunayByFlips, FlipsKiteDiagonal) {
     ASSERT_TRUE(mesh.validate().ok());
 }
 
+// The kite's flip is wanted in the reference positions, but in the deformed ones vertex 1 has
+// moved right past vertex 2, so the new triangle <1,2,3> would be clockwise there: the edge stays
+// (EditJournalRandom.PlanarRandomPoints, SXK_SEED=2911892313, step 1252, made such a flip).
+TEST(MakeDelaunayByFlips, NeverInvertsATriangleInTheOtherPositions) {
+    Mesh mesh = kite();
+    mesh.set_deformed(1, {2.5, -0.1, 0});
+    ASSERT_EQ(orient2d(mesh.deformed(0), mesh.deformed(1), mesh.deformed(2)), Sign::positive);
+    ASSERT_EQ(orient2d(mesh.deformed(1), mesh.deformed(2), mesh.deformed(3)), Sign::negative);
+    const Mesh copy = mesh;
+    EXPECT_FALSE(is_locally_delaunay(mesh, find_edge(mesh, 0, 2), Positions::reference));
+    auto flips = make_delaunay_by_flips(mesh, Positions::reference);
+    ASSERT_TRUE(flips.ok()) << flips.reason();
+    EXPECT_EQ(*flips, 0u);
+    test::expect_same_state(mesh, copy);
+    for (ElementId t : elements(mesh)) {
+        EXPECT_EQ(element_orientation(mesh, t, Positions::reference), Sign::positive);
+        EXPECT_EQ(element_orientation(mesh, t, Positions::deformed), Sign::positive);
+    }
+    ASSERT_TRUE(mesh.validate().ok());
+}
+
 TEST(MakeDelaunayByFlips, TerminatesOnCocircularGrid) {
     // every grid square is cocircular: no edge is strictly illegal, nothing is flipped
     Mesh mesh = test::planar_grid(6);

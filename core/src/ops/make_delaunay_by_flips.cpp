@@ -62,14 +62,28 @@ Outcome<std::size_t> make_delaunay_by_flips(Mesh& mesh, Positions positions) {
             if (mesh.mate(f) != invalid_id && f < mesh.mate(f)) stack.push_back(f);
 
     // incircle > 0 on two counter-clockwise triangles implies a strictly convex quadrilateral
-    // (§5.2.1), so the geometric checks of flip_edge are already decided for `positions`; the
-    // other positions are deliberately not consulted (see the header).
+    // (§5.2.1), so the geometric checks of flip_edge are already decided for `positions`. The
+    // other set decides nothing about Delaunay-ness, but a flip must not invert or flatten a
+    // triangle there: such an edge stays, like a constraint (see the header).
     const FlipOptions options{.topology_only = true};
+    const Positions other = positions == Positions::reference ? Positions::deformed : Positions::reference;
+    auto keeps_other_set_positive = [&](FaceId edge) {
+        const Simplex edge_simplex = mesh.face_simplex(edge);
+        const VertexId a = edge_simplex.sign() > 0 ? edge_simplex.vertex(0) : edge_simplex.vertex(1);
+        const VertexId b = edge_simplex.sign() > 0 ? edge_simplex.vertex(1) : edge_simplex.vertex(0);
+        const VertexId c = mesh.opposite_vertex(mesh.face_element(edge), edge);
+        const VertexId d = mesh.opposite_vertex(mesh.face_element(mesh.mate(edge)), mesh.mate(edge));
+        // the quadrilateral a, d, b, c is counter-clockwise; the flip makes <a,d,c> and <d,b,c>
+        const Point &pa = position(mesh, a, other), &pb = position(mesh, b, other);
+        const Point &pc = position(mesh, c, other), &pd = position(mesh, d, other);
+        return orient2d(pa, pd, pc) == Sign::positive && orient2d(pd, pb, pc) == Sign::positive;
+    };
     std::size_t flips = 0;
     while (!stack.empty()) {
         const FaceId edge = stack.back();
         stack.pop_back();
-        if (!mesh.is_face(edge) || is_locally_delaunay(mesh, edge, positions)) continue;
+        if (!mesh.is_face(edge) || is_locally_delaunay(mesh, edge, positions) || !keeps_other_set_positive(edge))
+            continue;
         // In a valid planar triangulation a convex quadrilateral's other diagonal cannot exist
         // (it would cross a-b), so the flip is refused only at a constraint: an interface
         // between labels or a labelled edge stays (the result is then constrained Delaunay).

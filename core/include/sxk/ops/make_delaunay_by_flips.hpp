@@ -42,8 +42,9 @@ SXK_API bool is_locally_delaunay(const Mesh& mesh, FaceId edge,
 //   labels of untouched elements and all hull FaceIds of each flip are kept. Flips happen only
 //   when incircle is strictly positive, so cocircular input terminates (each flip strictly
 //   lowers the lifted surface) and is left as it is.
-//   Only `positions` are considered: a flip that is valid there may invert triangles in the
-//   other set of positions when the two differ.
+//   Only `positions` decide what is Delaunay. A flip that would make a triangle inverted or
+//   flat in the other set of positions (when the two differ) is not made: that edge stays, like
+//   a constraint, so no triangle is ever inverted in either set.
 // Refusals (mesh untouched): not planar; a triangle not strictly counter-clockwise in
 // `positions` ("make_delaunay_by_flips: element 7 is not counter-clockwise ...").
 SXK_API Outcome<std::size_t> make_delaunay_by_flips(Mesh& mesh,
