@@ -115,7 +115,6 @@ std::optional<Refusal> match_faces(std::span<const Simplex> simplexes, std::size
     std::vector<Findings> found(parts + 1);
     tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
         Findings& mine = found[part];
-        auto duplicate = [&](std::size_t a, std::size_t b) { mine.duplicate(a, b); };
         for (std::size_t v = first_vertex[part]; v < first_vertex[part + 1]; ++v) {
             FaceEntry* begin = entries.data() + bucket_start[v];
             FaceEntry* end = entries.data() + bucket_start[v + 1];
@@ -142,7 +141,7 @@ std::optional<Refusal> match_faces(std::span<const Simplex> simplexes, std::size
                         mates[a] = b;
                         mates[b] = a;
                     } else if (simplexes[ea].same_vertices(simplexes[eb])) {
-                        duplicate(ea, eb);
+                        mine.duplicate(ea, eb);
                     } else {
                         mine.report(std::max(ea, eb),
                                     "elements " + std::to_string(std::min(ea, eb)) + " and " +

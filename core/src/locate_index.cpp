@@ -15,44 +15,38 @@
 namespace sxk {
 namespace {
 
-// Calls f(cell) for every cell of the grid that element t's bounding box overlaps.
-template <class F>
-void for_each_cell_of(const detail::SeedGrid& grid, const Mesh& mesh, ElementId t, Positions positions, F&& f) {
-    const Simplex& s = mesh.simplex(t);
-    const int d = mesh.topological_dimension();
+// Element t, whose box in the trees is `box`, becomes the seed of every cell the box overlaps
+// whose seed is not a live element (an empty cell, or one whose seed an edit removed): the
+// children of a split seed the cells their parent seeded, so a locate there walks from them
+// instead of asking the tree. The box is the one the event computed for the tree (padded a
+// millionth, which may reach one more cell: any element near a cell is a correct start).
+template <int D>
+void reseed(detail::SeedGrid& grid, const Mesh& mesh, ElementId t, const typename detail::BoxTree<D>::Box& box) {
+    if (grid.empty()) return;
     std::array<std::size_t, 3> first{0, 0, 0}, last{0, 0, 0};
-    for (std::size_t k = 0; k < static_cast<std::size_t>(d); ++k) {
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (int j = 0; j < s.count(); ++j) {
-            const double c = detail::position(mesh, s.vertex(j), positions)[k];
-            lo = std::min(lo, c);
-            hi = std::max(hi, c);
-        }
+    for (int k = 0; k < D; ++k) {
+        const auto uk = static_cast<std::size_t>(k);
+        const double lo = detail::BoxTree<D>::corner(box.min_corner(), k);
+        const double hi = detail::BoxTree<D>::corner(box.max_corner(), k);
         if (!(hi >= lo)) return;  // non-finite positions: no cell
-        const double top = static_cast<double>(grid.cells[k] - 1);
-        first[k] = static_cast<std::size_t>(std::clamp(std::floor((lo - grid.low[k]) / grid.cell[k]), 0.0, top));
-        last[k] = static_cast<std::size_t>(std::clamp(std::floor((hi - grid.low[k]) / grid.cell[k]), 0.0, top));
+        const double top = static_cast<double>(grid.cells[uk] - 1);
+        first[uk] = static_cast<std::size_t>(std::clamp(std::floor((lo - grid.low[uk]) / grid.cell[uk]), 0.0, top));
+        last[uk] = static_cast<std::size_t>(std::clamp(std::floor((hi - grid.low[uk]) / grid.cell[uk]), 0.0, top));
     }
     for (std::size_t z = first[2]; z <= last[2]; ++z)
         for (std::size_t y = first[1]; y <= last[1]; ++y)
-            for (std::size_t x = first[0]; x <= last[0]; ++x) f((z * grid.cells[1] + y) * grid.cells[0] + x);
-}
-
-// Element t becomes the seed of every cell its box overlaps whose seed is not a live element (an
-// empty cell, or one whose seed an edit removed): the children of a split seed the cells their
-// parent seeded, so a locate there walks from them instead of asking the tree.
-void reseed(detail::SeedGrid& grid, const Mesh& mesh, ElementId t, Positions positions) {
-    if (grid.empty()) return;
-    for_each_cell_of(grid, mesh, t, positions, [&](std::size_t cell) {
-        if (!mesh.is_element(grid.seeds[cell].load(std::memory_order_relaxed)))
-            grid.seeds[cell].store(t, std::memory_order_relaxed);
-    });
+            for (std::size_t x = first[0]; x <= last[0]; ++x) {
+                const std::size_t cell = (z * grid.cells[1] + y) * grid.cells[0] + x;
+                if (!mesh.is_element(grid.seeds[cell].load(std::memory_order_relaxed)))
+                    grid.seeds[cell].store(t, std::memory_order_relaxed);
+            }
 }
 
 // The seed grid of locate (locate_trees.hpp) for planar and tetrahedral meshes: cells of about
 // SeedGrid::elements_per_cell elements over the bounding box, each seeded with an element whose
 // centroid lies in it, else one whose bounding box overlaps it (cells that no element's box
 // reaches stay empty: a locate there uses the tree).
+template <int D>
 void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) {
     grid = detail::SeedGrid{};
     const int d = mesh.topological_dimension();
@@ -97,8 +91,9 @@ void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) 
     // get an element whose box overlaps them: a locate there walks a step or two instead of
     // descending the tree, which sent 12% of the queries on a fresh 1M cube to the tree
     // (docs/performance.md "locate").
-    for (const ElementId t : elements(mesh)) reseed(grid, mesh, t, positions);
+    for (const ElementId t : elements(mesh)) reseed<D>(grid, mesh, t, detail::element_box<D>(mesh, t, positions));
 }
+
 template <int D>
 void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
     using Value = typename detail::BoxTree<D>::Value;
@@ -110,7 +105,7 @@ void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
     values.reserve(mesh.boundary_face_count());
     mesh.for_each_boundary_face([&](FaceId f) { values.emplace_back(detail::face_box<D>(mesh, f, positions), f); });
     detail::face_tree<D>(trees).load(values);
-    build_seeds(trees.seeds, mesh, positions);
+    build_seeds<D>(trees.seeds, mesh, positions);
 }
 
 // Re-boxes the elements around the moved vertices and their boundary faces (a face's box
@@ -256,16 +251,20 @@ void SpatialIndex::element_removed(const Mesh& mesh, ElementId element, const Si
 
 void SpatialIndex::element_changed(const Mesh& mesh, ElementId element, const Simplex&) {
     detail::in_dimension(mesh, [&](auto d) {
-        detail::element_tree<decltype(d)::value>(*m_trees).update(element, detail::element_box<decltype(d)::value>(mesh, element, m_options.positions));
+        constexpr int D = decltype(d)::value;
+        const auto box = detail::element_box<D>(mesh, element, m_options.positions);
+        detail::element_tree<D>(*m_trees).update(element, box);
+        reseed<D>(m_trees->seeds, mesh, element, box);
     });
-    reseed(m_trees->seeds, mesh, element, m_options.positions);
 }
 
 void SpatialIndex::element_added(const Mesh& mesh, ElementId element) {
     detail::in_dimension(mesh, [&](auto d) {
-        detail::element_tree<decltype(d)::value>(*m_trees).insert(element, detail::element_box<decltype(d)::value>(mesh, element, m_options.positions));
+        constexpr int D = decltype(d)::value;
+        const auto box = detail::element_box<D>(mesh, element, m_options.positions);
+        detail::element_tree<D>(*m_trees).insert(element, box);
+        reseed<D>(m_trees->seeds, mesh, element, box);
     });
-    reseed(m_trees->seeds, mesh, element, m_options.positions);
 }
 
 void SpatialIndex::boundary_removed(const Mesh& mesh, FaceId face, const Simplex&) {
