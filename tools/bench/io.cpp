@@ -1,7 +1,7 @@
 // Reading and writing mesh files (issue 12): sxk::read_mesh / write_mesh in every text format,
 // against TetGen's own load of the same .node/.ele/.face.
 //
-//   io [google-benchmark flags] [--tetgen=PATH] DIR NAME=MESH.ele
+//   io [google-benchmark flags] [--tetgen=PATH] [--sxk=PATH] [--former-sxk=PATH] DIR NAME=MESH.ele
 //
 // Setup (untimed): MESH.ele is read once and written into DIR as NAME.mesh (Medit),
 // NAME-22.msh and NAME-41.msh (Gmsh 2.2 / 4.1), NAME.off and NAME.obj (its boundary surface:
@@ -18,6 +18,10 @@
 //                       and rebuilds its mesh (-r), writes nothing (-NEF), quietly (-Q). Debian
 //                       ships only the tetgen program, no library, so this is the child process'
 //                       user + system time from wait4 (manual time), process start included.
+//   sxk_info/NAME       `sxk info MESH.ele` (with --sxk), the command issue 12 timed ("3.5 s of
+//   sxk_info_former/NAME  CPU"): read, components, labels; with --former-sxk the same command
+//                       built on the former library. Wall time of the child process (manual time),
+//                       its user + system time as the counter cpu_s.
 // Counters: MB_per_s (bytes of the files read or written per second of wall time), tets.
 #include <benchmark/benchmark.h>
 
@@ -25,11 +29,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sxk/io.hpp"
@@ -104,32 +110,52 @@ void write_file(benchmark::State& state, const Input* input, const Format* forma
     state.counters["tets"] = static_cast<double>(input->tets);
 }
 
+// What a child process cost: its wall time and its user + system time (wait4).
+struct ChildTimes {
+    double wall = 0;
+    double cpu = 0;
+};
+
+// Runs `arguments` (arguments[0] the program) in `dir` with stdout to /dev/null; nullopt when
+// it could not start or did not exit 0.
+std::optional<ChildTimes> run_child(const std::vector<std::string>& arguments, const fs::path& dir) {
+    std::vector<char*> argv;
+    for (const std::string& argument : arguments)
+        argv.push_back(const_cast<char*>(argument.c_str()));
+    argv.push_back(nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t child = fork();
+    if (child == 0) {
+        if (chdir(dir.c_str()) != 0)
+            _exit(127);
+        std::freopen("/dev/null", "w", stdout);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    rusage usage{};
+    if (child < 0 || wait4(child, &status, 0, &usage) != child || !WIFEXITED(status) ||
+        WEXITSTATUS(status) != 0)
+        return std::nullopt;
+    auto seconds = [](const timeval& t) {
+        return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
+    };
+    return ChildTimes{std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                      seconds(usage.ru_utime) + seconds(usage.ru_stime)};
+}
+
 void tetgen_load(benchmark::State& state, const Input* input, const std::string* program) {
     fs::path stem = input->ele;
     stem.replace_extension();  // X.1
+    // in the mesh's folder: TetGen would write there if -NEF did not stop it
+    const std::vector<std::string> command = {*program, "-rNEFQ", stem.filename().string()};
     for (auto _ : state) {
-        const pid_t child = fork();
-        if (child == 0) {
-            // in the mesh's folder: TetGen would write there if -NEF did not stop it
-            if (chdir(stem.parent_path().c_str()) != 0)
-                _exit(127);
-            std::freopen("/dev/null", "w", stdout);
-            const std::string base = stem.filename().string();
-            execl(program->c_str(), program->c_str(), "-rNEFQ", base.c_str(),
-                  static_cast<char*>(nullptr));
-            _exit(127);
-        }
-        int status = 0;
-        rusage usage{};
-        if (child < 0 || wait4(child, &status, 0, &usage) != child || !WIFEXITED(status) ||
-            WEXITSTATUS(status) != 0) {
+        const std::optional<ChildTimes> times = run_child(command, stem.parent_path());
+        if (!times) {
             state.SkipWithError("tetgen -rNEFQ failed");
             break;
         }
-        auto seconds = [](const timeval& t) {
-            return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
-        };
-        state.SetIterationTime(seconds(usage.ru_utime) + seconds(usage.ru_stime));
+        state.SetIterationTime(times->cpu);
     }
     state.counters["MB_per_s"] =
         benchmark::Counter(static_cast<double>(bytes_read(input->ele)) / 1e6,
@@ -137,22 +163,44 @@ void tetgen_load(benchmark::State& state, const Input* input, const std::string*
     state.counters["tets"] = static_cast<double>(input->tets);
 }
 
+// `PROGRAM info MESH.ele`, the command the issue timed: wall time as the iteration time, the
+// process' user + system time as the counter cpu_s.
+void sxk_info(benchmark::State& state, const Input* input, const std::string* program) {
+    const std::vector<std::string> command = {*program, "info", fs::absolute(input->ele).string()};
+    double cpu = 0;
+    for (auto _ : state) {
+        const std::optional<ChildTimes> times = run_child(command, input->dir);
+        if (!times) {
+            state.SkipWithError((*program + " info failed").c_str());
+            break;
+        }
+        state.SetIterationTime(times->wall);
+        cpu += times->cpu;
+    }
+    state.counters["cpu_s"] = benchmark::Counter(cpu, benchmark::Counter::kAvgIterations);
+    state.counters["tets"] = static_cast<double>(input->tets);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
-    std::string tetgen_program;
+    std::string tetgen_program, sxk_program, former_sxk_program;
     std::vector<std::string> arguments;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument.rfind("--tetgen=", 0) == 0)
             tetgen_program = argument.substr(9);
+        else if (argument.rfind("--sxk=", 0) == 0)
+            sxk_program = argument.substr(6);
+        else if (argument.rfind("--former-sxk=", 0) == 0)
+            former_sxk_program = argument.substr(13);
         else
             arguments.push_back(argument);
     }
     const auto equals = arguments.size() == 2 ? arguments[1].find('=') : std::string::npos;
     if (equals == std::string::npos || equals == 0) {
-        std::fprintf(stderr, "usage: io [--benchmark_...] [--tetgen=PATH] DIR NAME=MESH.ele\n");
+        std::fprintf(stderr, "usage: io [--benchmark_...] [--tetgen=PATH] [--sxk=PATH] [--former-sxk=PATH] DIR NAME=MESH.ele\n");
         return 2;
     }
     Input input;
@@ -195,6 +243,12 @@ int main(int argc, char** argv) {
                                      &tetgen_program)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
+    for (const auto& [prefix, program] : {std::pair{"sxk_info/", &sxk_program},
+                                          std::pair{"sxk_info_former/", &former_sxk_program}})
+        if (!program->empty())
+            benchmark::RegisterBenchmark((prefix + input.name).c_str(), sxk_info, &input, program)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "raw_mesh.hpp"
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
 
@@ -33,7 +34,10 @@ struct TetgenText {
     const std::string_view* face = nullptr;
     std::string face_name;
 };
-Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report);
+// Parses the three texts; the caller builds the mesh (build_mesh) once it has let go of them,
+// so that a large mesh's text and its build do not take memory at the same time (the femur-1226k:
+// 75 MB of text, a quarter of the read's peak).
+RawMesh parse_tetgen_text(const TetgenText& text);
 // Whether a .ele text's header announces tetrahedra (its second field, 4 by default; 3 or 6
 // mean triangles): decides between the .face and the .edge file before the .ele file is read.
 // When that field is malformed, reading the .ele file fails with its own message.

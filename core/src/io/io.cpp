@@ -107,26 +107,29 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, Re
         ele.replace_extension(".ele");
         face.replace_extension(".face");
         edge.replace_extension(".edge");
-        const detail::TextBuffer node_data = io::load_file(node);
-        const detail::TextBuffer ele_data = io::load_file(ele);
-        io::TetgenText text;
-        text.node_name = node.string();
-        text.ele_name = ele.string();
-        text.node = checked(node_data, text.node_name);
-        text.ele = checked(ele_data, text.ele_name);
-        // which of .face/.edge applies depends on the .ele file; read both if present, the
-        // reader picks one
-        detail::TextBuffer face_data;
-        std::string_view face_text;
-        const bool tetrahedra = io::tetgen_announces_tetrahedra(text.ele, text.ele_name);
-        const std::filesystem::path& labels = tetrahedra ? face : edge;
-        if (std::filesystem::exists(labels)) {
-            text.face_name = labels.string();
-            face_data = io::load_file(labels);
-            face_text = checked(face_data, text.face_name);
-            text.face = &face_text;
+        io::RawMesh raw;
+        {  // the texts go before the build (formats.hpp, parse_tetgen_text)
+            const detail::TextBuffer node_data = io::load_file(node);
+            const detail::TextBuffer ele_data = io::load_file(ele);
+            io::TetgenText text;
+            text.node_name = node.string();
+            text.ele_name = ele.string();
+            text.node = checked(node_data, text.node_name);
+            text.ele = checked(ele_data, text.ele_name);
+            // which of .face/.edge applies depends on the .ele file; the reader picks one
+            detail::TextBuffer face_data;
+            std::string_view face_text;
+            const bool tetrahedra = io::tetgen_announces_tetrahedra(text.ele, text.ele_name);
+            const std::filesystem::path& labels = tetrahedra ? face : edge;
+            if (std::filesystem::exists(labels)) {
+                text.face_name = labels.string();
+                face_data = io::load_file(labels);
+                face_text = checked(face_data, text.face_name);
+                text.face = &face_text;
+            }
+            raw = io::parse_tetgen_text(text);
         }
-        return io::read_tetgen_text(text, options, report);
+        return io::build_mesh(raw, ele.string(), options, report);
     }
     const detail::TextBuffer data = io::load_file(path);
     return read_text(checked(data, name), *format, name, options, report);
@@ -140,14 +143,18 @@ Mesh read_mesh(std::istream& in, Format format, const std::string& name, const R
 
 Mesh read_tetgen(std::istream& node, const std::string& node_name, std::istream& ele,
                  const std::string& ele_name, const ReadOptions& options, ReadReport* report) {
-    const detail::TextBuffer node_data = io::load_stream(node, node_name);
-    const detail::TextBuffer ele_data = io::load_stream(ele, ele_name);
-    io::TetgenText text;
-    text.node_name = node_name;
-    text.ele_name = ele_name;
-    text.node = checked(node_data, node_name);
-    text.ele = checked(ele_data, ele_name);
-    return io::read_tetgen_text(text, options, report);
+    io::RawMesh raw;
+    {  // the texts go before the build (formats.hpp, parse_tetgen_text)
+        const detail::TextBuffer node_data = io::load_stream(node, node_name);
+        const detail::TextBuffer ele_data = io::load_stream(ele, ele_name);
+        io::TetgenText text;
+        text.node_name = node_name;
+        text.ele_name = ele_name;
+        text.node = checked(node_data, node_name);
+        text.ele = checked(ele_data, ele_name);
+        raw = io::parse_tetgen_text(text);
+    }
+    return io::build_mesh(raw, ele_name, options, report);
 }
 
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {

@@ -213,7 +213,7 @@ bool tetgen_announces_tetrahedra(std::string_view ele, const std::string& ele_na
     return per_element != "3" && per_element != "6";
 }
 
-Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadReport* report) {
+RawMesh parse_tetgen_text(const TetgenText& text) {
     RawMesh raw;
     raw.vertex_file = text.node_name;
     raw.triangles.file = raw.tetrahedra.file = text.ele_name;
@@ -269,7 +269,7 @@ Mesh read_tetgen_text(const TetgenText& text, const ReadOptions& options, ReadRe
             std::rethrow_exception(problem);
     if (text.face)
         (faces.size == 3 ? raw.triangles : raw.edges) = std::move(faces);
-    return build_mesh(raw, text.ele_name, options, report);
+    return raw;
 }
 
 TetgenFiles write_tetgen(const Mesh& mesh, const WriteOptions& options) {
