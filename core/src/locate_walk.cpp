@@ -64,6 +64,11 @@ ElementId walk_triangles(const Mesh& mesh, const Point& x, ElementId t, Position
 // circling in non-Delaunay meshes (walks in a mesh of n elements take about n^(1/3) steps).
 ElementId walk_tetrahedra(const Mesh& mesh, const Point& x, ElementId t, Positions positions, std::size_t max_steps) {
     for (std::size_t step = 0; step < max_steps; ++step) {
+        // the next element is one of these: its record is on its way while this one's positions
+        // arrive (a walk on a mesh larger than the cache misses twice per step otherwise:
+        // docs/performance.md "locate")
+        for (int i = 0; i < 4; ++i)
+            if (const ElementId u = mesh.neighbor(t, i); u != invalid_id) __builtin_prefetch(&mesh.simplex(u));
         const int face = outside_face(mesh, t, x, static_cast<std::uint32_t>(step % 4), positions);
         if (face == -1) return t;
         if (face == -2) return invalid_id;
