@@ -259,9 +259,7 @@ private:
         m_section = "$Nodes";
         const std::int64_t count = integer("number of nodes", 0, invalid_id - 1);
         const std::size_t n = plausible_count(count, bytes_left(), 8);
-        detail::reserve_fresh(m_raw.points, n);
-        detail::reserve_fresh(m_raw.point_lines, n);
-        detail::reserve_fresh(m_raw.point_numbers, n);
+        m_raw.reserve_points(n, true);
         for (std::int64_t i = 0; i < count; ++i) {
             const std::string_view token = m_in.need("node tag");
             if (token[0] == '$')
@@ -280,9 +278,7 @@ private:
         integer("smallest node tag", 0, INT64_MAX);
         integer("largest node tag", 0, INT64_MAX);
         const std::size_t n = plausible_count(count, bytes_left(), 8);
-        detail::reserve_fresh(m_raw.points, n);
-        detail::reserve_fresh(m_raw.point_lines, n);
-        detail::reserve_fresh(m_raw.point_numbers, n);
+        m_raw.reserve_points(n, true);
         for (std::int64_t b = 0; b < blocks; ++b) {
             const std::int64_t dim = integer("entity dimension", 0, 3);
             integer("entity tag", INT64_MIN, INT64_MAX);

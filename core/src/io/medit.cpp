@@ -19,7 +19,6 @@
 #include <climits>
 #include <cstring>
 
-#include "../fresh_array.hpp"
 #include "formats.hpp"
 #include "raw_mesh.hpp"
 #include "text.hpp"
@@ -111,9 +110,7 @@ void read_cells(Cursor& in, const char* name, CellList& cells, std::size_t verte
     Section section(in, name);
     const std::size_t k = static_cast<std::size_t>(cells.size);
     const std::size_t n = plausible_count(section.declared(), bytes_left, 2 * (k + 1));
-    detail::reserve_fresh(cells.vertices, n * k);
-    detail::reserve_fresh(cells.labels, n);
-    detail::reserve_fresh(cells.lines, n);
+    cells.reserve(n);
     for (std::int64_t e = 0; e < section.declared(); ++e) {
         for (std::size_t j = 0; j < k; ++j) {
             const std::string_view token = section.need(e, "vertex index");
@@ -175,8 +172,7 @@ Mesh read_medit(std::string_view text, const std::string& name, const ReadOption
             have_vertices = true;
             Section section(in, "Vertices");
             const std::size_t n = plausible_count(section.declared(), bytes_left(), 2 * 4);
-            detail::reserve_fresh(raw.points, n);
-            detail::reserve_fresh(raw.point_lines, n);
+            raw.reserve_points(n);
             static constexpr const char* axes[] = {"x coordinate", "y coordinate", "z coordinate"};
             for (std::int64_t v = 0; v < section.declared(); ++v) {
                 Point p{0, 0, 0};

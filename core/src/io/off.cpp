@@ -8,7 +8,6 @@
 // Faces with more than three vertices are refused (the mesh is simplicial). OFF holds no labels.
 // Always x y z: a mesh whose z are all 0 is planar (ambient dimension 2), and then the
 // triangles must be counter-clockwise. Written tetrahedral meshes become their boundary.
-#include "../fresh_array.hpp"
 #include "formats.hpp"
 #include "raw_mesh.hpp"
 #include "text.hpp"
@@ -46,8 +45,7 @@ Mesh read_off(std::string_view text, const std::string& name, const ReadOptions&
         in.fail("unexpected value " + quote(in.next_in_line()) + " after the counts");
 
     const std::size_t reserve = plausible_count(nv, text.size(), 6);
-    detail::reserve_fresh(raw.points, reserve);
-    detail::reserve_fresh(raw.point_lines, reserve);
+    raw.reserve_points(reserve);
     static constexpr const char* axes[] = {"x coordinate", "y coordinate", "z coordinate"};
     for (std::int64_t v = 0; v < nv; ++v) {
         if (!in.next_line())
@@ -69,9 +67,7 @@ Mesh read_off(std::string_view text, const std::string& name, const ReadOptions&
 
     CellList& cells = raw.triangles;
     const std::size_t faces = plausible_count(nf, text.size(), 8);
-    detail::reserve_fresh(cells.vertices, 3 * faces);
-    detail::reserve_fresh(cells.lines, faces);
-    detail::reserve_fresh(cells.labels, faces);
+    cells.reserve(faces);
     for (std::int64_t f = 0; f < nf; ++f) {
         if (!in.next_line())
             in.fail("truncated file: the header declares " + std::to_string(nf) + " faces, found " +

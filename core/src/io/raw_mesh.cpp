@@ -17,6 +17,19 @@
 
 namespace sxk::io {
 
+void CellList::reserve(std::size_t n, bool numbered) {
+    detail::reserve_fresh(vertices, n * static_cast<std::size_t>(size));
+    detail::reserve_fresh(labels, n);
+    detail::reserve_fresh(lines, n);
+    if (numbered) detail::reserve_fresh(numbers, n);
+}
+
+void RawMesh::reserve_points(std::size_t n, bool numbered) {
+    detail::reserve_fresh(points, n);
+    detail::reserve_fresh(point_lines, n);
+    if (numbered) detail::reserve_fresh(point_numbers, n);
+}
+
 std::size_t plausible_count(std::int64_t wanted, std::size_t bytes_left,
                             std::size_t bytes_per_record) {
     if (wanted <= 0)

@@ -52,6 +52,9 @@ struct CellList {
     bool repeats_are_one_face = false;
 
     std::size_t count() const { return lines.size(); }
+    // Room for `n` cells (and their file numbers when `numbered`), the memory backed in parallel
+    // first (core/src/fresh_array.hpp).
+    void reserve(std::size_t n, bool numbered = false);
     std::int64_t number(std::size_t i) const {
         return numbers.empty() ? static_cast<std::int64_t>(i) + 1 : numbers[i];
     }
@@ -71,6 +74,8 @@ struct RawMesh {
     CellList triangles{3};
     CellList tetrahedra{4};
 
+    // Room for `n` points and their lines (and file numbers when `numbered`), as CellList::reserve.
+    void reserve_points(std::size_t n, bool numbered = false);
     std::int64_t vertex_number(VertexId v) const {
         return point_numbers.empty() ? vertex_base + static_cast<std::int64_t>(v)
                                      : point_numbers[v];

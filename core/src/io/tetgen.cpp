@@ -16,7 +16,6 @@
 
 #include <tbb/parallel_invoke.h>
 
-#include "../fresh_array.hpp"
 #include "formats.hpp"
 #include "raw_mesh.hpp"
 #include "text.hpp"
@@ -94,8 +93,7 @@ void read_nodes(Cursor& node, std::int64_t nodes, std::int64_t dimension,
                 std::int64_t node_attributes, std::int64_t node_markers, std::size_t text_size,
                 RawMesh& raw) {
     const std::size_t reserve = plausible_count(nodes, text_size, 8);
-    detail::reserve_fresh(raw.points, reserve);
-    detail::reserve_fresh(raw.point_lines, reserve);
+    raw.reserve_points(reserve);
     std::int64_t base = 0;
     static constexpr const char* axes[] = {"x coordinate", "y coordinate", "z coordinate"};
     for (std::int64_t i = 0; i < nodes; ++i) {
@@ -144,13 +142,7 @@ void read_elements(const TetgenText& text, std::int64_t dimension, std::int64_t 
     const std::int64_t attributes = optional_field(ele, "number of attributes", 0, 0, INT_MAX);
     end_of_line(ele);
     CellList& cells = per_element == 4 ? raw.tetrahedra : raw.triangles;
-    {
-        const std::size_t n = plausible_count(count, text.ele.size(), 10);
-        detail::reserve_fresh(cells.vertices, n * static_cast<std::size_t>(per_element));
-        detail::reserve_fresh(cells.labels, n);
-        detail::reserve_fresh(cells.lines, n);
-        detail::reserve_fresh(cells.numbers, n);
-    }
+    cells.reserve(plausible_count(count, text.ele.size(), 10), true);
     for (std::int64_t i = 0; i < count; ++i) {
         record(ele, "elements", count, i);
         cells.numbers.push_back(
@@ -183,7 +175,7 @@ void read_faces(const TetgenText& text, std::int64_t base, std::size_t vertex_co
     const std::size_t n = plausible_count(face_count, text.face->size(), 8);
     CellList scratch(faces.size);  // the faces are checked but not kept without markers
     CellList& target = markers ? faces : scratch;
-    detail::reserve_fresh(target.vertices, n * static_cast<std::size_t>(faces.size));
+    target.reserve(n, true);
     for (std::int64_t i = 0; i < face_count; ++i) {
         record(in, "faces", face_count, i);
         target.numbers.push_back(in.to_integer(in.need_in_line("face number"), "face number"));
