@@ -49,8 +49,8 @@ void reseed(detail::SeedGrid& grid, const Mesh& mesh, ElementId t, const typenam
 template <int D>
 void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) {
     grid = detail::SeedGrid{};
-    const int d = mesh.topological_dimension();
-    if (d != mesh.ambient_dimension() || mesh.element_count() == 0) return;
+    constexpr int d = D;  // the ambient dimension; surfaces in space have no grid
+    if (mesh.topological_dimension() != d || mesh.element_count() == 0) return;
     std::array<double, 3> high{};
     for (int k = 0; k < 3; ++k) {
         grid.low[static_cast<std::size_t>(k)] = std::numeric_limits<double>::infinity();

@@ -186,16 +186,20 @@ void sxk_info(benchmark::State& state, const Input* input, const std::string* pr
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     std::string tetgen_program, sxk_program, former_sxk_program;
+    // by hand rather than with parse_option.hpp: this file is also built on the former library
+    // (tools/bench/run), whose tree has no string options there
+    const std::pair<std::string, std::string*> options[] = {
+        {"--tetgen=", &tetgen_program}, {"--sxk=", &sxk_program}, {"--former-sxk=", &former_sxk_program}};
     std::vector<std::string> arguments;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
-        if (argument.rfind("--tetgen=", 0) == 0)
-            tetgen_program = argument.substr(9);
-        else if (argument.rfind("--sxk=", 0) == 0)
-            sxk_program = argument.substr(6);
-        else if (argument.rfind("--former-sxk=", 0) == 0)
-            former_sxk_program = argument.substr(13);
-        else
+        bool known = false;
+        for (const auto& [prefix, value] : options)
+            if (!known && argument.rfind(prefix, 0) == 0) {
+                *value = argument.substr(prefix.size());
+                known = true;
+            }
+        if (!known)
             arguments.push_back(argument);
     }
     const auto equals = arguments.size() == 2 ? arguments[1].find('=') : std::string::npos;
