@@ -60,7 +60,7 @@ void reseed(detail::SeedGrid& grid, const Mesh& mesh, ElementId t, const typenam
 
 // Each seed becomes the element holding its cell's centre, found by a short walk from it: a
 // locate at a point of the cell then walks fewer steps than from the element whose centroid fell
-// in the cell (on a Kuhn cube with 1.5 elements per cell, 1.95 against 2.6 elements visited on
+// in the cell (on a Kuhn cube with 1.5 elements per cell, 1.95 against 2.36 elements visited on
 // average, and each step at 1M elements is a cache miss: docs/performance.md "locate"). Cells
 // whose walk fails keep their seed. The walks only read the mesh and each writes its own cell,
 // so they run in parallel (the 1M Kuhn cube's index built in 0.66-1.20 s without them, 0.72-1.12

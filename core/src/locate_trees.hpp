@@ -302,7 +302,7 @@ namespace detail {
 // build time, about one cell per `elements_per_cell` elements, each holding the element that
 // contains the cell's centre (or, outside the mesh, one near the cell; later also the last
 // answer the tree gave for a point of it). 0.75 elements per cell: with centre seeds, a locate
-// at 1M tetrahedra visits 1.72 elements on average against 1.95 at 1.5 per cell and 2.6 with the
+// at 1M tetrahedra visits 1.72 elements on average against 1.95 at 1.5 per cell and 2.36 with the
 // centroid seeds of before, and each visit there is a cache miss (docs/performance.md "locate");
 // the grid costs 4 bytes a cell. A seed that died, or whose id now names an element elsewhere,
 // makes the short walk from it fail and the tree decide; the answer becomes the cell's seed.
