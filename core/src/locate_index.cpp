@@ -68,7 +68,8 @@ void reseed(detail::SeedGrid& grid, const Mesh& mesh, ElementId t, const typenam
 template <int D>
 void centre_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) {
     constexpr std::size_t steps = 16;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, grid.seeds.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    using Range = tbb::blocked_range<std::size_t>;
+    tbb::parallel_for(Range(0, grid.seeds.size()), [&](const Range& r) {
         for (std::size_t cell = r.begin(); cell != r.end(); ++cell) {
             const ElementId seed = grid.seeds[cell].load(std::memory_order_relaxed);
             if (!mesh.is_element(seed)) continue;
@@ -127,7 +128,8 @@ void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) 
     // get an element whose box overlaps them: a locate there walks a step or two instead of
     // descending the tree, which sent 12% of the queries on a fresh 1M cube to the tree
     // (docs/performance.md "locate").
-    for (const ElementId t : elements(mesh)) reseed<D>(grid, mesh, t, detail::element_box<D>(mesh, t, positions), SeedCells::overlapped);
+    for (const ElementId t : elements(mesh))
+        reseed<D>(grid, mesh, t, detail::element_box<D>(mesh, t, positions), SeedCells::overlapped);
     centre_seeds<D>(grid, mesh, positions);
 }
 
