@@ -6,36 +6,31 @@
 #include <string>
 #include <vector>
 
-
 namespace sxk {
 
-Outcome<Mesh> make_kuhn_cube(int n, double spacing) {
-    if (n < 1 || n > 1000)
-        return Refusal{RefusalCode::bad_argument, "make_kuhn_cube: " + std::to_string(n) +
-                                                      " cubes per side is not in 1..1000"};
-    if (!(spacing > 0) || !std::isfinite(spacing))
-        return Refusal{RefusalCode::bad_argument,
-                       "make_kuhn_cube: spacing " + std::to_string(spacing) +
-                       " is not positive and finite"};
-    const std::size_t side = static_cast<std::size_t>(n) + 1;
-    const std::size_t cubes = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) *
-                              static_cast<std::size_t>(n);
+namespace {
+
+// Both generators: the counts and spacings are checked by the caller, whose name the refusals carry.
+Outcome<Mesh> kuhn_box(std::array<int, 3> n, std::array<double, 3> spacing, const char* name) {
+    const auto size = [&](std::size_t k) { return static_cast<std::size_t>(n[k]); };
+    const std::array<std::size_t, 3> side{size(0) + 1, size(1) + 1, size(2) + 1};
+    const std::size_t cubes = size(0) * size(1) * size(2);
     Mesh mesh(3, 3);
-    mesh.reserve(side * side * side, 6 * cubes);
-    for (int k = 0; k <= n; ++k)
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) mesh.add_vertex({i * spacing, j * spacing, k * spacing});
-    auto id = [side](int i, int j, int k) {
-        return static_cast<VertexId>((static_cast<std::size_t>(k) * side + static_cast<std::size_t>(j)) * side +
+    mesh.reserve(side[0] * side[1] * side[2], 6 * cubes);
+    for (int k = 0; k <= n[2]; ++k)
+        for (int j = 0; j <= n[1]; ++j)
+            for (int i = 0; i <= n[0]; ++i) mesh.add_vertex({i * spacing[0], j * spacing[1], k * spacing[2]});
+    auto id = [&side](int i, int j, int k) {
+        return static_cast<VertexId>((static_cast<std::size_t>(k) * side[1] + static_cast<std::size_t>(j)) * side[0] +
                                      static_cast<std::size_t>(i));
     };
     static constexpr std::array<std::array<int, 3>, 6> orders{
         {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
     std::vector<Simplex> tets;
     tets.reserve(6 * cubes);
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n[2]; ++k)
+        for (int j = 0; j < n[1]; ++j)
+            for (int i = 0; i < n[0]; ++i)
                 for (std::size_t o = 0; o < orders.size(); ++o) {
                     std::array<int, 3> c{i, j, k};
                     std::array<VertexId, 4> v{};
@@ -51,8 +46,36 @@ Outcome<Mesh> make_kuhn_cube(int n, double spacing) {
                 }
     if (auto built = mesh.assign_elements(tets); !built)
         return Refusal{RefusalCode::internal_error,
-                       "make_kuhn_cube: " + built.reason()};  // cannot happen: the cuts match
+                       std::string(name) + ": " + built.reason()};  // cannot happen: the cuts match
     return mesh;
+}
+
+bool positive_finite(double x) { return x > 0 && std::isfinite(x); }
+
+}  // namespace
+
+Outcome<Mesh> make_kuhn_cube(int n, double spacing) {
+    if (n < 1 || n > 1000)
+        return Refusal{RefusalCode::bad_argument, "make_kuhn_cube: " + std::to_string(n) +
+                                                      " cubes per side is not in 1..1000"};
+    if (!positive_finite(spacing))
+        return Refusal{RefusalCode::bad_argument,
+                       "make_kuhn_cube: spacing " + std::to_string(spacing) +
+                       " is not positive and finite"};
+    return kuhn_box({n, n, n}, {spacing, spacing, spacing}, "make_kuhn_cube");
+}
+
+Outcome<Mesh> make_kuhn_box(std::array<int, 3> cells, std::array<double, 3> spacing) {
+    static constexpr std::array<char, 3> axis{'x', 'y', 'z'};
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (cells[k] < 1 || cells[k] > 1000)
+            return Refusal{RefusalCode::bad_argument, "make_kuhn_box: " + std::to_string(cells[k]) + " cells along " +
+                                                          axis[k] + " is not in 1..1000"};
+        if (!positive_finite(spacing[k]))
+            return Refusal{RefusalCode::bad_argument, "make_kuhn_box: spacing " + std::to_string(spacing[k]) +
+                                                          " along " + axis[k] + " is not positive and finite"};
+    }
+    return kuhn_box(cells, spacing, "make_kuhn_box");
 }
 
 }  // namespace sxk

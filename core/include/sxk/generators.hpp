@@ -2,6 +2,8 @@
 // fuzzers and applications that want a conforming tetrahedral mesh without a mesher.
 #pragma once
 
+#include <array>
+
 #include "sxk/config.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
@@ -28,5 +30,14 @@ namespace sxk {
 //
 // Refuses n < 1, n > 1000 ("make_kuhn_cube: ...") and a spacing that is not positive and finite.
 SXK_API Outcome<Mesh> make_kuhn_cube(int n, double spacing = 1.0);
+
+// The box [0, cells[0]*spacing[0]] x [0, cells[1]*spacing[1]] x [0, cells[2]*spacing[2]] cut
+// the same way: cells[0] x cells[1] x cells[2] boxes of spacing[0] x spacing[1] x spacing[2],
+// each into its 6 Kuhn tetrahedra, numbered as make_kuhn_cube (vertex (i,j,k) is
+// (k*(cells[1]+1) + j)*(cells[0]+1) + i; x fastest). The thesis' cantilever beams (Table 3.1,
+// l x h x d = 1.2 x 0.2 x 0.3 m in 16 x 4 x 4 ... 48 x 12 x 12 cells) are such boxes.
+// Refuses a count not in 1..1000 and a spacing that is not positive and finite ("make_kuhn_box:
+// ...").
+SXK_API Outcome<Mesh> make_kuhn_box(std::array<int, 3> cells, std::array<double, 3> spacing);
 
 }  // namespace sxk

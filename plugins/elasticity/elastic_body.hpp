@@ -1,0 +1,136 @@
+// Linear elasticity on a tetrahedral mesh (thesis §3.1): the body, its constraints and loads,
+// and the matrix-free product with its stiffness matrix. The solvers are in solve.hpp.
+//
+//     auto body = sxk::elasticity::ElasticBody::make(mesh, {.young = 1e6, .poisson = 0.25});
+//     body->fix(v);                        // u(v) = 0
+//     body->add_force(w, {0, -1, 0});      // newtons
+//     auto report = sxk::elasticity::solve_linear_cg(*body, {.tolerance = 1e-8});
+//     body->displacement(w);               // metres
+//
+// Units are the caller's; the thesis' examples use SI (m, N, Pa). The body reads the mesh's
+// reference positions as the rest shape and keeps its own state (displacements, loads,
+// constraints) per vertex; it does not change the mesh.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk::elasticity {
+
+namespace detail {
+// What an element keeps of its rest shape: b_j = Z^-T e_j for corners j = 0, 1, 2 (the rows of
+// Z^-1, Z = (z0 - z3, z1 - z3, z2 - z3) as columns: the gradients of the corners' shape
+// functions; b_3 = -(b_0 + b_1 + b_2)), and the volume (linear_tetrahedron.hpp).
+struct RestShape {
+    std::array<double, 9> gradient{};  // b_0, b_1, b_2, x y z each
+    double volume = 0;
+};
+}  // namespace detail
+
+using Vector3 = std::array<double, 3>;
+
+// An isotropic material. Young's modulus E > 0 and Poisson's ratio -1 < nu < 1/2.
+struct Material {
+    double young = 1e6;
+    double poisson = 0.25;
+};
+
+// The Lamé parameters of eq. 3.2, T = 2 mu E + lambda trace(E) I.
+struct Lame {
+    double mu = 0;
+    double lambda = 0;
+};
+Lame lame(const Material& material);
+
+// What a vertex may do (thesis §6.6): move freely, stay at its prescribed displacement, or move
+// along a line through its prescribed displacement. The solvers project residuals and search
+// directions onto the allowed motions, so a constrained vertex keeps its constraint exactly.
+enum class Freedom : std::uint8_t { free, fixed, line };
+
+class ElasticBody {
+public:
+    // Refuses a mesh that is not tetrahedral in space (wrong_dimension), a material out of range
+    // (bad_argument), and an element whose rest volume is not positive (would_flatten: its
+    // stiffness is undefined). The text names the element.
+    static Outcome<ElasticBody> make(const Mesh& mesh, Material material);
+
+    const Mesh& mesh() const { return *m_mesh; }
+    const Material& material() const { return m_material; }
+    std::size_t vertex_count() const { return m_freedom.size(); }
+    // 3 per vertex, x y z: the unknowns of the solvers.
+    std::size_t dof_count() const { return 3 * vertex_count(); }
+
+    // Constraints. fix: u(v) = displacement. constrain_to_line: u(v) = displacement + s * direction
+    // for any s (direction not zero; it is normalised). free: no constraint (the default).
+    // Refuse a vertex that is not in an element (not_found) and a zero or non-finite direction
+    // (bad_argument). Setting a constraint sets u(v) to the prescribed displacement.
+    Outcome<Done> fix(VertexId v, Vector3 displacement = {0, 0, 0});
+    Outcome<Done> constrain_to_line(VertexId v, Vector3 direction, Vector3 displacement = {0, 0, 0});
+    Outcome<Done> free(VertexId v);
+    Freedom freedom(VertexId v) const { return m_freedom[v]; }
+    // The unit direction of v's line constraint (zero for other vertices).
+    Vector3 line_direction(VertexId v) const { return m_freedom[v] == Freedom::line ? m_line[v] : Vector3{0, 0, 0}; }
+    std::size_t constrained_count() const;
+
+    // External nodal forces; add_force accumulates. Refuse a vertex in no element (not_found) and
+    // a non-finite force (bad_argument).
+    Outcome<Done> add_force(VertexId v, Vector3 force);
+    void clear_forces();
+    Vector3 force(VertexId v) const { return {m_force[3 * v], m_force[3 * v + 1], m_force[3 * v + 2]}; }
+
+    Vector3 displacement(VertexId v) const { return {m_u[3 * v], m_u[3 * v + 1], m_u[3 * v + 2]}; }
+    // The unknowns, 3 per vertex: the solvers start from them (a warm start) and leave the
+    // solution there. Writing them directly bypasses the constraints until the next solve.
+    Eigen::VectorXd& displacements() { return m_u; }
+    const Eigen::VectorXd& displacements() const { return m_u; }
+    const Eigen::VectorXd& forces() const { return m_force; }
+
+    // out = K d, the elastic forces of displacements d with their sign reversed (eq. 3.4 summed
+    // over the elements, eq. 3.5), without forming K. Elements in parallel (TBB), the sums per
+    // vertex in a fixed order: the result does not depend on the number of threads. One call at
+    // a time per body (it writes the body's scratch buffer).
+    void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
+    // Projects v onto the motions the constraints allow (P_W of §6.6), in place.
+    void project(Eigen::VectorXd& v) const;
+    // The potential energy 1/2 u^T K u - f^T u of the current displacements.
+    double energy() const;
+    // The diameter of the rest shape (the diagonal of its bounding box): H of eq. 6.9.
+    double diameter() const { return m_diameter; }
+
+    // The stiffness of one element: the 12 x 12 matrix K_t with K_t d_t = the element's share of
+    // K d, vertices in the element's canonical order (for the assembled reference solver); zero
+    // for an id that is not one of elements().
+    Eigen::Matrix<double, 12, 12> element_stiffness(ElementId t) const;
+    // The live elements, in increasing id order.
+    std::span<const ElementId> elements() const { return m_elements; }
+
+private:
+    ElasticBody() = default;
+    Outcome<Done> check_vertex(VertexId v, const char* what) const;
+
+    const Mesh* m_mesh = nullptr;
+    Material m_material;
+    Lame m_lame;
+    double m_diameter = 0;
+    std::vector<ElementId> m_elements;
+    std::vector<detail::RestShape> m_rest;  // per entry of m_elements (linear_tetrahedron.hpp)
+    // per entry of m_elements, its vertices: the product reads them here, 16 bytes in a row,
+    // instead of from the mesh's 56-byte records
+    std::vector<std::array<VertexId, 4>> m_corners;
+    // vertex v's (entry of m_elements * 4 + corner), at [m_star_begin[v], m_star_begin[v + 1])
+    std::vector<std::uint32_t> m_star_begin, m_star;
+    std::vector<Freedom> m_freedom;
+    std::vector<Vector3> m_line;  // the unit direction of a line constraint
+    Eigen::VectorXd m_u, m_force;
+    mutable std::vector<double> m_corner_forces;  // 12 per entry of m_elements
+};
+
+}  // namespace sxk::elasticity
