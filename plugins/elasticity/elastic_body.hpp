@@ -100,6 +100,14 @@ public:
     void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
     // Projects v onto the motions the constraints allow (P_W of §6.6), in place.
     void project(Eigen::VectorXd& v) const;
+    // Writes reference + u as the deformed positions of every vertex in an element, by one
+    // Mesh::move_vertices (watchers such as a SpatialIndex over deformed positions hear one
+    // vertices_moved; inside an EditJournal step the old positions are kept for rollback).
+    // Refuses, writing nothing, when `mesh` is not the body's mesh (bad_argument) or an element
+    // would be inverted or flat in the deformed positions (would_invert or would_flatten, the
+    // element named): a solution that turns an element inside out is no shape to show or cut.
+    Outcome<Done> write_deformed(Mesh& mesh) const;
+
     // The potential energy 1/2 u^T K u - f^T u of the current displacements.
     double energy() const;
     // The diameter of the rest shape (the diagonal of its bounding box): H of eq. 6.9.

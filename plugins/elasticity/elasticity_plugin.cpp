@@ -1,7 +1,8 @@
-// The elasticity plug-in's entry. Its library (elastic_body.hpp, solve.hpp) is what
-// applications and the other plug-ins use today; the `sxk deform` command is to come.
+// The elasticity plug-in's entry: `sxk deform`. Applications and the other plug-ins use its
+// library (elastic_body.hpp, solve.hpp) directly.
 #include <span>
 
+#include "deform_command.hpp"
 #include "sxk/plugin.hpp"
 
 namespace sxk::elasticity {
@@ -9,10 +10,14 @@ namespace {
 
 class ElasticityPlugin final : public Plugin {
 public:
-    std::span<PluginCommand* const> commands() override { return {}; }
+    std::span<PluginCommand* const> commands() override { return m_commands; }
+
+private:
+    DeformCommand m_deform;
+    PluginCommand* m_commands[1] = {&m_deform};
 };
 
 }  // namespace
 }  // namespace sxk::elasticity
 
-SXK_PLUGIN(elasticity, sxk::elasticity::ElasticityPlugin, "0.1.0", "linear elasticity: matrix-free CG on tetrahedral meshes");
+SXK_PLUGIN(elasticity, sxk::elasticity::ElasticityPlugin, "0.1.0", "linear elasticity: matrix-free CG on tetrahedral meshes; sxk deform");

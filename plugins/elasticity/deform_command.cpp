@@ -1,0 +1,241 @@
+// `sxk deform IN OUT`: a static solve of a tetrahedral mesh under selected constraints and loads,
+// OUT holding the deformed positions (docs/cli.md "sxk deform").
+#include "deform_command.hpp"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "command_line.hpp"
+#include "elastic_body.hpp"
+#include "solve.hpp"
+#include "vertex_selector.hpp"
+
+namespace sxk::elasticity {
+namespace {
+
+struct Options {
+    std::string input, output;
+    ReadOptions reading;
+    std::vector<std::string> fix, force, displace;
+    std::string material = "linear";
+    double young = 1e6, poisson = 0.25, tolerance = 1e-6;
+    std::size_t max_iterations = 100000;
+    bool json = false;
+};
+
+// A selector with a vector: "EXPR:X,Y,Z".
+struct Selected {
+    VertexSelector selector;
+    Vector3 vector{0, 0, 0};
+};
+
+std::optional<Options> parse(std::span<const std::string> args, std::ostream& out, std::ostream& err, int& code) {
+    Options o;
+    CLI::App app("Deforms a tetrahedral mesh by linear elasticity (thesis 3.1): fixed and displaced vertices, "
+                 "nodal loads, matrix-free conjugate gradients; OUT holds the deformed positions",
+                 "sxk deform");
+    app.add_option("IN", o.input, "Input mesh file (tetrahedra)")->required();
+    app.add_option("OUT", o.output, "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+        ->required();
+    app.add_option("--fix", o.fix, "Vertices held in place: a selector such as 'x<0.001', 'label=2&boundary' (repeatable)");
+    app.add_option("--displace", o.displace, "Vertices moved by a prescribed displacement: 'EXPR:DX,DY,DZ' (repeatable)");
+    app.add_option("--force", o.force,
+                   "A total force on the selected vertices, shared equally among them: 'EXPR:FX,FY,FZ' (repeatable)");
+    app.add_option("--material", o.material, "Material model (neohookean is not built yet)")
+        ->check(CLI::IsMember({"linear", "neohookean"}))
+        ->capture_default_str();
+    app.add_option("--E,--young", o.young, "Young's modulus, > 0")->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
+        ->capture_default_str();
+    app.add_option("--nu,--poisson", o.poisson, "Poisson's ratio, -1 < nu < 0.5")
+        ->check(number_in(-1, false, 0.5, false, "(-1, 0.5)"))
+        ->capture_default_str();
+    app.add_option("--tol", o.tolerance,
+                   "Relative tolerance of the residual against the loads and reactions (thesis eq. 6.9), 0 < tol < 1")
+        ->check(number_in(0, false, 1, false, "(0, 1)"))
+        ->capture_default_str();
+    app.add_option("--max-iterations", o.max_iterations, "Most CG iterations before giving up")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->capture_default_str();
+    app.add_flag("--json", o.json, "Print one JSON object (with the residual history) instead of the summary");
+    add_read_options(app, o.reading);
+    if (const std::optional<int> done = parse_command_line(app, args, "deform", out, err)) {
+        code = *done;
+        return std::nullopt;
+    }
+    return o;
+}
+
+// "EXPR" (with_vector false) or "EXPR:X,Y,Z"; nullopt with the message printed.
+std::optional<Selected> parse_selected(const std::string& option, const std::string& text, bool with_vector,
+                                       std::ostream& err) {
+    Selected s;
+    std::string expression = text;
+    if (with_vector) {
+        const std::size_t colon = text.rfind(':');
+        if (colon == std::string::npos) {
+            err << "sxk: deform: " << option << " '" << text << "': expected SELECTOR:X,Y,Z\n";
+            return std::nullopt;
+        }
+        expression = text.substr(0, colon);
+        const auto numbers = parse_number_list(std::string_view(text).substr(colon + 1));
+        if (const std::string* why = std::get_if<std::string>(&numbers)) {
+            err << "sxk: deform: " << option << " '" << text << "': " << *why << '\n';
+            return std::nullopt;
+        }
+        const auto& list = std::get<std::vector<double>>(numbers);
+        if (list.size() != 3) {
+            err << "sxk: deform: " << option << " '" << text << "': expected three numbers X,Y,Z after ':', found "
+                << list.size() << '\n';
+            return std::nullopt;
+        }
+        s.vector = {list[0], list[1], list[2]};
+    }
+    auto selector = parse_vertex_selector(expression);
+    if (!selector) {
+        err << "sxk: deform: " << option << ": " << selector.reason() << '\n';
+        return std::nullopt;
+    }
+    s.selector = std::move(*selector);
+    return s;
+}
+
+// Every occurrence of one option; nullopt when one of them does not parse (message printed).
+std::optional<std::vector<Selected>> parse_all(const std::string& option, const std::vector<std::string>& texts,
+                                               bool with_vector, std::ostream& err) {
+    std::vector<Selected> all;
+    for (const std::string& text : texts) {
+        std::optional<Selected> s = parse_selected(option, text, with_vector, err);
+        if (!s) return std::nullopt;
+        all.push_back(std::move(*s));
+    }
+    return all;
+}
+
+}  // namespace
+
+std::string_view DeformCommand::summary() const {
+    return "deform a tetrahedral mesh by linear elasticity: fixed vertices, loads, CG (thesis 3.1)";
+}
+
+int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
+    int code = 0;
+    const std::optional<Options> options = parse(args, out, err, code);
+    if (!options) return code;
+    const Options& o = *options;
+    if (o.material != "linear") {
+        err << "sxk: deform: --material " << o.material << " is not built yet; only linear is\n";
+        return 2;
+    }
+    const auto fixes = parse_all("--fix", o.fix, false, err);
+    const auto displaces = parse_all("--displace", o.displace, true, err);
+    const auto forces = parse_all("--force", o.force, true, err);
+    if (!fixes || !displaces || !forces) return 2;
+    if (fixes->empty() && displaces->empty()) {
+        err << "sxk: deform: nothing holds the body (no --fix or --displace), so it can move freely and the problem "
+               "is singular; fix at least three non-collinear vertices of every connected part\n";
+        return 2;
+    }
+    if (!format_from_extension(o.output)) {
+        err << "sxk: " << o.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        return 2;
+    }
+    std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
+    if (!mesh) return 2;
+    if (mesh->topological_dimension() != 3) {
+        err << "sxk: " << o.input << ":0: deform needs a tetrahedral mesh (plane stress for triangles is not built yet)\n";
+        return 2;
+    }
+    auto body = ElasticBody::make(*mesh, {.young = o.young, .poisson = o.poisson});
+    if (!body) {
+        err << "sxk: " << o.input << ":0: " << body.reason() << '\n';
+        return 2;
+    }
+    // selections: one that selects nothing is a mistake worth stopping for (a coordinate off by
+    // a unit, a label the file does not have)
+    auto select = [&](const std::string& option, const Selected& s) -> std::optional<std::vector<VertexId>> {
+        std::vector<VertexId> vertices = select_vertices(*mesh, s.selector);
+        if (vertices.empty()) {
+            err << "sxk: deform: " << option << " '" << s.selector.text << "' selects no vertex of " << o.input << '\n';
+            return std::nullopt;
+        }
+        return vertices;
+    };
+    std::size_t loaded = 0;
+    for (const Selected& s : *fixes) {
+        const auto vertices = select("--fix", s);
+        if (!vertices) return 2;
+        for (const VertexId v : *vertices) (void)body->fix(v);
+    }
+    for (const Selected& s : *displaces) {
+        const auto vertices = select("--displace", s);
+        if (!vertices) return 2;
+        for (const VertexId v : *vertices) (void)body->fix(v, s.vector);
+    }
+    for (const Selected& s : *forces) {
+        const auto vertices = select("--force", s);
+        if (!vertices) return 2;
+        const double share = 1.0 / static_cast<double>(vertices->size());
+        for (const VertexId v : *vertices)
+            (void)body->add_force(v, {s.vector[0] * share, s.vector[1] * share, s.vector[2] * share});
+        loaded += vertices->size();
+    }
+    const auto report = solve_linear_cg(*body, {.tolerance = o.tolerance, .max_iterations = o.max_iterations});
+    if (!report) {
+        err << "sxk: " << o.input << ":0: " << report.reason() << '\n';
+        return 2;
+    }
+    if (!report->converged) {
+        err << "sxk: " << o.input << ":0: CG did not converge in " << report->iterations << " iterations (|r| = "
+            << report->residual << ", needed " << report->threshold << "); nothing written\n";
+        return 1;
+    }
+    if (auto written = body->write_deformed(*mesh); !written) {
+        err << "sxk: " << o.input << ":0: " << written.reason() << "; nothing written\n";
+        return 1;
+    }
+    if (!save_mesh_for_command(*mesh, o.output, err)) return 1;
+
+    VertexId largest = 0;
+    double largest_norm = -1;
+    for (VertexId v = 0; v < body->vertex_count(); ++v) {
+        const Vector3 u = body->displacement(v);
+        if (const double n = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]); n > largest_norm) {
+            largest_norm = n;
+            largest = v;
+        }
+    }
+    if (o.json) {
+        nlohmann::ordered_json json;
+        json["file"] = o.input;
+        json["output"] = o.output;
+        json["material"] = {{"model", o.material}, {"young", o.young}, {"poisson", o.poisson}};
+        json["elements"] = mesh->element_count();
+        json["fixed"] = body->constrained_count();
+        json["loaded"] = loaded;
+        json["tolerance"] = o.tolerance;
+        json["iterations"] = report->iterations;
+        json["converged"] = report->converged;
+        json["residual"] = report->residual;
+        json["threshold"] = report->threshold;
+        json["energy"] = report->energy;
+        json["seconds"] = report->seconds;
+        const Vector3 u = body->displacement(largest);
+        json["largest_displacement"] = {{"vertex", largest}, {"length", largest_norm}, {"vector", {u[0], u[1], u[2]}}};
+        json["history"] = report->history;
+        out << json.dump(2) << '\n';
+    } else {
+        out << o.input << " -> " << o.output << ": " << mesh->element_count() << " tetrahedra, "
+            << body->constrained_count() << " vertices held, " << loaded << " loaded\n"
+            << "CG: " << report->iterations << " iterations, |r| " << report->residual << " <= " << report->threshold
+            << ", energy " << report->energy << ", " << report->seconds << " s\n"
+            << "largest displacement " << largest_norm << " at vertex " << largest << '\n';
+    }
+    return 0;
+}
+
+}  // namespace sxk::elasticity
