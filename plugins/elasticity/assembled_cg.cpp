@@ -27,10 +27,7 @@ Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body) {
 }
 
 Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& options) {
-    if (body.constrained_count() == 0)
-        return Refusal{RefusalCode::bad_argument,
-                       "elasticity: no vertex is constrained, so the body can move freely and its stiffness matrix is "
-                       "singular; fix at least three non-collinear vertices of every connected part"};
+    if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
     const auto start = std::chrono::steady_clock::now();
     // B: one orthonormal column per allowed motion (3 for a free vertex, its line for a line
     // vertex, none for a fixed one), so that ||B^T r|| = ||P r||

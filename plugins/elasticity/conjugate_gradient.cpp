@@ -25,13 +25,18 @@ double stop_threshold(const ElasticBody& body, const SolveOptions& options, doub
            body.material().young * h * h * options.rounding / std::sqrt(n);
 }
 
-}  // namespace detail
-
-Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {
+Outcome<Done> prepare_solve(ElasticBody& body) {
     if (body.constrained_count() == 0)
         return Refusal{RefusalCode::bad_argument,
                        "elasticity: no vertex is constrained, so the body can move freely and its stiffness matrix is "
                        "singular; fix at least three non-collinear vertices of every connected part"};
+    return body.refresh();
+}
+
+}  // namespace detail
+
+Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {
+    if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
     const auto start = std::chrono::steady_clock::now();
     SolveReport report;
     Eigen::VectorXd& u = body.displacements();

@@ -11,8 +11,6 @@
 #include <tbb/parallel_for.h>
 
 #include "linear_tetrahedron.hpp"
-#include "sxk/predicates.hpp"
-#include "sxk/traversal.hpp"
 
 namespace sxk::elasticity {
 namespace {
@@ -48,53 +46,27 @@ Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material) {
     body.m_mesh = &mesh;
     body.m_material = material;
     body.m_lame = lame(material);
-    for (const ElementId t : sxk::elements(mesh)) body.m_elements.push_back(t);
-    body.m_rest.resize(body.m_elements.size());
-    body.m_corners.resize(body.m_elements.size());
-    const std::size_t n = mesh.vertex_count();
-    Vector3 low{}, high{};
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
-    body.m_star_begin.assign(n + 1, 0);
-    for (std::size_t e = 0; e < body.m_elements.size(); ++e) {
-        const ElementId t = body.m_elements[e];
-        if (element_orientation(mesh, t, Positions::reference) == Sign::zero)
-            return Refusal{RefusalCode::would_flatten,
-                           "elasticity: element " + std::to_string(t) + " is flat at rest (its stiffness is undefined)"};
-        const Simplex& s = mesh.simplex(t);
-        Eigen::Matrix3d z;
-        const Point& origin = mesh.reference(s.vertex(3));
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k)
-                z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
-        body.m_rest[e] = detail::rest_shape(z);
-        for (int j = 0; j < 4; ++j) {
-            const VertexId v = s.vertex(j);
-            body.m_corners[e][static_cast<std::size_t>(j)] = v;
-            ++body.m_star_begin[v + 1];
-            for (std::size_t k = 0; k < 3; ++k) {
-                low[k] = std::min(low[k], mesh.reference(v)[k]);
-                high[k] = std::max(high[k], mesh.reference(v)[k]);
-            }
-        }
-    }
-    for (std::size_t v = 0; v < n; ++v) body.m_star_begin[v + 1] += body.m_star_begin[v];
-    body.m_star.resize(body.m_star_begin[n]);
-    std::vector<std::uint32_t> next(body.m_star_begin.begin(), body.m_star_begin.end() - 1);
-    for (std::size_t e = 0; e < body.m_elements.size(); ++e)
-        for (std::size_t j = 0; j < 4; ++j) body.m_star[next[body.m_corners[e][j]]++] = static_cast<std::uint32_t>(4 * e + j);
-    if (!body.m_elements.empty())
-        body.m_diameter = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
-                                    (high[2] - low[2]) * (high[2] - low[2]));
-    body.m_freedom.assign(n, Freedom::free);
-    body.m_line.assign(n, Vector3{0, 0, 0});
-    body.m_u = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(3 * n));
-    body.m_force = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(3 * n));
+    body.init(mesh);
+    if (auto fresh = body.refresh(); !fresh) return fresh.refusal();
     return body;
 }
 
+void ElasticBody::resize_vertices(std::size_t n) {
+    const auto size = static_cast<Eigen::Index>(3 * n);
+    const Eigen::Index old = m_u.size();
+    m_freedom.resize(n, Freedom::free);
+    m_line.resize(n, Vector3{0, 0, 0});
+    m_known.resize(n, 0);
+    m_u.conservativeResize(size);
+    m_force.conservativeResize(size);
+    if (size > old) {
+        m_u.tail(size - old).setZero();
+        m_force.tail(size - old).setZero();
+    }
+}
+
 Outcome<Done> ElasticBody::check_vertex(VertexId v, const char* what) const {
-    if (v >= vertex_count() || m_star_begin[v] == m_star_begin[v + 1])
+    if (v >= vertex_count() || v >= m_mesh->vertex_count() || m_mesh->vertex_element(v) == invalid_id)
         return Refusal{RefusalCode::not_found,
                        std::string("elasticity: ") + what + ": " + std::to_string(v) + " is not a vertex of an element"};
     return Done{};
@@ -145,12 +117,13 @@ void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const
     using Range = tbb::blocked_range<std::size_t>;
     tbb::parallel_for(Range(0, count, 1024), [&](const Range& r) {
         for (std::size_t e = r.begin(); e != r.end(); ++e) {
+            const ElementId t = m_elements[e];
             double corners[12];
             for (std::size_t j = 0; j < 4; ++j) {
-                const double* dj = d.data() + 3 * std::size_t{m_corners[e][j]};
+                const double* dj = d.data() + 3 * std::size_t{m_corners[t][j]};
                 for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = dj[k];
             }
-            detail::linear_tetrahedron_forces(m_rest[e], m_lame, corners, m_corner_forces.data() + 12 * e);
+            detail::linear_tetrahedron_forces(m_rest[t], m_lame, corners, m_corner_forces.data() + 12 * e);
         }
     });
     out.resize(d.size());
@@ -184,10 +157,9 @@ double ElasticBody::energy() const {
 }
 
 Eigen::Matrix<double, 12, 12> ElasticBody::element_stiffness(ElementId t) const {
-    const auto at = std::lower_bound(m_elements.begin(), m_elements.end(), t);
     Eigen::Matrix<double, 12, 12> k = Eigen::Matrix<double, 12, 12>::Zero();
-    if (at == m_elements.end() || *at != t) return k;
-    const detail::RestShape& rest = m_rest[static_cast<std::size_t>(at - m_elements.begin())];
+    if (!std::binary_search(m_elements.begin(), m_elements.end(), t)) return k;
+    const detail::RestShape& rest = m_rest[t];
     for (int column = 0; column < 12; ++column) {
         double unit[12] = {};
         unit[column] = 1;

@@ -22,6 +22,7 @@
 
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
+#include "sxk/watcher.hpp"
 
 namespace sxk::elasticity {
 
@@ -55,15 +56,46 @@ Lame lame(const Material& material);
 // directions onto the allowed motions, so a constrained vertex keeps its constraint exactly.
 enum class Freedom : std::uint8_t { free, fixed, line };
 
-class ElasticBody {
+// The body of a tetrahedral mesh. To follow edits of the mesh, attach it as a watcher
+// (mesh.add_watcher(body), or a ScopedWatcher) once it sits where it will stay: a body must not
+// be moved or copied while attached. It then keeps its state in step with the mesh (thesis §7.4):
+//
+//   - added and changed elements get their rest shapes computed, and so do the elements around
+//     a vertex whose reference position moved; the others keep theirs;
+//   - a new vertex gets the displacement interpolated, in reference positions, from an element
+//     the same edit removed or changed that holds it (a split's midpoint: the mean of its
+//     edge's ends; a dissection's copy: its original's), else the mean of its neighbours';
+//     it starts free and unloaded;
+//   - vertices keep their constraints, loads and displacements by id; vertices that leave the
+//     mesh (a rollback of added vertices) are dropped.
+//
+// The events only record; refresh() does the work, once, before the next solve (the solvers
+// call it). A refresh after an edit costs the changed elements' rest shapes plus one pass over
+// the element ids and stars, which a solve's every iteration costs anyway.
+class ElasticBody : public Watcher {
 public:
     // Refuses a mesh that is not tetrahedral in space (wrong_dimension), a material out of range
     // (bad_argument), and an element whose rest volume is not positive (would_flatten: its
     // stiffness is undefined). The text names the element.
     static Outcome<ElasticBody> make(const Mesh& mesh, Material material);
 
+    // Brings the body in step with the edits it heard (see above). Refuses (would_flatten, the
+    // element named and the body still waiting for a refresh) when an edit left an element flat
+    // at rest: remove it first (the degeneracy plug-in) - the thesis' reason for removing
+    // degeneracies before relaxing. multiply, project and energy read the state of the last
+    // refresh.
+    Outcome<Done> refresh();
+    bool needs_refresh() const { return m_stale; }
+
+    void init(const Mesh& mesh) override;
+    void element_removed(const Mesh& mesh, ElementId element, const Simplex& was) override;
+    void element_changed(const Mesh& mesh, ElementId element, const Simplex& was) override;
+    void element_added(const Mesh& mesh, ElementId element) override;
+    void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) override;
+
     const Mesh& mesh() const { return *m_mesh; }
     const Material& material() const { return m_material; }
+    // Vertices of the body (the mesh's, as of the last event heard).
     std::size_t vertex_count() const { return m_freedom.size(); }
     // 3 per vertex, x y z: the unknowns of the solvers.
     std::size_t dof_count() const { return 3 * vertex_count(); }
@@ -117,21 +149,27 @@ public:
     // K d, vertices in the element's canonical order (for the assembled reference solver); zero
     // for an id that is not one of elements().
     Eigen::Matrix<double, 12, 12> element_stiffness(ElementId t) const;
-    // The live elements, in increasing id order.
+    // The live elements, in increasing id order (as of the last refresh).
     std::span<const ElementId> elements() const { return m_elements; }
 
 private:
     ElasticBody() = default;
     Outcome<Done> check_vertex(VertexId v, const char* what) const;
+    // The per-vertex arrays sized to n vertices (new ones free, unloaded, at rest, not known).
+    void resize_vertices(std::size_t n);
+    // A new vertex's displacement (follow_edits.cpp).
+    void interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added);
+    void rebuild_elements_and_stars();
 
     const Mesh* m_mesh = nullptr;
     Material m_material;
     Lame m_lame;
     double m_diameter = 0;
+    // the live elements in increasing id order, as of the last refresh
     std::vector<ElementId> m_elements;
-    std::vector<detail::RestShape> m_rest;  // per entry of m_elements (linear_tetrahedron.hpp)
-    // per entry of m_elements, its vertices: the product reads them here, 16 bytes in a row,
-    // instead of from the mesh's 56-byte records
+    // per element id: the rest shape (linear_tetrahedron.hpp) and the vertices it was computed
+    // for (the product reads them here, 16 bytes in a row, instead of the mesh's records)
+    std::vector<detail::RestShape> m_rest;
     std::vector<std::array<VertexId, 4>> m_corners;
     // vertex v's (entry of m_elements * 4 + corner), at [m_star_begin[v], m_star_begin[v + 1])
     std::vector<std::uint32_t> m_star_begin, m_star;
@@ -139,6 +177,14 @@ private:
     std::vector<Vector3> m_line;  // the unit direction of a line constraint
     Eigen::VectorXd m_u, m_force;
     mutable std::vector<double> m_corner_forces;  // 12 per entry of m_elements
+
+    // what the events recorded for the next refresh
+    bool m_stale = false;
+    bool m_rebuild_all = false;           // init: every rest shape again
+    std::vector<ElementId> m_dirty;       // rest shapes to compute
+    std::vector<char> m_known;            // per vertex: its displacement is set
+    std::vector<Simplex> m_edit_removed;  // the current edit's removed and changed elements, as they were
+    bool m_edit_adding = false;           // the current edit reported an addition already
 };
 
 }  // namespace sxk::elasticity

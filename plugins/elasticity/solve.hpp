@@ -56,6 +56,9 @@ Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body);
 Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& options = {});
 
 namespace detail {
+// What both solvers check first: some vertex is constrained (else bad_argument: K is singular),
+// and the body is in step with its mesh (ElasticBody::refresh).
+Outcome<Done> prepare_solve(ElasticBody& body);
 // The stop threshold of `options` for residual and reaction forces of the current state.
 double stop_threshold(const ElasticBody& body, const SolveOptions& options, double reaction_norm);
 // ||(I - P)(K u - f)||: the forces that hold the constrained vertices.

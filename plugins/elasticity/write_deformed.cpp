@@ -11,7 +11,7 @@ Outcome<Done> ElasticBody::write_deformed(Mesh& mesh) const {
     std::vector<VertexId> vertices;
     std::vector<Point> points;
     for (VertexId v = 0; v < vertex_count(); ++v) {
-        if (m_star_begin[v] == m_star_begin[v + 1]) continue;
+        if (v >= mesh.vertex_count() || mesh.vertex_element(v) == invalid_id) continue;
         const Point& x = mesh.reference(v);
         vertices.push_back(v);
         points.push_back({x[0] + m_u[3 * v], x[1] + m_u[3 * v + 1], x[2] + m_u[3 * v + 2]});

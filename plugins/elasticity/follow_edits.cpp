@@ -1,0 +1,183 @@
+// ElasticBody following the edits of its mesh (elastic_body.hpp; watchers: thesis §7.4): the
+// events record what changed, refresh() recomputes what they recorded.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "elastic_body.hpp"
+#include "linear_tetrahedron.hpp"
+#include "sxk/predicates.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::elasticity {
+namespace {
+
+// x in barycentric coordinates of tetrahedron s (reference positions); nullopt when s is flat
+// or x is outside it by more than a rounding error.
+std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, const Point& x) {
+    Eigen::Matrix3d z;
+    const Point& origin = mesh.reference(s.vertex(3));
+    for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+            z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(z);
+    if (!lu.isInvertible()) return std::nullopt;
+    const Eigen::Vector3d w = lu.solve(Eigen::Vector3d(x[0] - origin[0], x[1] - origin[1], x[2] - origin[2]));
+    const std::array<double, 4> b{w[0], w[1], w[2], 1 - w[0] - w[1] - w[2]};
+    constexpr double slack = 1e-9;
+    for (const double bj : b)
+        if (!(bj >= -slack)) return std::nullopt;
+    return b;
+}
+
+}  // namespace
+
+void ElasticBody::init(const Mesh& mesh) {
+    m_mesh = &mesh;
+    resize_vertices(mesh.vertex_count());
+    std::fill(m_known.begin(), m_known.end(), 1);
+    m_rebuild_all = true;
+    m_dirty.clear();
+    m_edit_removed.clear();
+    m_edit_adding = false;
+    m_stale = true;
+}
+
+void ElasticBody::element_removed(const Mesh&, ElementId, const Simplex& was) {
+    if (m_edit_adding) {  // removals come first within an edit: this is the next edit
+        m_edit_removed.clear();
+        m_edit_adding = false;
+    }
+    m_edit_removed.push_back(was);
+    m_stale = true;
+}
+
+void ElasticBody::element_changed(const Mesh& mesh, ElementId element, const Simplex& was) {
+    // the old shape holds the vertices a dissection copies (without marking a new edit: several
+    // elements of one edit change in turn)
+    m_edit_removed.push_back(was);
+    m_stale = true;
+    m_dirty.push_back(element);
+    if (mesh.vertex_count() > vertex_count()) resize_vertices(mesh.vertex_count());
+    const Simplex& s = mesh.simplex(element);
+    for (int j = 0; j < s.count(); ++j)
+        if (const VertexId v = s.vertex(j); !m_known[v]) interpolate_new_vertex(mesh, v, s);
+}
+
+void ElasticBody::element_added(const Mesh& mesh, ElementId element) {
+    m_edit_adding = true;
+    m_stale = true;
+    m_dirty.push_back(element);
+    if (mesh.vertex_count() > vertex_count()) resize_vertices(mesh.vertex_count());
+    const Simplex& s = mesh.simplex(element);
+    for (int j = 0; j < s.count(); ++j)
+        if (const VertexId v = s.vertex(j); !m_known[v]) interpolate_new_vertex(mesh, v, s);
+}
+
+void ElasticBody::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
+    if (!writes_reference(which)) return;  // the deformed positions are ours to write, not a rest shape
+    for (const VertexId v : vertices)
+        for (const ElementId t : star(mesh, v)) m_dirty.push_back(t);
+    m_stale = true;
+}
+
+void ElasticBody::interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added) {
+    const Point& x = mesh.reference(v);
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    bool found = false;
+    for (const Simplex& was : m_edit_removed) {
+        bool usable = true;  // every corner's displacement must be set already
+        for (int j = 0; j < was.count(); ++j) usable = usable && was.vertex(j) < vertex_count() && m_known[was.vertex(j)];
+        if (!usable) continue;
+        if (const auto b = inside(mesh, was, x)) {
+            for (int j = 0; j < 4; ++j) u += (*b)[static_cast<std::size_t>(j)] * m_u.segment<3>(3 * static_cast<Eigen::Index>(was.vertex(j)));
+            found = true;
+            break;
+        }
+    }
+    if (!found) {  // no element of the edit held it: the mean of the element's known corners
+        int count = 0;
+        for (int j = 0; j < added.count(); ++j)
+            if (const VertexId w = added.vertex(j); w != v && m_known[w]) {
+                u += m_u.segment<3>(3 * static_cast<Eigen::Index>(w));
+                ++count;
+            }
+        if (count > 0) u /= count;
+    }
+    m_u.segment<3>(3 * static_cast<Eigen::Index>(v)) = u;
+    m_known[v] = 1;
+}
+
+Outcome<Done> ElasticBody::refresh() {
+    if (!m_stale) return Done{};
+    const Mesh& mesh = *m_mesh;
+    if (mesh.vertex_count() != vertex_count()) resize_vertices(mesh.vertex_count());  // a rollback may drop vertices
+    m_rest.resize(mesh.element_capacity());
+    m_corners.resize(mesh.element_capacity());
+    if (m_rebuild_all) {
+        m_dirty.clear();
+        for (const ElementId t : sxk::elements(mesh)) m_dirty.push_back(t);
+    }
+    std::sort(m_dirty.begin(), m_dirty.end());
+    m_dirty.erase(std::unique(m_dirty.begin(), m_dirty.end()), m_dirty.end());
+    for (const ElementId t : m_dirty) {
+        if (!mesh.is_element(t)) continue;  // added, then removed again
+        const Simplex& s = mesh.simplex(t);
+        Eigen::Matrix3d z;
+        const Point& origin = mesh.reference(s.vertex(3));
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k)
+                z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
+        const detail::RestShape rest = detail::rest_shape(z);
+        // flat by the exact predicate, or so thin that its volume rounds to zero in doubles (a
+        // sliver of random moves did: exact orientation positive, determinant 0)
+        const bool finite = std::all_of(rest.gradient.begin(), rest.gradient.end(), [](double g) { return std::isfinite(g); });
+        if (!(rest.volume > 0) || !finite || element_orientation(mesh, t, Positions::reference) == Sign::zero)
+            return Refusal{RefusalCode::would_flatten,
+                           "elasticity: element " + std::to_string(t) + " is flat at rest (its stiffness is undefined)", t};
+        m_rest[t] = rest;
+        for (int j = 0; j < 4; ++j) m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
+    }
+    rebuild_elements_and_stars();
+    m_dirty.clear();
+    m_edit_removed.clear();
+    m_edit_adding = false;
+    m_rebuild_all = false;
+    m_stale = false;
+    return Done{};
+}
+
+void ElasticBody::rebuild_elements_and_stars() {
+    const Mesh& mesh = *m_mesh;
+    const std::size_t n = vertex_count();
+    m_elements.clear();
+    for (const ElementId t : sxk::elements(mesh)) m_elements.push_back(t);
+    Vector3 low{}, high{};
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    m_star_begin.assign(n + 1, 0);
+    for (const ElementId t : m_elements)
+        for (const VertexId v : m_corners[t]) {
+            ++m_star_begin[v + 1];
+            for (std::size_t k = 0; k < 3; ++k) {
+                low[k] = std::min(low[k], mesh.reference(v)[k]);
+                high[k] = std::max(high[k], mesh.reference(v)[k]);
+            }
+        }
+    for (std::size_t v = 0; v < n; ++v) m_star_begin[v + 1] += m_star_begin[v];
+    m_star.resize(m_star_begin[n]);
+    std::vector<std::uint32_t> next(m_star_begin.begin(), m_star_begin.end() - 1);
+    for (std::size_t e = 0; e < m_elements.size(); ++e)
+        for (std::size_t j = 0; j < 4; ++j)
+            m_star[next[m_corners[m_elements[e]][j]]++] = static_cast<std::uint32_t>(4 * e + j);
+    m_diameter = m_elements.empty() ? 0
+                                    : std::sqrt((high[0] - low[0]) * (high[0] - low[0]) +
+                                                (high[1] - low[1]) * (high[1] - low[1]) +
+                                                (high[2] - low[2]) * (high[2] - low[2]));
+}
+
+}  // namespace sxk::elasticity
