@@ -14,16 +14,21 @@
 //   cube/matrix_free/threads:2  solve_linear_cg from rest
 //   cube/eigen                  solve_assembled_cg from rest (assembly included: what a
 //                               simulation that re-assembles after each edit pays)
+// On the first mesh, the re-solve after a local edit (resolve/NAME/matrix_free and /eigen, 3
+// iterations each: see resolve() below).
 // Wall time (the products run on two threads). Counters: iterations and iterations_per_s
 // (solves); nonzeros and matrix_bytes (K), body_bytes (what the matrix-free product keeps per
 // element).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <deque>
 #include <exception>
 #include <optional>
+#include <random>
+#include <vector>
 #include <string>
 
 #include <tbb/task_arena.h>
@@ -32,6 +37,7 @@
 #include "solve.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/io.hpp"
+#include "sxk/ops/split_edge.hpp"
 
 namespace {
 
@@ -105,6 +111,72 @@ void cube_solve(benchmark::State& state, const sxk::Mesh* mesh, bool assembled) 
         benchmark::Counter(static_cast<double>(iterations) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// ---- re-solve after a local edit ----------------------------------------------------------------
+
+// The first mesh's load case: vertices within 5% of the lowest z fixed, a total force of 1e-3 E
+// H^2 along x shared by those within 5% of the highest z (small displacements), E = 1e4, nu = 0.3.
+void load_case(el::ElasticBody& body, const sxk::Mesh& mesh) {
+    double low = INFINITY, high = -INFINITY;
+    for (sxk::VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        low = std::min(low, mesh.reference(v)[2]);
+        high = std::max(high, mesh.reference(v)[2]);
+    }
+    const double margin = 0.05 * (high - low);
+    std::vector<sxk::VertexId> top;
+    for (sxk::VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        if (mesh.vertex_element(v) == sxk::invalid_id) continue;
+        if (mesh.reference(v)[2] <= low + margin) (void)body.fix(v);
+        else if (mesh.reference(v)[2] >= high - margin) top.push_back(v);
+    }
+    const double total = 1e-3 * 1e4 * body.diameter() * body.diameter();
+    for (const sxk::VertexId v : top) (void)body.add_force(v, {total / static_cast<double>(top.size()), 0, 0});
+}
+
+struct Resolve {
+    const Case* base = nullptr;
+    Eigen::VectorXd solved;  // the base solution, tolerance 1e-6
+};
+
+// One iteration: a copy of the solved mesh and body (untimed), then, timed: split_edge of a random
+// edge in the middle third of the mesh and the re-solve to 1e-6 - ours: the body attached as a
+// watcher (rest shapes of the split's elements only) and the matrix-free CG from the previous
+// solution; Eigen's: a body built afresh on the edited mesh (every rest shape), K assembled,
+// ConjugateGradient from the same start (the previous solution, the new vertex interpolated).
+void resolve(benchmark::State& state, Resolve* r, bool assembled) {
+    std::mt19937_64 random(7);
+    const el::SolveOptions options{.tolerance = 1e-6};
+    std::size_t iterations = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        sxk::Mesh mesh = r->base->mesh;
+        mesh.reserve(mesh.vertex_count() + 1, mesh.element_count() + 64);
+        auto body = el::ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3});
+        load_case(*body, mesh);
+        body->displacements() = r->solved;
+        mesh.add_watcher(*body);
+        sxk::ElementId t = static_cast<sxk::ElementId>(random() % mesh.element_capacity());
+        while (!mesh.is_element(t)) t = static_cast<sxk::ElementId>((t + 1) % mesh.element_capacity());
+        const sxk::VertexId a = mesh.simplex(t).vertex(0), b = mesh.simplex(t).vertex(1);
+        state.ResumeTiming();
+        if (!sxk::split_edge(mesh, a, b, 0.5)) {
+            state.SkipWithError("split_edge refused");
+            return;
+        }
+        if (assembled) {
+            auto fresh = el::ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3});
+            load_case(*fresh, mesh);
+            fresh->displacements() = body->displacements();  // the same start: previous + interpolated
+            iterations = el::solve_assembled_cg(*fresh, options)->iterations;
+        } else {
+            iterations = el::solve_linear_cg(*body, options)->iterations;
+        }
+        state.PauseTiming();
+        mesh.remove_watcher(*body);
+        state.ResumeTiming();
+    }
+    state.counters["iterations"] = static_cast<double>(iterations);
+}
+
 const char* usage = "usage: elasticity [--benchmark_...] [NAME=MESH.ele...]\n";
 
 }  // namespace
@@ -148,6 +220,23 @@ int main(int argc, char** argv) {
         benchmark::RegisterBenchmark(("product/" + c.name + "/eigen").c_str(), eigen_product, &c)
             ->UseRealTime()
             ->Unit(benchmark::kMicrosecond);
+    }
+    // the re-solve on the first mesh (the femur's small one in tools/bench/run)
+    static Resolve resolve_case;
+    if (!cases.empty()) {
+        resolve_case.base = &cases.front();
+        auto body = el::ElasticBody::make(cases.front().mesh, {.young = 1e4, .poisson = 0.3});
+        load_case(*body, cases.front().mesh);
+        const auto report = el::solve_linear_cg(*body, {.tolerance = 1e-6});
+        std::fprintf(stderr, "elasticity: %s: base solve %zu iterations, %.2f s\n", cases.front().name.c_str(),
+                     report->iterations, report->seconds);
+        resolve_case.solved = body->displacements();
+        for (const bool assembled : {false, true})
+            benchmark::RegisterBenchmark(("resolve/" + cases.front().name + (assembled ? "/eigen" : "/matrix_free")).c_str(),
+                                         resolve, &resolve_case, assembled)
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(3);
     }
     static const sxk::Mesh cube = *sxk::make_kuhn_cube(11, 1.0 / 11);
     benchmark::RegisterBenchmark("cube/matrix_free/threads:2", cube_solve, &cube, false)
