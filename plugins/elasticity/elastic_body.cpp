@@ -114,20 +114,23 @@ void ElasticBody::clear_forces() { m_force.setZero(); }
 void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const {
     const std::size_t count = m_elements.size();
     m_corner_forces.resize(12 * count);
+    // vertices beyond d (a rollback dropped them and no refresh followed) read as at rest
+    const std::size_t vertices = static_cast<std::size_t>(d.size()) / 3;
     using Range = tbb::blocked_range<std::size_t>;
     tbb::parallel_for(Range(0, count, 1024), [&](const Range& r) {
         for (std::size_t e = r.begin(); e != r.end(); ++e) {
             const ElementId t = m_elements[e];
             double corners[12];
             for (std::size_t j = 0; j < 4; ++j) {
-                const double* dj = d.data() + 3 * std::size_t{m_corners[t][j]};
-                for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = dj[k];
+                const std::size_t v = m_corners[t][j];
+                for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = v < vertices ? d[static_cast<Eigen::Index>(3 * v + k)] : 0;
             }
             detail::linear_tetrahedron_forces(m_rest[t], m_lame, corners, m_corner_forces.data() + 12 * e);
         }
     });
-    out.resize(d.size());
-    tbb::parallel_for(Range(0, vertex_count(), 4096), [&](const Range& r) {
+    out.setZero(d.size());
+    const std::size_t starred = std::min(m_star_begin.size() - 1, vertices);  // the vertices of the last refresh
+    tbb::parallel_for(Range(0, starred, 4096), [&](const Range& r) {
         for (std::size_t v = r.begin(); v != r.end(); ++v) {
             Eigen::Vector3d sum = Eigen::Vector3d::Zero();
             for (std::uint32_t i = m_star_begin[v]; i < m_star_begin[v + 1]; ++i)
@@ -138,7 +141,8 @@ void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const
 }
 
 void ElasticBody::project(Eigen::VectorXd& v) const {
-    for (std::size_t i = 0; i < vertex_count(); ++i) {
+    const std::size_t n = std::min(vertex_count(), static_cast<std::size_t>(v.size()) / 3);
+    for (std::size_t i = 0; i < n; ++i) {
         if (m_freedom[i] == Freedom::free) continue;
         auto x = v.segment<3>(3 * static_cast<Eigen::Index>(i));
         if (m_freedom[i] == Freedom::fixed) {

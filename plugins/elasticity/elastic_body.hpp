@@ -9,7 +9,8 @@
 //
 // Units are the caller's; the thesis' examples use SI (m, N, Pa). The body reads the mesh's
 // reference positions as the rest shape and keeps its own state (displacements, loads,
-// constraints) per vertex; it does not change the mesh.
+// constraints) per vertex; it changes the mesh only when asked to show its solution
+// (write_deformed).
 #pragma once
 
 #include <array>
@@ -126,7 +127,8 @@ public:
     const Eigen::VectorXd& forces() const { return m_force; }
 
     // out = K d, the elastic forces of displacements d with their sign reversed (eq. 3.4 summed
-    // over the elements, eq. 3.5), without forming K. Elements in parallel (TBB), the sums per
+    // over the elements, eq. 3.5), without forming K; d and out have dof_count() entries (the
+    // vertices of an edit not refreshed yet get 0). Elements in parallel (TBB), the sums per
     // vertex in a fixed order: the result does not depend on the number of threads. One call at
     // a time per body (it writes the body's scratch buffer).
     void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
@@ -157,7 +159,9 @@ private:
     Outcome<Done> check_vertex(VertexId v, const char* what) const;
     // The per-vertex arrays sized to n vertices (new ones free, unloaded, at rest, not known).
     void resize_vertices(std::size_t n);
-    // A new vertex's displacement (follow_edits.cpp).
+    // An element an edit made or reshaped: its rest shape to compute at the next refresh, its
+    // new corners' displacements now (follow_edits.cpp).
+    void take_element(const Mesh& mesh, ElementId element);
     void interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added);
     void rebuild_elements_and_stars();
 

@@ -60,16 +60,15 @@ void ElasticBody::element_changed(const Mesh& mesh, ElementId element, const Sim
     // the old shape holds the vertices a dissection copies (without marking a new edit: several
     // elements of one edit change in turn)
     m_edit_removed.push_back(was);
-    m_stale = true;
-    m_dirty.push_back(element);
-    if (mesh.vertex_count() > vertex_count()) resize_vertices(mesh.vertex_count());
-    const Simplex& s = mesh.simplex(element);
-    for (int j = 0; j < s.count(); ++j)
-        if (const VertexId v = s.vertex(j); !m_known[v]) interpolate_new_vertex(mesh, v, s);
+    take_element(mesh, element);
 }
 
 void ElasticBody::element_added(const Mesh& mesh, ElementId element) {
     m_edit_adding = true;
+    take_element(mesh, element);
+}
+
+void ElasticBody::take_element(const Mesh& mesh, ElementId element) {
     m_stale = true;
     m_dirty.push_back(element);
     if (mesh.vertex_count() > vertex_count()) resize_vertices(mesh.vertex_count());
