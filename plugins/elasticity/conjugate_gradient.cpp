@@ -1,5 +1,6 @@
 // solve_linear_cg: matrix-free linear CG with projected constraints (solve.hpp; thesis §2.4.1,
 // §3.1 and §6.6).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
