@@ -36,45 +36,74 @@ Outcome<Done> prepare_solve(ElasticBody& body) {
 
 }  // namespace detail
 
-Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {
+Outcome<LinearRelaxation> LinearRelaxation::start(ElasticBody& body, const SolveOptions& options) {
     if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
+    LinearRelaxation relaxation(body, options);
+    relaxation.residual();
+    relaxation.m_rr = relaxation.m_r.squaredNorm();
+    relaxation.m_report.history.push_back(std::sqrt(relaxation.m_rr));
+    relaxation.m_d = relaxation.m_r;
+    relaxation.m_report.residual = std::sqrt(relaxation.m_rr);
+    relaxation.m_report.converged = relaxation.m_report.residual <= relaxation.m_report.threshold;
+    return relaxation;
+}
+
+// r = P(f - K u): the steepest descent of the energy within the allowed motions; the reactions of
+// eq. 6.9 change with u, so the threshold follows each fresh residual.
+void LinearRelaxation::residual() {
+    m_body->multiply(m_body->displacements(), m_ku);
+    m_r = m_body->forces() - m_ku;
+    m_body->project(m_r);
+    m_report.threshold = detail::stop_threshold(*m_body, m_options, detail::reaction_norm(*m_body, m_ku));
+}
+
+bool LinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
-    SolveReport report;
-    Eigen::VectorXd& u = body.displacements();
-    Eigen::VectorXd ku, r, d, q;
-    // r = P(f - K u): the steepest descent of the energy within the allowed motions; the
-    // reactions of eq. 6.9 change with u, so the threshold follows each fresh residual
-    auto residual = [&] {
-        body.multiply(u, ku);
-        r = body.forces() - ku;
-        body.project(r);
-        report.threshold = detail::stop_threshold(body, options, detail::reaction_norm(body, ku));
-    };
-    residual();
-    double rr = r.squaredNorm();
-    report.history.push_back(std::sqrt(rr));
-    d = r;
-    while (std::sqrt(rr) > report.threshold && report.iterations < options.max_iterations) {
-        body.multiply(d, q);
-        body.project(q);  // P K P: d is already in the allowed space
-        const double dq = d.dot(q);
-        if (!(dq > 0)) break;  // d = 0 (exact solution), or K not positive on d: no progress possible
-        const double alpha = rr / dq;
-        u += alpha * d;
-        ++report.iterations;
-        if (options.recompute_every > 0 && report.iterations % options.recompute_every == 0) {
+    Eigen::VectorXd& u = m_body->displacements();
+    for (std::size_t i = 0; i < iterations && !m_stalled; ++i) {
+        if (std::sqrt(m_rr) <= m_report.threshold || m_report.iterations >= m_options.max_iterations) break;
+        m_body->multiply(m_d, m_q);
+        m_body->project(m_q);  // P K P: d is already in the allowed space
+        const double dq = m_d.dot(m_q);
+        if (!(dq > 0)) {  // d = 0 (exact solution), or K not positive on d: no progress possible
+            m_stalled = true;
+            break;
+        }
+        const double alpha = m_rr / dq;
+        u += alpha * m_d;
+        ++m_report.iterations;
+        if (m_options.recompute_every > 0 && m_report.iterations % m_options.recompute_every == 0) {
             residual();
         } else {
-            r -= alpha * q;
+            m_r -= alpha * m_q;
         }
-        const double next = r.squaredNorm();
-        d = r + (next / rr) * d;
-        rr = next;
-        report.history.push_back(std::sqrt(rr));
+        const double next = m_r.squaredNorm();
+        m_d = m_r + (next / m_rr) * m_d;
+        m_rr = next;
+        m_report.history.push_back(std::sqrt(m_rr));
     }
-    report.residual = std::sqrt(rr);
-    report.converged = report.residual <= report.threshold;
-    report.energy = body.energy();
+    m_report.residual = std::sqrt(m_rr);
+    m_report.converged = m_report.residual <= m_report.threshold;
+    m_report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return m_report.converged;
+}
+
+bool LinearRelaxation::done() const {
+    return m_report.converged || m_stalled || m_report.iterations >= m_options.max_iterations;
+}
+
+SolveReport LinearRelaxation::report() const {
+    SolveReport report = m_report;
+    report.energy = m_body->energy();
+    return report;
+}
+
+Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    auto relaxation = LinearRelaxation::start(body, options);
+    if (!relaxation) return relaxation.refusal();
+    relaxation->run(options.max_iterations);
+    SolveReport report = relaxation->report();
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
 }

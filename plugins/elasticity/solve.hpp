@@ -36,7 +36,7 @@ struct SolveReport {
     double residual = 0;   // ||r|| at the end (r projected onto the allowed motions)
     double threshold = 0;  // what ||r|| had to reach
     std::vector<double> history;  // ||r|| before each iteration and at the end
-    double seconds = 0;
+    double seconds = 0;  // in the solver (LinearRelaxation: in run, summed over its calls)
     double energy = 0;  // 1/2 u^T K u - f^T u at the end
 };
 
@@ -46,6 +46,36 @@ struct SolveReport {
 // stiffness matrix is singular. Not converging within max_iterations is not a refusal: the
 // report says converged = false and the body holds the last iterate.
 Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options = {});
+
+// The same CG a few iterations at a time, as the thesis interleaves relaxation with rendering
+// (§3.3: "the course of the CG iteration is visualized during the simulation"): an application
+// starts it, runs a bounded number of iterations per frame, shows the displacements in between
+// (write_deformed), and starts again when loads, constraints or the mesh change (§3.3: "at every
+// change in forces or boundary conditions, the CG iteration is restarted"). solve_linear_cg is
+// start + run(max_iterations). The body must outlive the relaxation and must not be edited or
+// re-constrained while it runs.
+class LinearRelaxation {
+public:
+    // From the body's current displacements; refuses as solve_linear_cg.
+    static Outcome<LinearRelaxation> start(ElasticBody& body, const SolveOptions& options = {});
+    // At most `iterations` more CG iterations (none when done()); true when converged.
+    bool run(std::size_t iterations);
+    // Converged, out of iterations (max_iterations), or unable to progress.
+    bool done() const;
+    // Iterations, residual, threshold and history so far; the energy of the current displacements.
+    SolveReport report() const;
+
+private:
+    LinearRelaxation(ElasticBody& body, const SolveOptions& options) : m_body(&body), m_options(options) {}
+    void residual();
+
+    ElasticBody* m_body;
+    SolveOptions m_options;
+    SolveReport m_report;
+    Eigen::VectorXd m_ku, m_r, m_d, m_q;
+    double m_rr = 0;
+    bool m_stalled = false;
+};
 
 // K as an Eigen sparse matrix (3 rows and columns per vertex), summed from element_stiffness.
 Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body);

@@ -240,6 +240,46 @@ TEST(ElasticityBody, WarmStartSavesIterations) {
     EXPECT_LT(warm->iterations, from_rest->iterations);
 }
 
+// The relaxation a few iterations per frame (LinearRelaxation) is the solve, bit for bit.
+TEST(ElasticityBody, RelaxationInStepsIsTheSolve) {
+    const Mesh mesh = unit_cube(4);
+    auto setup = [&](ElasticBody& body) {
+        for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+            const Point& p = mesh.reference(v);
+            if (p[1] == 0) {
+                ASSERT_TRUE(body.fix(v).ok());
+            } else if (p[1] == 1) {
+                ASSERT_TRUE(body.add_force(v, {0.1, 1, -0.2}).ok());
+            }
+        }
+    };
+    auto whole = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3});
+    auto framed = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3});
+    ASSERT_TRUE(whole.ok() && framed.ok());
+    setup(*whole);
+    setup(*framed);
+    const SolveOptions options{.tolerance = 1e-9};
+    const auto solved = solve_linear_cg(*whole, options);
+    ASSERT_TRUE(solved.ok() && solved->converged);
+    auto relaxation = LinearRelaxation::start(*framed, options);
+    ASSERT_TRUE(relaxation.ok()) << relaxation.reason();
+    int frames = 0;
+    while (!relaxation->done()) {
+        relaxation->run(7);
+        ++frames;
+        ASSERT_LT(frames, 10000);
+    }
+    const SolveReport report = relaxation->report();
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(report.iterations, solved->iterations);
+    EXPECT_EQ(frames, static_cast<int>((solved->iterations + 6) / 7));
+    EXPECT_EQ(report.history, solved->history);
+    EXPECT_EQ(framed->displacements(), whole->displacements());
+    EXPECT_EQ(report.energy, solved->energy);
+    EXPECT_TRUE(relaxation->run(5));  // converged already: nothing more happens
+    EXPECT_EQ(relaxation->report().iterations, solved->iterations);
+}
+
 TEST(ElasticityBody, RefusesWhatItCannotSolve) {
     Mesh triangles(2, 2);
     triangles.add_vertex({0, 0, 0});
@@ -275,6 +315,7 @@ TEST(ElasticityBody, RefusesWhatItCannotSolve) {
               "elasticity: no vertex is constrained, so the body can move freely and its stiffness matrix is singular; "
               "fix at least three non-collinear vertices of every connected part");
     EXPECT_EQ(solve_assembled_cg(*body).reason(), unconstrained.reason());
+    EXPECT_EQ(LinearRelaxation::start(*body).reason(), unconstrained.reason());
 }
 
 }  // namespace
