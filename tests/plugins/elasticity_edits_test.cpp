@@ -1,9 +1,12 @@
 // ElasticBody following the edits of its mesh (elastic_body.hpp; issue 14 item 2): new vertices
-// get interpolated displacements, and after random edits the body's state is the one a fresh
-// body builds on the edited mesh - its product K d bit for bit, its solution's energy.
+// get interpolated displacements, a warm re-solve after a split reaches the fresh solution, and
+// after random edits the body's state is the one a fresh body builds on the edited mesh: its
+// elements and its product K d bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "../../fuzz/ops_driver.hpp"
