@@ -30,10 +30,12 @@ Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& o
     if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
     const auto start = std::chrono::steady_clock::now();
     // B: one orthonormal column per allowed motion (3 for a free vertex, its line for a line
-    // vertex, none for a fixed one), so that ||B^T r|| = ||P r||
+    // vertex, none for a fixed one or one in no element, whose rows of K are empty), so that
+    // ||B^T r|| = ||P r||
     std::vector<Eigen::Triplet<double>> basis;
     int columns = 0;
     for (VertexId v = 0; v < body.vertex_count(); ++v) {
+        if (v >= body.mesh().vertex_count() || body.mesh().vertex_element(v) == invalid_id) continue;
         const auto row = static_cast<int>(3 * v);
         switch (body.freedom(v)) {
         case Freedom::free:
