@@ -23,7 +23,7 @@ double stop_threshold(const ElasticBody& body, const SolveOptions& options, doub
     const double n = static_cast<double>(std::max<std::size_t>(body.dof_count(), 1));
     const double h = body.diameter();
     return options.tolerance * std::sqrt(external * external + reaction * reaction) +
-           body.material().young * h * h * options.rounding / std::sqrt(n);
+           body.largest_young() * h * h * options.rounding / std::sqrt(n);
 }
 
 Outcome<Done> prepare_solve(ElasticBody& body) {

@@ -30,22 +30,29 @@ Lame lame(const Material& material) {
     return {e / (2 * (1 + nu)), e * nu / ((1 + nu) * (1 - 2 * nu))};
 }
 
+namespace detail {
+
+std::string material_problem(const Material& material) {
+    if (!(material.young > 0) || !std::isfinite(material.young))
+        return "Young's modulus " + text(material.young) + " is not positive and finite";
+    if (!(material.poisson > -1 && material.poisson < 0.5))
+        return "Poisson's ratio " + text(material.poisson) + " is not in (-1, 0.5)";
+    return {};
+}
+
+}  // namespace detail
+
 Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material) {
     if (mesh.topological_dimension() != 3 || mesh.ambient_dimension() != 3)
         return Refusal{RefusalCode::wrong_dimension,
                        "elasticity: the mesh has " + std::to_string(mesh.topological_dimension()) +
                            "-dimensional elements in " + std::to_string(mesh.ambient_dimension()) +
                            "-dimensional space; linear tetrahedra need a tetrahedral mesh in space"};
-    if (!(material.young > 0) || !std::isfinite(material.young))
-        return Refusal{RefusalCode::bad_argument,
-                       "elasticity: Young's modulus " + text(material.young) + " is not positive and finite"};
-    if (!(material.poisson > -1 && material.poisson < 0.5))
-        return Refusal{RefusalCode::bad_argument,
-                       "elasticity: Poisson's ratio " + text(material.poisson) + " is not in (-1, 0.5)"};
+    if (const std::string problem = detail::material_problem(material); !problem.empty())
+        return Refusal{RefusalCode::bad_argument, "elasticity: " + problem};
     ElasticBody body;
     body.m_mesh = &mesh;
     body.m_material = material;
-    body.m_lame = lame(material);
     body.init(mesh);
     if (auto fresh = body.refresh(); !fresh) return fresh.refusal();
     return body;
@@ -125,7 +132,7 @@ void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const
                 const std::size_t v = m_corners[t][j];
                 for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = v < vertices ? d[static_cast<Eigen::Index>(3 * v + k)] : 0;
             }
-            detail::linear_tetrahedron_forces(m_rest[t], m_lame, corners, m_corner_forces.data() + 12 * e);
+            detail::linear_tetrahedron_forces(m_rest[t], m_rest[t].lame, corners, m_corner_forces.data() + 12 * e);
         }
     });
     out.setZero(d.size());
@@ -167,7 +174,7 @@ Eigen::Matrix<double, 12, 12> ElasticBody::element_stiffness(ElementId t) const 
     for (int column = 0; column < 12; ++column) {
         double unit[12] = {};
         unit[column] = 1;
-        detail::linear_tetrahedron_forces(rest, m_lame, unit, k.col(column).data());
+        detail::linear_tetrahedron_forces(rest, rest.lame, unit, k.col(column).data());
     }
     return k;
 }

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,16 +27,6 @@
 #include "sxk/watcher.hpp"
 
 namespace sxk::elasticity {
-
-namespace detail {
-// What an element keeps of its rest shape: b_j = Z^-T e_j for corners j = 0, 1, 2 (the rows of
-// Z^-1, Z = (z0 - z3, z1 - z3, z2 - z3) as columns: the gradients of the corners' shape
-// functions; b_3 = -(b_0 + b_1 + b_2)), and the volume (linear_tetrahedron.hpp).
-struct RestShape {
-    std::array<double, 9> gradient{};  // b_0, b_1, b_2, x y z each
-    double volume = 0;
-};
-}  // namespace detail
 
 using Vector3 = std::array<double, 3>;
 
@@ -51,6 +42,25 @@ struct Lame {
     double lambda = 0;
 };
 Lame lame(const Material& material);
+
+namespace detail {
+// What an element keeps of its rest shape: b_j = Z^-T e_j for corners j = 0, 1, 2 (the rows of
+// Z^-1, Z = (z0 - z3, z1 - z3, z2 - z3) as columns: the gradients of the corners' shape
+// functions; b_3 = -(b_0 + b_1 + b_2)), and the volume (linear_tetrahedron.hpp).
+struct RestShape {
+    std::array<double, 9> gradient{};  // b_0, b_1, b_2, x y z each
+    double volume = 0;
+    Lame lame;  // the element's material
+};
+// Empty, or why `material` is out of range ("Poisson's ratio 0.5 is not in (-1, 0.5)").
+std::string material_problem(const Material& material);
+}  // namespace detail
+
+// Materials per element: an element attribute of this name with 2 components (Young's modulus,
+// Poisson's ratio) gives each element its own; elements take the body's material otherwise.
+// Being an element attribute, it follows the edits: a split's children take their parent's
+// material (Mesh::add_element_attribute), rollback restores it.
+inline constexpr const char* material_attribute = "elasticity.material";
 
 // What a vertex may do (thesis §6.6): move freely, stay at its prescribed displacement, or move
 // along a line through its prescribed displacement. The solvers project residuals and search
@@ -75,10 +85,16 @@ enum class Freedom : std::uint8_t { free, fixed, line };
 // the element ids and stars, which a solve's every iteration costs anyway.
 class ElasticBody : public Watcher {
 public:
+    // `material` is every element's, except where the mesh's material_attribute says otherwise.
     // Refuses a mesh that is not tetrahedral in space (wrong_dimension), a material out of range
-    // (bad_argument), and an element whose rest volume is not positive (would_flatten: its
-    // stiffness is undefined). The text names the element.
+    // (bad_argument; an element's from the attribute: the element named), and an element whose
+    // rest volume is not positive (would_flatten: its stiffness is undefined).
     static Outcome<ElasticBody> make(const Mesh& mesh, Material material);
+    // The values of material_attribute were set anew (no event says so): every element's
+    // material is read again at the next refresh.
+    void materials_changed();
+    // The largest Young's modulus of the elements (E of eq. 6.9), as of the last refresh.
+    double largest_young() const { return m_largest_young; }
 
     // Brings the body in step with the edits it heard (see above). Refuses (would_flatten, the
     // element named and the body still waiting for a refresh) when an edit left an element flat
@@ -95,6 +111,7 @@ public:
     void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) override;
 
     const Mesh& mesh() const { return *m_mesh; }
+    // The body's material: that of the elements the material attribute does not set.
     const Material& material() const { return m_material; }
     // Vertices of the body (the mesh's, as of the last event heard).
     std::size_t vertex_count() const { return m_freedom.size(); }
@@ -167,7 +184,7 @@ private:
 
     const Mesh* m_mesh = nullptr;
     Material m_material;
-    Lame m_lame;
+    double m_largest_young = 0;
     double m_diameter = 0;
     // the live elements in increasing id order, as of the last refresh
     std::vector<ElementId> m_elements;

@@ -47,6 +47,11 @@ void ElasticBody::init(const Mesh& mesh) {
     m_stale = true;
 }
 
+void ElasticBody::materials_changed() {
+    m_rebuild_all = true;
+    m_stale = true;
+}
+
 void ElasticBody::element_removed(const Mesh&, ElementId, const Simplex& was) {
     if (m_edit_adding) {  // removals come first within an edit: this is the next edit
         m_edit_removed.clear();
@@ -123,8 +128,18 @@ Outcome<Done> ElasticBody::refresh() {
     }
     std::sort(m_dirty.begin(), m_dirty.end());
     m_dirty.erase(std::unique(m_dirty.begin(), m_dirty.end()), m_dirty.end());
+    AttributeId materials = mesh.find_element_attribute(material_attribute);
+    if (materials != invalid_id && mesh.element_attribute_components(materials) != 2) materials = invalid_id;
     for (const ElementId t : m_dirty) {
         if (!mesh.is_element(t)) continue;  // added, then removed again
+        Material material = m_material;
+        if (materials != invalid_id) {
+            const std::span<const double> values = mesh.element_attribute(materials, t);
+            material = {values[0], values[1]};
+            if (const std::string problem = detail::material_problem(material); !problem.empty())
+                return Refusal{RefusalCode::bad_argument,
+                               "elasticity: element " + std::to_string(t) + " (" + material_attribute + "): " + problem, t};
+        }
         const Simplex& s = mesh.simplex(t);
         Eigen::Matrix3d z;
         const Point& origin = mesh.reference(s.vertex(3));
@@ -139,9 +154,17 @@ Outcome<Done> ElasticBody::refresh() {
             return Refusal{RefusalCode::would_flatten,
                            "elasticity: element " + std::to_string(t) + " is flat at rest (its stiffness is undefined)", t};
         m_rest[t] = rest;
+        m_rest[t].lame = lame(material);
         for (int j = 0; j < 4; ++j) m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
     }
     rebuild_elements_and_stars();
+    // E of eq. 6.9: the stiffest element's (2 mu (1 + nu) = E); the body's without elements
+    m_largest_young = m_elements.empty() ? m_material.young : 0;
+    for (const ElementId t : m_elements) {
+        const Lame& l = m_rest[t].lame;
+        const double nu = l.lambda / (2 * (l.lambda + l.mu));
+        m_largest_young = std::max(m_largest_young, 2 * l.mu * (1 + nu));
+    }
     m_dirty.clear();
     m_edit_removed.clear();
     m_edit_adding = false;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <random>
@@ -108,6 +109,62 @@ TEST(ElasticityEdits, DissectionCopiesStartWhereTheirOriginalsAre) {
     s.body->multiply(d, ours);
     fresh->multiply(d, theirs);
     EXPECT_EQ(ours, theirs);
+}
+
+// Two materials by the element attribute: a column 1 x 1 x 2, E = 1e3 below z = 1 and 4e3 above,
+// nu = 0, the bottom held and the top pulled up by 0.01. The stress is the same in both halves,
+// so the lower one stretches 4 times as much: the interface rises by 0.008 (linear elements
+// represent this exactly). A split of an upper element keeps its material in both children.
+TEST(ElasticityEdits, MaterialsPerElementFollowSplits) {
+    Mesh mesh = *make_kuhn_box({2, 2, 4}, {0.5, 0.5, 0.5});
+    const std::array<double, 2> soft{1e3, 0}, stiff{4e3, 0};
+    const auto materials = mesh.add_element_attribute(material_attribute, 2, soft);
+    ASSERT_TRUE(materials.ok()) << materials.reason();
+    for (const ElementId t : elements(mesh)) {
+        double z = 0;
+        for (int j = 0; j < 4; ++j) z += mesh.reference(mesh.simplex(t).vertex(j))[2] / 4;
+        if (z > 1) {
+            ASSERT_TRUE(mesh.set_element_attribute(*materials, t, stiff).ok());
+        }
+    }
+    auto body = ElasticBody::make(mesh, {.young = 7, .poisson = 0.2});  // the attribute overrides it everywhere
+    ASSERT_TRUE(body.ok()) << body.reason();
+    EXPECT_EQ(body->largest_young(), 4e3);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        const double z = mesh.reference(v)[2];
+        if (z == 0) {
+            ASSERT_TRUE(body->fix(v).ok());
+        } else if (z == 2) {
+            ASSERT_TRUE(body->fix(v, {0, 0, 0.01}).ok());
+        }
+    }
+    ASSERT_TRUE(solve_linear_cg(*body, {.tolerance = 1e-12})->converged);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        const double z = mesh.reference(v)[2];
+        const double expected = z <= 1 ? 0.008 * z : 0.008 + 0.002 * (z - 1);
+        const Vector3 u = body->displacement(v);
+        EXPECT_NEAR(u[2], expected, 1e-12) << v;
+        EXPECT_NEAR(u[0], 0, 1e-12) << v;
+        EXPECT_NEAR(u[1], 0, 1e-12) << v;
+    }
+    // a split in the stiff half: both children stiff, the state a fresh body's
+    ScopedWatcher following(mesh, *body);
+    ElementId upper = invalid_id;
+    for (const ElementId t : elements(mesh))
+        if (mesh.element_attribute(*materials, t)[0] == stiff[0]) upper = t;
+    ASSERT_TRUE(split_edge(mesh, mesh.simplex(upper).vertex(0), mesh.simplex(upper).vertex(1), 0.5).ok());
+    ASSERT_TRUE(body->refresh().ok());
+    auto fresh = ElasticBody::make(mesh, {.young = 7, .poisson = 0.2});
+    ASSERT_TRUE(fresh.ok());
+    Eigen::VectorXd d = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(fresh->dof_count()), -1, 1), ours, theirs;
+    body->multiply(d, ours);
+    fresh->multiply(d, theirs);
+    EXPECT_EQ(ours, theirs);
+    // and a material out of range is refused by name
+    ASSERT_TRUE(mesh.set_element_attribute(*materials, upper, std::array<double, 2>{4e3, 0.5}).ok());
+    body->materials_changed();
+    EXPECT_EQ(body->refresh().reason(), "elasticity: element " + std::to_string(upper) +
+                                            " (elasticity.material): Poisson's ratio 0.5 is not in (-1, 0.5)");
 }
 
 // Random flips, splits, collapses, dissections, bisections and vertex moves (the operation
