@@ -57,9 +57,10 @@ std::string material_problem(const Material& material);
 }  // namespace detail
 
 // Materials per element: an element attribute of this name with 2 components (Young's modulus,
-// Poisson's ratio) gives each element its own; elements take the body's material otherwise.
-// Being an element attribute, it follows the edits: a split's children take their parent's
-// material (Mesh::add_element_attribute), rollback restores it.
+// Poisson's ratio) gives each element its own; elements take the body's material otherwise (and
+// when an attribute of this name has another number of components: it is not ours). Being an
+// element attribute, it follows the edits: a split's children take their parent's material
+// (Mesh::add_element_attribute), rollback restores it.
 inline constexpr const char* material_attribute = "elasticity.material";
 
 // What a vertex may do (thesis §6.6): move freely, stay at its prescribed displacement, or move
