@@ -59,7 +59,7 @@ Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& o
     Eigen::VectorXd& u = body.displacements();
     Eigen::VectorXd ku = k * u;
     SolveReport report;
-    report.threshold = detail::stop_threshold(body, options, detail::reaction_norm(body, ku));
+    report.threshold = detail::stop_threshold(body, options, ku);
     const Eigen::VectorXd rhs = b.transpose() * (body.forces() - ku);
     report.history.push_back(rhs.norm());
     if (rhs.norm() > report.threshold) {

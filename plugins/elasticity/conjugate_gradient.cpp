@@ -8,8 +8,9 @@
 
 namespace sxk::elasticity {
 
-namespace detail {
+namespace {
 
+// ||(I - P)(K u - f)||: the forces that hold the constrained vertices.
 double reaction_norm(const ElasticBody& body, const Eigen::VectorXd& ku) {
     Eigen::VectorXd gradient = ku - body.forces();
     Eigen::VectorXd allowed = gradient;
@@ -17,9 +18,14 @@ double reaction_norm(const ElasticBody& body, const Eigen::VectorXd& ku) {
     return (gradient - allowed).norm();
 }
 
-double stop_threshold(const ElasticBody& body, const SolveOptions& options, double reaction) {
+}  // namespace
+
+namespace detail {
+
+double stop_threshold(const ElasticBody& body, const SolveOptions& options, const Eigen::VectorXd& ku) {
     const double external = body.forces().norm();
     if (options.stop == StopCriterion::external_force) return options.tolerance * external;
+    const double reaction = reaction_norm(body, ku);
     const double n = static_cast<double>(std::max<std::size_t>(body.dof_count(), 1));
     const double h = body.diameter();
     return options.tolerance * std::sqrt(external * external + reaction * reaction) +
@@ -43,8 +49,7 @@ Outcome<LinearRelaxation> LinearRelaxation::start(ElasticBody& body, const Solve
     relaxation.m_rr = relaxation.m_r.squaredNorm();
     relaxation.m_report.history.push_back(std::sqrt(relaxation.m_rr));
     relaxation.m_d = relaxation.m_r;
-    relaxation.m_report.residual = std::sqrt(relaxation.m_rr);
-    relaxation.m_report.converged = relaxation.m_report.residual <= relaxation.m_report.threshold;
+    relaxation.run(0);  // residual and converged of the start
     return relaxation;
 }
 
@@ -54,7 +59,7 @@ void LinearRelaxation::residual() {
     m_body->multiply(m_body->displacements(), m_ku);
     m_r = m_body->forces() - m_ku;
     m_body->project(m_r);
-    m_report.threshold = detail::stop_threshold(*m_body, m_options, detail::reaction_norm(*m_body, m_ku));
+    m_report.threshold = detail::stop_threshold(*m_body, m_options, m_ku);
 }
 
 bool LinearRelaxation::run(std::size_t iterations) {

@@ -132,7 +132,7 @@ void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const
                 const std::size_t v = m_corners[t][j];
                 for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = v < vertices ? d[static_cast<Eigen::Index>(3 * v + k)] : 0;
             }
-            detail::linear_tetrahedron_forces(m_rest[t], m_rest[t].lame, corners, m_corner_forces.data() + 12 * e);
+            detail::linear_tetrahedron_forces(m_rest[t], corners, m_corner_forces.data() + 12 * e);
         }
     });
     out.setZero(d.size());
@@ -174,7 +174,7 @@ Eigen::Matrix<double, 12, 12> ElasticBody::element_stiffness(ElementId t) const 
     for (int column = 0; column < 12; ++column) {
         double unit[12] = {};
         unit[column] = 1;
-        detail::linear_tetrahedron_forces(rest, rest.lame, unit, k.col(column).data());
+        detail::linear_tetrahedron_forces(rest, unit, k.col(column).data());
     }
     return k;
 }

@@ -19,12 +19,8 @@ namespace {
 // x in barycentric coordinates of tetrahedron s (reference positions); nullopt when s is flat
 // or x is outside it by more than a rounding error.
 std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, const Point& x) {
-    Eigen::Matrix3d z;
     const Point& origin = mesh.reference(s.vertex(3));
-    for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k)
-            z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
-    const Eigen::FullPivLU<Eigen::Matrix3d> lu(z);
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(detail::edge_matrix(mesh, s));
     if (!lu.isInvertible()) return std::nullopt;
     const Eigen::Vector3d w = lu.solve(Eigen::Vector3d(x[0] - origin[0], x[1] - origin[1], x[2] - origin[2]));
     const std::array<double, 4> b{w[0], w[1], w[2], 1 - w[0] - w[1] - w[2]};
@@ -141,12 +137,7 @@ Outcome<Done> ElasticBody::refresh() {
                                "elasticity: element " + std::to_string(t) + " (" + material_attribute + "): " + problem, t};
         }
         const Simplex& s = mesh.simplex(t);
-        Eigen::Matrix3d z;
-        const Point& origin = mesh.reference(s.vertex(3));
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k)
-                z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
-        const detail::RestShape rest = detail::rest_shape(z);
+        const detail::RestShape rest = detail::rest_shape(detail::edge_matrix(mesh, s));
         // flat by the exact predicate, or so thin that its volume rounds to zero in doubles (a
         // sliver of random moves did: exact orientation positive, determinant 0)
         const bool finite = std::all_of(rest.gradient.begin(), rest.gradient.end(), [](double g) { return std::isfinite(g); });

@@ -11,7 +11,18 @@
 
 namespace sxk::elasticity::detail {
 
-// The rest shape of the element whose edge vectors from corner 3 are the columns of z.
+// Z of simplex s in reference positions: the edges from its corner 3 to corners 0, 1, 2 as
+// columns (§3.1).
+inline Eigen::Matrix3d edge_matrix(const Mesh& mesh, const Simplex& s) {
+    Eigen::Matrix3d z;
+    const Point& origin = mesh.reference(s.vertex(3));
+    for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+            z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
+    return z;
+}
+
+// The rest shape (without its material) of the element whose edge matrix is z.
 inline RestShape rest_shape(const Eigen::Matrix3d& z) {
     const Eigen::Matrix3d inverse = z.inverse();
     RestShape rest;
@@ -21,8 +32,9 @@ inline RestShape rest_shape(const Eigen::Matrix3d& z) {
     return rest;
 }
 
-// K_t d for one element: out[3j..3j+2] is the force on corner j that the displacements d
-// (d[3j..3j+2]: corner j's) call for, i.e. the elastic force of eq. 3.4 with its sign reversed:
+// K_t d for one element (of material rest.lame): out[3j..3j+2] is the force on corner j that the
+// displacements d (d[3j..3j+2]: corner j's) call for, i.e. the elastic force of eq. 3.4 with its
+// sign reversed:
 //
 //     G = U Z^-1 = sum_j (d_j - d_3) b_j^T, E = (G + G^T) / 2, T = 2 mu E + lambda trace(E) I,
 //     out_j = volume T b_j (j = 0, 1, 2), out_3 = -(out_0 + out_1 + out_2).
@@ -31,7 +43,8 @@ inline RestShape rest_shape(const Eigen::Matrix3d& z) {
 // on scalars with the symmetry of T: the same product with Eigen's 3 x 3 matrices (G = U Z^-1,
 // volume T Z^-T) took 60% of a CG iteration on the thesis' cube and was not inlined; this form
 // is about twice as fast (docs/elasticity.md "Speed").
-inline void linear_tetrahedron_forces(const RestShape& rest, const Lame& lame, const double* d, double* out) {
+inline void linear_tetrahedron_forces(const RestShape& rest, const double* d, double* out) {
+    const Lame& lame = rest.lame;
     const double* b = rest.gradient.data();
     double g[3][3] = {};
     for (int j = 0; j < 3; ++j) {

@@ -89,10 +89,9 @@ namespace detail {
 // What both solvers check first: some vertex is constrained (else bad_argument: K is singular),
 // and the body is in step with its mesh (ElasticBody::refresh).
 Outcome<Done> prepare_solve(ElasticBody& body);
-// The stop threshold of `options` for residual and reaction forces of the current state.
-double stop_threshold(const ElasticBody& body, const SolveOptions& options, double reaction_norm);
-// ||(I - P)(K u - f)||: the forces that hold the constrained vertices.
-double reaction_norm(const ElasticBody& body, const Eigen::VectorXd& ku);
+// The stop threshold of `options` in the current state, K u being `ku` (the reactions are
+// computed only for the criterion that uses them).
+double stop_threshold(const ElasticBody& body, const SolveOptions& options, const Eigen::VectorXd& ku);
 }  // namespace detail
 
 }  // namespace sxk::elasticity
