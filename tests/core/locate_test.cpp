@@ -104,6 +104,29 @@ TEST(SpatialIndex, ARayInATrianglesPlaneMeetsItWhereItMeetsIt) {
     EXPECT_TRUE(mesh.validate().ok());
 }
 
+// A needle triangle from EditJournalRandom.OctahedronSurface (SXK_SEED=3331795627, step 1372):
+// edges of about 0.1 and an area of about 1e-19, and a ray that passes exactly through its corner
+// p2 at t = 1 (origin + direction == p2 after rounding; the exact test says the ray meets it).
+// The normal in doubles is rounding only and put the crossing at t = -0.9, which was clamped to 0.
+TEST(SpatialIndex, ARayThroughTheCornerOfANeedleTriangleMeetsItThere) {
+    Mesh mesh(2, 3);
+    mesh.add_vertex({-0x1.f05abbbe300bap-6, 0x1.5562d5d08b0f2p-7, -0x1.181d44f049213p-4});
+    mesh.add_vertex({-0x1.0125980194c4cp-3, -0x1.25abe8215d20ep-4, 0x1.60e181b9e1816p-4});
+    mesh.add_vertex({-0x1.3f30ef795ac63p-4, -0x1.f5ff1ace977ep-6, 0x1.2310f3266180cp-7});
+    const std::array<Simplex, 1> triangle{Simplex(+1, {0, 1, 2})};
+    ASSERT_TRUE(mesh.assign_elements(triangle).ok());
+    const Point origin{-0x1.34e7b66b87ef4p-3, -0x1.2a91d11cd77c3p-7, 0x1.1c764147789c8p-4};
+    const Point direction{0x1.2a9e7d5db5185p-4, -0x1.60b632402bbfep-6, -0x1.f02845c558d8dp-5};
+    const RayHit hit = ray_meets_triangle_element(mesh, 0, origin, direction, Positions::reference);
+    ASSERT_TRUE(hit.found());
+    EXPECT_NEAR(hit.t, 1.0, 1e-12);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(hit.point[k], mesh.reference(2)[k], 1e-12) << "coordinate " << k;
+    // the index answers the same
+    const SpatialIndex index(mesh);
+    EXPECT_EQ(index.pick(origin, direction).t, hit.t);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(SpatialIndex, SegmentsOnTheUnitSquare) {
     Mesh mesh = test::unit_square();
     const SpatialIndex index(mesh);
