@@ -15,8 +15,9 @@ Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body) {
     for (const ElementId t : body.elements()) {
         const Eigen::Matrix<double, 12, 12> k = body.element_stiffness(t);
         const Simplex& s = body.mesh().simplex(t);
-        for (int a = 0; a < 12; ++a)
-            for (int b = 0; b < 12; ++b)
+        const int size = 3 * s.count();
+        for (int a = 0; a < size; ++a)
+            for (int b = 0; b < size; ++b)
                 entries.emplace_back(static_cast<int>(3 * s.vertex(a / 3)) + a % 3,
                                      static_cast<int>(3 * s.vertex(b / 3)) + b % 3, k(a, b));
     }
@@ -29,9 +30,9 @@ Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body) {
 Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& options) {
     if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
     const auto start = std::chrono::steady_clock::now();
-    // B: one orthonormal column per allowed motion (3 for a free vertex, its line for a line
-    // vertex, none for a fixed one or one in no element, whose rows of K are empty), so that
-    // ||B^T r|| = ||P r||
+    // B: one orthonormal column per allowed motion (3 for a free vertex, 2 in a planar body, its
+    // line for a line vertex, none for a fixed one or one in no element, whose rows of K are
+    // empty), so that ||B^T r|| = ||P r||
     std::vector<Eigen::Triplet<double>> basis;
     int columns = 0;
     for (VertexId v = 0; v < body.vertex_count(); ++v) {
@@ -39,7 +40,7 @@ Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& o
         const auto row = static_cast<int>(3 * v);
         switch (body.freedom(v)) {
         case Freedom::free:
-            for (int k = 0; k < 3; ++k) basis.emplace_back(row + k, columns++, 1.0);
+            for (int k = 0; k < body.dimension(); ++k) basis.emplace_back(row + k, columns++, 1.0);
             break;
         case Freedom::line: {
             const Vector3 l = body.line_direction(v);

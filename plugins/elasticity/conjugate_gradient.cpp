@@ -57,6 +57,7 @@ Outcome<LinearRelaxation> LinearRelaxation::start(ElasticBody& body, const Solve
 // eq. 6.9 change with u, so the threshold follows each fresh residual.
 void LinearRelaxation::residual() {
     m_body->multiply(m_body->displacements(), m_ku);
+    ++m_report.evaluations;
     m_r = m_body->forces() - m_ku;
     m_body->project(m_r);
     m_report.threshold = detail::stop_threshold(*m_body, m_options, m_ku);
@@ -68,6 +69,7 @@ bool LinearRelaxation::run(std::size_t iterations) {
     for (std::size_t i = 0; i < iterations && !m_stalled; ++i) {
         if (std::sqrt(m_rr) <= m_report.threshold || m_report.iterations >= m_options.max_iterations) break;
         m_body->multiply(m_d, m_q);
+        ++m_report.evaluations;
         m_body->project(m_q);  // P K P: d is already in the allowed space
         const double dq = m_d.dot(m_q);
         if (!(dq > 0)) {  // d = 0 (exact solution), or K not positive on d: no progress possible
@@ -101,6 +103,10 @@ SolveReport LinearRelaxation::report() const {
     SolveReport report = m_report;
     report.energy = m_body->energy();
     return report;
+}
+
+Outcome<SolveReport> solve(ElasticBody& body, const SolveOptions& options) {
+    return body.model() == Model::linear ? solve_linear_cg(body, options) : solve_nonlinear_cg(body, options);
 }
 
 Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {

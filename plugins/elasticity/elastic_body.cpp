@@ -2,6 +2,7 @@
 #include "elastic_body.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -10,7 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "linear_tetrahedron.hpp"
+#include "element_kernels.hpp"
 
 namespace sxk::elasticity {
 namespace {
@@ -30,6 +31,11 @@ Lame lame(const Material& material) {
     return {e / (2 * (1 + nu)), e * nu / ((1 + nu) * (1 - 2 * nu))};
 }
 
+Lame plane_stress_lame(const Material& material) {
+    const Lame l = lame(material);
+    return {l.mu, 2 * l.mu * l.lambda / (l.lambda + 2 * l.mu)};
+}
+
 namespace detail {
 
 std::string material_problem(const Material& material) {
@@ -42,17 +48,23 @@ std::string material_problem(const Material& material) {
 
 }  // namespace detail
 
-Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material) {
-    if (mesh.topological_dimension() != 3 || mesh.ambient_dimension() != 3)
+Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material, BodyOptions options) {
+    const int dimension = mesh.topological_dimension();
+    if (dimension != mesh.ambient_dimension() || dimension < 2)
         return Refusal{RefusalCode::wrong_dimension,
-                       "elasticity: the mesh has " + std::to_string(mesh.topological_dimension()) +
-                           "-dimensional elements in " + std::to_string(mesh.ambient_dimension()) +
-                           "-dimensional space; linear tetrahedra need a tetrahedral mesh in space"};
+                       "elasticity: the mesh has " + std::to_string(dimension) + "-dimensional elements in " +
+                           std::to_string(mesh.ambient_dimension()) +
+                           "-dimensional space; the body needs tetrahedra in space or triangles in the plane"};
     if (const std::string problem = detail::material_problem(material); !problem.empty())
         return Refusal{RefusalCode::bad_argument, "elasticity: " + problem};
+    if (!(options.thickness > 0) || !std::isfinite(options.thickness))
+        return Refusal{RefusalCode::bad_argument,
+                       "elasticity: the thickness " + text(options.thickness) + " is not positive and finite"};
     ElasticBody body;
     body.m_mesh = &mesh;
     body.m_material = material;
+    body.m_options = options;
+    body.m_dimension = dimension;
     body.init(mesh);
     if (auto fresh = body.refresh(); !fresh) return fresh.refusal();
     return body;
@@ -83,6 +95,7 @@ Outcome<Done> ElasticBody::fix(VertexId v, Vector3 displacement) {
     if (auto ok = check_vertex(v, "fix"); !ok) return ok;
     if (!finite(displacement)) return Refusal{RefusalCode::bad_argument, "elasticity: fix: the displacement is not finite"};
     m_freedom[v] = Freedom::fixed;
+    if (m_dimension == 2) displacement[2] = 0;
     for (std::size_t k = 0; k < 3; ++k) m_u[static_cast<Eigen::Index>(3 * v + k)] = displacement[k];
     return Done{};
 }
@@ -93,7 +106,11 @@ Outcome<Done> ElasticBody::constrain_to_line(VertexId v, Vector3 direction, Vect
     if (!(length > 0) || !std::isfinite(length) || !finite(displacement))
         return Refusal{RefusalCode::bad_argument,
                        "elasticity: constrain_to_line: the direction is zero or not finite, or the displacement not finite"};
+    if (m_dimension == 2 && direction[2] != 0)
+        return Refusal{RefusalCode::bad_argument,
+                       "elasticity: constrain_to_line: a planar body's line must lie in the plane (direction z = 0)"};
     m_freedom[v] = Freedom::line;
+    if (m_dimension == 2) displacement[2] = 0;
     m_line[v] = {direction[0] / length, direction[1] / length, direction[2] / length};
     for (std::size_t k = 0; k < 3; ++k) m_u[static_cast<Eigen::Index>(3 * v + k)] = displacement[k];
     return Done{};
@@ -112,27 +129,33 @@ std::size_t ElasticBody::constrained_count() const {
 Outcome<Done> ElasticBody::add_force(VertexId v, Vector3 force) {
     if (auto ok = check_vertex(v, "add_force"); !ok) return ok;
     if (!finite(force)) return Refusal{RefusalCode::bad_argument, "elasticity: add_force: the force is not finite"};
+    if (m_dimension == 2) force[2] = 0;
     for (std::size_t k = 0; k < 3; ++k) m_force[static_cast<Eigen::Index>(3 * v + k)] += force[k];
     return Done{};
 }
 
 void ElasticBody::clear_forces() { m_force.setZero(); }
 
-void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const {
+template <class Kernel>
+bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const Kernel& kernel) const {
     const std::size_t count = m_elements.size();
+    const auto corner_count = static_cast<std::size_t>(m_dimension + 1);
     m_corner_forces.resize(12 * count);
+    m_element_energy.resize(count);
     // vertices beyond d (a rollback dropped them and no refresh followed) read as at rest
     const std::size_t vertices = static_cast<std::size_t>(d.size()) / 3;
+    std::atomic<bool> ok = true;
     using Range = tbb::blocked_range<std::size_t>;
     tbb::parallel_for(Range(0, count, 1024), [&](const Range& r) {
         for (std::size_t e = r.begin(); e != r.end(); ++e) {
             const ElementId t = m_elements[e];
             double corners[12];
-            for (std::size_t j = 0; j < 4; ++j) {
+            for (std::size_t j = 0; j < corner_count; ++j) {
                 const std::size_t v = m_corners[t][j];
                 for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = v < vertices ? d[static_cast<Eigen::Index>(3 * v + k)] : 0;
             }
-            detail::linear_tetrahedron_forces(m_rest[t], corners, m_corner_forces.data() + 12 * e);
+            if (!kernel(m_rest[t], corners, m_corner_forces.data() + 12 * e, m_element_energy[e]))
+                ok.store(false, std::memory_order_relaxed);
         }
     });
     out.setZero(d.size());
@@ -145,10 +168,49 @@ void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const
             out.segment<3>(3 * static_cast<Eigen::Index>(v)) = sum;
         }
     });
+    return ok.load();
+}
+
+void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const {
+    // the linear kernels do not need the element energy (1/2 d^T K_t d)
+    if (m_dimension == 3)
+        gather(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
+            detail::linear_element_forces<3>(rest, c, f);
+            return true;
+        });
+    else
+        gather(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
+            detail::linear_element_forces<2>(rest, c, f);
+            return true;
+        });
+}
+
+bool ElasticBody::elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+    if (m_options.model == Model::linear) {
+        multiply(u, out);
+        return true;
+    }
+    if (m_dimension == 3) return gather(u, out, detail::neo_hookean_forces<3>);
+    return gather(u, out, detail::neo_hookean_forces<2>);
+}
+
+double ElasticBody::strain_energy(const Eigen::VectorXd& u) const {
+    Eigen::VectorXd forces;
+    if (m_options.model == Model::linear) {
+        multiply(u, forces);
+        return 0.5 * u.dot(forces);
+    }
+    if (!elastic_forces(u, forces)) return std::numeric_limits<double>::infinity();
+    // in element order, serially: the same sum on any number of threads
+    double sum = 0;
+    for (const double e : m_element_energy) sum += e;
+    return sum;
 }
 
 void ElasticBody::project(Eigen::VectorXd& v) const {
     const std::size_t n = std::min(vertex_count(), static_cast<std::size_t>(v.size()) / 3);
+    if (m_dimension == 2)
+        for (std::size_t i = 0; i < n; ++i) v[static_cast<Eigen::Index>(3 * i + 2)] = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (m_freedom[i] == Freedom::free) continue;
         auto x = v.segment<3>(3 * static_cast<Eigen::Index>(i));
@@ -161,20 +223,18 @@ void ElasticBody::project(Eigen::VectorXd& v) const {
     }
 }
 
-double ElasticBody::energy() const {
-    Eigen::VectorXd ku;
-    multiply(m_u, ku);
-    return 0.5 * m_u.dot(ku) - m_force.dot(m_u);
-}
+double ElasticBody::energy() const { return strain_energy(m_u) - m_force.dot(m_u); }
 
 Eigen::Matrix<double, 12, 12> ElasticBody::element_stiffness(ElementId t) const {
     Eigen::Matrix<double, 12, 12> k = Eigen::Matrix<double, 12, 12>::Zero();
     if (!std::binary_search(m_elements.begin(), m_elements.end(), t)) return k;
     const detail::RestShape& rest = m_rest[t];
-    for (int column = 0; column < 12; ++column) {
+    const int size = 3 * (m_dimension + 1);
+    for (int column = 0; column < size; ++column) {
         double unit[12] = {};
         unit[column] = 1;
-        detail::linear_tetrahedron_forces(rest, unit, k.col(column).data());
+        if (m_dimension == 3) detail::linear_element_forces<3>(rest, unit, k.col(column).data());
+        else detail::linear_element_forces<2>(rest, unit, k.col(column).data());
     }
     return k;
 }

@@ -1,5 +1,7 @@
-// Linear elasticity on a tetrahedral mesh (thesis §3.1): the body, its constraints and loads,
-// and the matrix-free product with its stiffness matrix. The solvers are in solve.hpp.
+// Elasticity on a tetrahedral mesh in space or a triangle mesh in the plane (plane stress, thesis
+// §6.3): the body, its material model (linear, §3.1, or compressible neo-Hookean, §4.3.3), its
+// constraints and loads, the matrix-free product with its stiffness matrix and its elastic
+// forces. The solvers are in solve.hpp.
 //
 //     auto body = sxk::elasticity::ElasticBody::make(mesh, {.young = 1e6, .poisson = 0.25});
 //     body->fix(v);                        // u(v) = 0
@@ -43,14 +45,31 @@ struct Lame {
 };
 Lame lame(const Material& material);
 
+// The Lamé parameters of a thin slab in plane stress (thesis eq. 6.3): mu, and lambda replaced by
+// 2 mu lambda / (lambda + 2 mu) = E nu / (1 - nu^2).
+Lame plane_stress_lame(const Material& material);
+
+// The material model of a body.
+enum class Model : std::uint8_t {
+    linear,      // linear elasticity (§3.1; eq. 6.3 for triangles)
+    neohookean,  // compressible neo-Hookean (eq. 4.6; eq. 6.4's 2D analogue for triangles)
+};
+
+struct BodyOptions {
+    Model model = Model::linear;
+    // A triangle body's slab thickness (volume = area x thickness); ignored for tetrahedra.
+    double thickness = 1;
+};
+
 namespace detail {
-// What an element keeps of its rest shape: b_j = Z^-T e_j for corners j = 0, 1, 2 (the rows of
-// Z^-1, Z = (z0 - z3, z1 - z3, z2 - z3) as columns: the gradients of the corners' shape
-// functions; b_3 = -(b_0 + b_1 + b_2)), and the volume (linear_tetrahedron.hpp).
+// What an element keeps of its rest shape: b_j = Z^-T e_j for corners j < D (the rows of Z^-1,
+// Z = (z_0 - z_D, ..., z_{D-1} - z_D) as columns: the gradients of the corners' shape functions;
+// b_D = -(b_0 + ... + b_{D-1})), and the volume (a triangle's: area x thickness;
+// element_kernels.hpp).
 struct RestShape {
-    std::array<double, 9> gradient{};  // b_0, b_1, b_2, x y z each
+    std::array<double, 9> gradient{};  // b_0 .. b_{D-1}, x y z each (a triangle's: z and b_2 zero)
     double volume = 0;
-    Lame lame;  // the element's material
+    Lame lame;  // the element's material (a triangle's: in plane stress)
 };
 // Empty, or why `material` is out of range ("Poisson's ratio 0.5 is not in (-1, 0.5)").
 std::string material_problem(const Material& material);
@@ -68,7 +87,9 @@ inline constexpr const char* material_attribute = "elasticity.material";
 // directions onto the allowed motions, so a constrained vertex keeps its constraint exactly.
 enum class Freedom : std::uint8_t { free, fixed, line };
 
-// The body of a tetrahedral mesh. To follow edits of the mesh, attach it as a watcher
+// The body of a tetrahedral mesh in space, or of a triangle mesh in the plane: a thin slab in
+// plane stress (§6.3), whose vertices keep 3 unknowns with z held at 0 by project(), so that the
+// solvers, the constraints and the loads are the same for both. To follow edits of the mesh, attach it as a watcher
 // (mesh.add_watcher(body), or a ScopedWatcher) once it sits where it will stay: a body must not
 // be moved or copied while attached. It then keeps its state in step with the mesh (thesis §7.4):
 //
@@ -87,10 +108,11 @@ enum class Freedom : std::uint8_t { free, fixed, line };
 class ElasticBody : public Watcher {
 public:
     // `material` is every element's, except where the mesh's material_attribute says otherwise.
-    // Refuses a mesh that is not tetrahedral in space (wrong_dimension), a material out of range
-    // (bad_argument; an element's from the attribute: the element named), and an element whose
-    // rest volume is not positive (would_flatten: its stiffness is undefined).
-    static Outcome<ElasticBody> make(const Mesh& mesh, Material material);
+    // Refuses a mesh that is neither tetrahedral in space nor triangular in the plane
+    // (wrong_dimension), a material out of range or a thickness not positive and finite
+    // (bad_argument; an element's material from the attribute: the element named), and an
+    // element whose rest volume is not positive (would_flatten: its stiffness is undefined).
+    static Outcome<ElasticBody> make(const Mesh& mesh, Material material, BodyOptions options = {});
     // The values of material_attribute were set anew (no event says so): every element's
     // material is read again at the next refresh.
     void materials_changed();
@@ -112,17 +134,22 @@ public:
     void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) override;
 
     const Mesh& mesh() const { return *m_mesh; }
+    // 3 (tetrahedra in space) or 2 (triangles in the plane).
+    int dimension() const { return m_dimension; }
+    Model model() const { return m_options.model; }
+    double thickness() const { return m_options.thickness; }
     // The body's material: that of the elements the material attribute does not set.
     const Material& material() const { return m_material; }
     // Vertices of the body (the mesh's, as of the last event heard).
     std::size_t vertex_count() const { return m_freedom.size(); }
-    // 3 per vertex, x y z: the unknowns of the solvers.
+    // 3 per vertex, x y z (a planar body's z held at 0): the unknowns of the solvers.
     std::size_t dof_count() const { return 3 * vertex_count(); }
 
     // Constraints. fix: u(v) = displacement. constrain_to_line: u(v) = displacement + s * direction
     // for any s (direction not zero; it is normalised). free: no constraint (the default).
     // Refuse a vertex that is not in an element (not_found) and a zero or non-finite direction
-    // (bad_argument). Setting a constraint sets u(v) to the prescribed displacement.
+    // (bad_argument; in a planar body also a line out of the plane). Setting a constraint sets
+    // u(v) to the prescribed displacement. A planar body ignores the z of displacements and forces.
     Outcome<Done> fix(VertexId v, Vector3 displacement = {0, 0, 0});
     Outcome<Done> constrain_to_line(VertexId v, Vector3 direction, Vector3 displacement = {0, 0, 0});
     Outcome<Done> free(VertexId v);
@@ -144,13 +171,22 @@ public:
     const Eigen::VectorXd& displacements() const { return m_u; }
     const Eigen::VectorXd& forces() const { return m_force; }
 
-    // out = K d, the elastic forces of displacements d with their sign reversed (eq. 3.4 summed
-    // over the elements, eq. 3.5), without forming K; d and out have dof_count() entries (the
-    // vertices of an edit not refreshed yet get 0). Elements in parallel (TBB), the sums per
-    // vertex in a fixed order: the result does not depend on the number of threads. One call at
-    // a time per body (it writes the body's scratch buffer).
+    // out = K d, K the stiffness matrix of the linear model (of a neo-Hookean body: its tangent
+    // at rest), i.e. the linear elastic forces of displacements d with their sign reversed
+    // (eq. 3.4 summed over the elements, eq. 3.5), without forming K; d and out have dof_count()
+    // entries (the vertices of an edit not refreshed yet get 0). Elements in parallel (TBB), the
+    // sums per vertex in a fixed order: the result does not depend on the number of threads.
+    // One call at a time per body (it writes the body's scratch buffers; so do the two below).
     void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
-    // Projects v onto the motions the constraints allow (P_W of §6.6), in place.
+    // out = the gradient of the strain energy at displacements u, the elastic forces with their
+    // sign reversed, in the body's model (linear: K u). False, out unspecified, when u inverts or
+    // flattens an element (neo-Hookean only: its energy is infinite there).
+    bool elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
+    // The strain energy of displacements u in the body's model (linear: 1/2 u^T K u); infinity
+    // when u inverts or flattens an element of a neo-Hookean body.
+    double strain_energy(const Eigen::VectorXd& u) const;
+    // Projects v onto the motions the constraints allow (P_W of §6.6; a planar body's z is 0
+    // everywhere), in place.
     void project(Eigen::VectorXd& v) const;
     // Writes reference + u as the deformed positions of every vertex in an element, by one
     // Mesh::move_vertices (watchers such as a SpatialIndex over deformed positions hear one
@@ -160,14 +196,15 @@ public:
     // element named): a solution that turns an element inside out is no shape to show or cut.
     Outcome<Done> write_deformed(Mesh& mesh) const;
 
-    // The potential energy 1/2 u^T K u - f^T u of the current displacements.
+    // The potential energy strain_energy(u) - f^T u of the current displacements.
     double energy() const;
     // The diameter of the rest shape (the diagonal of its bounding box): H of eq. 6.9.
     double diameter() const { return m_diameter; }
 
     // The stiffness of one element: the 12 x 12 matrix K_t with K_t d_t = the element's share of
-    // K d, vertices in the element's canonical order (for the assembled reference solver); zero
-    // for an id that is not one of elements().
+    // K d, vertices in the element's canonical order (for the assembled reference solver; a
+    // triangle's fills the first 9 rows and columns); zero for an id that is not one of
+    // elements().
     Eigen::Matrix<double, 12, 12> element_stiffness(ElementId t) const;
     // The live elements, in increasing id order (as of the last refresh).
     std::span<const ElementId> elements() const { return m_elements; }
@@ -182,14 +219,21 @@ private:
     void take_element(const Mesh& mesh, ElementId element);
     void interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added);
     void rebuild_elements_and_stars();
+    // Calls kernel(element, corner displacements, out) for every element in parallel, each
+    // writing 3 per corner into m_corner_forces (and its energy into m_element_energy), then sums
+    // the corners per vertex into out; false when a kernel returned false.
+    template <class Kernel>
+    bool gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const Kernel& kernel) const;
 
     const Mesh* m_mesh = nullptr;
     Material m_material;
+    BodyOptions m_options;
+    int m_dimension = 3;
     double m_largest_young = 0;
     double m_diameter = 0;
     // the live elements in increasing id order, as of the last refresh
     std::vector<ElementId> m_elements;
-    // per element id: the rest shape (linear_tetrahedron.hpp) and the vertices it was computed
+    // per element id: the rest shape (element_kernels.hpp) and the vertices it was computed
     // for (the product reads them here, 16 bytes in a row, instead of the mesh's records)
     std::vector<detail::RestShape> m_rest;
     std::vector<std::array<VertexId, 4>> m_corners;
@@ -198,7 +242,8 @@ private:
     std::vector<Freedom> m_freedom;
     std::vector<Vector3> m_line;  // the unit direction of a line constraint
     Eigen::VectorXd m_u, m_force;
-    mutable std::vector<double> m_corner_forces;  // 12 per entry of m_elements
+    mutable std::vector<double> m_corner_forces;  // 12 per entry of m_elements (a triangle's: 9 used)
+    mutable std::vector<double> m_element_energy; // per entry of m_elements
 
     // what the events recorded for the next refresh
     bool m_stale = false;

@@ -9,25 +9,34 @@
 #include <Eigen/Dense>
 
 #include "elastic_body.hpp"
-#include "linear_tetrahedron.hpp"
+#include "element_kernels.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk::elasticity {
 namespace {
 
-// x in barycentric coordinates of tetrahedron s (reference positions); nullopt when s is flat
-// or x is outside it by more than a rounding error.
+// x in barycentric coordinates of the simplex s of dimension D (reference positions; corners
+// beyond D get 0); nullopt when s is flat or x is outside it by more than a rounding error.
+template <int D>
 std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, const Point& x) {
-    const Point& origin = mesh.reference(s.vertex(3));
-    const Eigen::FullPivLU<Eigen::Matrix3d> lu(detail::edge_matrix(mesh, s));
+    const Point& origin = mesh.reference(s.vertex(D));
+    const Eigen::FullPivLU<Eigen::Matrix<double, D, D>> lu(detail::edge_matrix<D>(mesh, s));
     if (!lu.isInvertible()) return std::nullopt;
-    const Eigen::Vector3d w = lu.solve(Eigen::Vector3d(x[0] - origin[0], x[1] - origin[1], x[2] - origin[2]));
-    const std::array<double, 4> b{w[0], w[1], w[2], 1 - w[0] - w[1] - w[2]};
+    Eigen::Matrix<double, D, 1> offset;
+    for (int k = 0; k < D; ++k) offset[k] = x[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
+    const Eigen::Matrix<double, D, 1> w = lu.solve(offset);
+    std::array<double, 4> b{};
+    for (int j = 0; j < D; ++j) b[static_cast<std::size_t>(j)] = w[j];
+    b[D] = 1 - w.sum();
     constexpr double slack = 1e-9;
     for (const double bj : b)
         if (!(bj >= -slack)) return std::nullopt;
     return b;
+}
+
+std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, const Point& x) {
+    return s.count() == 4 ? inside<3>(mesh, s, x) : inside<2>(mesh, s, x);
 }
 
 }  // namespace
@@ -94,7 +103,7 @@ void ElasticBody::interpolate_new_vertex(const Mesh& mesh, VertexId v, const Sim
         for (int j = 0; j < was.count(); ++j) usable = usable && was.vertex(j) < vertex_count() && m_known[was.vertex(j)];
         if (!usable) continue;
         if (const auto b = inside(mesh, was, x)) {
-            for (int j = 0; j < 4; ++j) u += (*b)[static_cast<std::size_t>(j)] * m_u.segment<3>(3 * static_cast<Eigen::Index>(was.vertex(j)));
+            for (int j = 0; j < was.count(); ++j) u += (*b)[static_cast<std::size_t>(j)] * m_u.segment<3>(3 * static_cast<Eigen::Index>(was.vertex(j)));
             found = true;
             break;
         }
@@ -137,7 +146,9 @@ Outcome<Done> ElasticBody::refresh() {
                                "elasticity: element " + std::to_string(t) + " (" + material_attribute + "): " + problem, t};
         }
         const Simplex& s = mesh.simplex(t);
-        const detail::RestShape rest = detail::rest_shape(detail::edge_matrix(mesh, s));
+        const detail::RestShape rest = m_dimension == 3
+                                           ? detail::rest_shape<3>(detail::edge_matrix<3>(mesh, s), thickness())
+                                           : detail::rest_shape<2>(detail::edge_matrix<2>(mesh, s), thickness());
         // flat by the exact predicate, or so thin that its volume rounds to zero in doubles (a
         // sliver of random moves did: exact orientation positive, determinant 0)
         const bool finite = std::all_of(rest.gradient.begin(), rest.gradient.end(), [](double g) { return std::isfinite(g); });
@@ -145,15 +156,17 @@ Outcome<Done> ElasticBody::refresh() {
             return Refusal{RefusalCode::would_flatten,
                            "elasticity: element " + std::to_string(t) + " is flat at rest (its stiffness is undefined)", t};
         m_rest[t] = rest;
-        m_rest[t].lame = lame(material);
-        for (int j = 0; j < 4; ++j) m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
+        m_rest[t].lame = m_dimension == 3 ? lame(material) : plane_stress_lame(material);
+        m_corners[t].fill(invalid_id);
+        for (int j = 0; j < s.count(); ++j) m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
     }
     rebuild_elements_and_stars();
-    // E of eq. 6.9: the stiffest element's (2 mu (1 + nu) = E); the body's without elements
+    // E of eq. 6.9: the stiffest element's (2 mu (1 + nu) = E; in plane stress nu = lambda /
+    // (lambda + 2 mu)); the body's without elements
     m_largest_young = m_elements.empty() ? m_material.young : 0;
     for (const ElementId t : m_elements) {
         const Lame& l = m_rest[t].lame;
-        const double nu = l.lambda / (2 * (l.lambda + l.mu));
+        const double nu = m_dimension == 3 ? l.lambda / (2 * (l.lambda + l.mu)) : l.lambda / (l.lambda + 2 * l.mu);
         m_largest_young = std::max(m_largest_young, 2 * l.mu * (1 + nu));
     }
     m_dirty.clear();
@@ -173,8 +186,10 @@ void ElasticBody::rebuild_elements_and_stars() {
     low.fill(std::numeric_limits<double>::infinity());
     high.fill(-std::numeric_limits<double>::infinity());
     m_star_begin.assign(n + 1, 0);
+    const auto corner_count = static_cast<std::size_t>(m_dimension + 1);
     for (const ElementId t : m_elements)
-        for (const VertexId v : m_corners[t]) {
+        for (std::size_t j = 0; j < corner_count; ++j) {
+            const VertexId v = m_corners[t][j];
             ++m_star_begin[v + 1];
             for (std::size_t k = 0; k < 3; ++k) {
                 low[k] = std::min(low[k], mesh.reference(v)[k]);
@@ -185,7 +200,7 @@ void ElasticBody::rebuild_elements_and_stars() {
     m_star.resize(m_star_begin[n]);
     std::vector<std::uint32_t> next(m_star_begin.begin(), m_star_begin.end() - 1);
     for (std::size_t e = 0; e < m_elements.size(); ++e)
-        for (std::size_t j = 0; j < 4; ++j)
+        for (std::size_t j = 0; j < corner_count; ++j)
             m_star[next[m_corners[m_elements[e]][j]]++] = static_cast<std::uint32_t>(4 * e + j);
     m_diameter = m_elements.empty() ? 0
                                     : std::sqrt((high[0] - low[0]) * (high[0] - low[0]) +

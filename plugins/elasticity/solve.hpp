@@ -1,6 +1,7 @@
-// Static solves of an ElasticBody (elastic_body.hpp): the matrix-free conjugate gradient of
-// thesis §2.4.1 and §3.1 with the constraints projected out (§6.6), and the assembled reference
-// (Eigen's sparse matrix and its ConjugateGradient) that tests and benchmarks compare it with.
+// Static solves of an ElasticBody (elastic_body.hpp): the matrix-free linear conjugate gradient
+// of thesis §2.4.1 and §3.1 and the nonlinear CG of §2.4.2 (for neo-Hookean bodies) with the
+// constraints projected out (§6.6), and the assembled reference (Eigen's sparse matrix and its
+// ConjugateGradient) that tests and benchmarks compare the linear one with.
 #pragma once
 
 #include <cstddef>
@@ -28,16 +29,23 @@ struct SolveOptions {
     StopCriterion stop = StopCriterion::with_reactions;
     double rounding = 1e-12;      // epsilon_round of eq. 6.9
     std::size_t recompute_every = 50;  // r = P(f - K u) afresh every so many steps (drift)
+    // Nonlinear CG: the line search along d stops when |d . r(u + alpha d)| <= this times
+    // |d . r(u)| (the thesis' epsilon_newton, §4.5: 0.1 worked best), or after
+    // line_search_steps secant steps.
+    double line_search_tolerance = 0.1;
+    std::size_t line_search_steps = 20;
 };
 
 struct SolveReport {
-    std::size_t iterations = 0;  // matrix-vector products after the first residual
+    std::size_t iterations = 0;  // CG steps (linear: matrix-vector products after the first residual)
+    // passes over the elements (products or force evaluations), the first residual's included
+    std::size_t evaluations = 0;
     bool converged = false;
     double residual = 0;   // ||r|| at the end (r projected onto the allowed motions)
     double threshold = 0;  // what ||r|| had to reach
     std::vector<double> history;  // ||r|| before each iteration and at the end
     double seconds = 0;  // in the solver (LinearRelaxation: in run, summed over its calls)
-    double energy = 0;  // 1/2 u^T K u - f^T u at the end
+    double energy = 0;  // the potential energy at the end (ElasticBody::energy)
 };
 
 // Minimises the potential energy over the displacements the constraints allow, by linear CG
@@ -77,6 +85,40 @@ private:
     bool m_stalled = false;
 };
 
+// Minimises the potential energy of a body of any model (neo-Hookean: strain energy of eq. 4.6
+// minus f^T u) by nonlinear CG (§2.4.2): Polak-Ribière directions (eq. 2.49) restarted when they
+// stop descending, a secant line search on d . r (the thesis' Newton search without the tangent
+// stiffness; the first step from the stiffness at rest), steps that would invert an element
+// halved. Refuses as solve_linear_cg, and with would_invert when the starting displacements
+// already invert an element. For a linear body it finds what solve_linear_cg finds, in about
+// twice the passes over the elements.
+Outcome<SolveReport> solve_nonlinear_cg(ElasticBody& body, const SolveOptions& options = {});
+
+// The same a few iterations at a time (see LinearRelaxation).
+class NonlinearRelaxation {
+public:
+    static Outcome<NonlinearRelaxation> start(ElasticBody& body, const SolveOptions& options = {});
+    bool run(std::size_t iterations);
+    bool done() const;
+    SolveReport report() const;
+
+private:
+    NonlinearRelaxation(ElasticBody& body, const SolveOptions& options) : m_body(&body), m_options(options) {}
+    // r = P(f - g(u)) at u + alpha d; false when that inverts an element
+    bool residual_at(double alpha, Eigen::VectorXd& r);
+    double line_search();
+
+    ElasticBody* m_body;
+    SolveOptions m_options;
+    SolveReport m_report;
+    Eigen::VectorXd m_r, m_d, m_trial, m_g, m_q;
+    double m_rr = 0;
+    bool m_stalled = false;
+};
+
+// The solver of the body's model: solve_linear_cg for linear bodies, solve_nonlinear_cg else.
+Outcome<SolveReport> solve(ElasticBody& body, const SolveOptions& options = {});
+
 // K as an Eigen sparse matrix (3 rows and columns per vertex), summed from element_stiffness.
 Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body);
 
@@ -89,8 +131,8 @@ namespace detail {
 // What both solvers check first: some vertex is constrained (else bad_argument: K is singular),
 // and the body is in step with its mesh (ElasticBody::refresh).
 Outcome<Done> prepare_solve(ElasticBody& body);
-// The stop threshold of `options` in the current state, K u being `ku` (the reactions are
-// computed only for the criterion that uses them).
+// The stop threshold of `options` in the current state, the elastic forces (K u) being `ku` (the
+// reactions are computed only for the criterion that uses them).
 double stop_threshold(const ElasticBody& body, const SolveOptions& options, const Eigen::VectorXd& ku);
 }  // namespace detail
 

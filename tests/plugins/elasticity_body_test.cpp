@@ -281,16 +281,27 @@ TEST(ElasticityBody, RelaxationInStepsIsTheSolve) {
 }
 
 TEST(ElasticityBody, RefusesWhatItCannotSolve) {
+    Mesh surface(2, 3);
+    surface.add_vertex({0, 0, 0});
+    surface.add_vertex({1, 0, 0});
+    surface.add_vertex({0, 1, 1});
+    ASSERT_TRUE(surface.assign_elements(std::vector<Simplex>{Simplex(1, {0, 1, 2})}).ok());
+    auto curved = ElasticBody::make(surface, {});
+    EXPECT_EQ(curved.code(), RefusalCode::wrong_dimension);
+    EXPECT_EQ(curved.reason(),
+              "elasticity: the mesh has 2-dimensional elements in 3-dimensional space; the body needs tetrahedra in "
+              "space or triangles in the plane");
     Mesh triangles(2, 2);
     triangles.add_vertex({0, 0, 0});
     triangles.add_vertex({1, 0, 0});
     triangles.add_vertex({0, 1, 0});
     ASSERT_TRUE(triangles.assign_elements(std::vector<Simplex>{Simplex(1, {0, 1, 2})}).ok());
+    EXPECT_EQ(ElasticBody::make(triangles, {}, {.thickness = 0}).reason(),
+              "elasticity: the thickness 0 is not positive and finite");
     auto planar = ElasticBody::make(triangles, {});
-    EXPECT_EQ(planar.code(), RefusalCode::wrong_dimension);
-    EXPECT_EQ(planar.reason(),
-              "elasticity: the mesh has 2-dimensional elements in 2-dimensional space; linear tetrahedra need a "
-              "tetrahedral mesh in space");
+    ASSERT_TRUE(planar.ok()) << planar.reason();
+    EXPECT_EQ(planar->constrain_to_line(0, {0, 1, 1}).reason(),
+              "elasticity: constrain_to_line: a planar body's line must lie in the plane (direction z = 0)");
 
     const Mesh mesh = unit_cube(2);
     EXPECT_EQ(ElasticBody::make(mesh, {.young = 0}).reason(), "elasticity: Young's modulus 0 is not positive and finite");
