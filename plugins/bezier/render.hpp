@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "image.hpp"
 #include "patch_scene.hpp"
 
 namespace sxk::bezier {
@@ -32,10 +33,8 @@ struct Shading {
     std::function<Colour(const SceneHit&)> colour;
 };
 
-struct Image {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> rgb;  // row-major from the top-left, 3 bytes per pixel
-};
+using pictures::Image;
+using pictures::write_png;
 
 // The primary ray through the centre of pixel (x, y), (0, 0) at the top-left; unit direction.
 Ray primary_ray(const Camera& camera, int width, int height, int x, int y);
@@ -44,8 +43,5 @@ Image render(const Scene& scene, const Camera& camera, int width, int height,
              const Shading& shading = {});
 // 1 where the primary ray hits, 0 where it misses (row-major from the top-left).
 std::vector<std::uint8_t> hit_mask(const Scene& scene, const Camera& camera, int width, int height);
-
-// Throws std::runtime_error naming the file when it cannot be written.
-void write_png(const std::filesystem::path& path, const Image& image);
 
 }  // namespace sxk::bezier

@@ -1,8 +1,10 @@
-// `sxk deform IN OUT`: a static solve of a tetrahedral mesh under selected constraints and loads,
-// OUT holding the deformed positions (docs/cli.md "sxk deform").
+// `sxk deform IN OUT`: a static solve of a tetrahedral mesh, or of a triangle mesh in plane stress,
+// under selected constraints and loads, OUT holding the deformed positions (docs/cli.md
+// "sxk deform").
 #include "deform_command.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +14,8 @@
 
 #include "command_line.hpp"
 #include "elastic_body.hpp"
+#include "line_plot.hpp"
+#include "load_shares.hpp"
 #include "solve.hpp"
 #include "vertex_selector.hpp"
 
@@ -22,8 +26,9 @@ struct Options {
     std::string input, output;
     ReadOptions reading;
     std::vector<std::string> fix, force, displace;
-    std::string material = "linear";
+    std::string material = "linear", share = "equal", plot;
     double young = 1e6, poisson = 0.25, tolerance = 1e-6;
+    std::optional<double> thickness;
     std::size_t max_iterations = 100000;
     bool json = false;
 };
@@ -36,19 +41,30 @@ struct Selected {
 
 std::optional<Options> parse(std::span<const std::string> args, std::ostream& out, std::ostream& err, int& code) {
     Options o;
-    CLI::App app("Deforms a tetrahedral mesh by linear elasticity (thesis 3.1): fixed and displaced vertices, "
-                 "nodal loads, matrix-free conjugate gradients; OUT holds the deformed positions",
+    CLI::App app("Deforms a tetrahedral mesh, or a triangle mesh in the plane as a slab in plane stress, by linear "
+                 "or neo-Hookean elasticity (thesis 3.1, 4.3.3, 6.3): fixed and displaced vertices, loads, "
+                 "matrix-free linear or nonlinear conjugate gradients; OUT holds the deformed positions",
                  "sxk deform");
-    app.add_option("IN", o.input, "Input mesh file (tetrahedra)")->required();
+    app.add_option("IN", o.input, "Input mesh file (tetrahedra in space or triangles in the plane)")->required();
     app.add_option("OUT", o.output, "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
         ->required();
     app.add_option("--fix", o.fix, "Vertices held in place: a selector such as 'x<0.001', 'label=2&boundary' (repeatable)");
     app.add_option("--displace", o.displace, "Vertices moved by a prescribed displacement: 'EXPR:DX,DY,DZ' (repeatable)");
     app.add_option("--force", o.force,
-                   "A total force on the selected vertices, shared equally among them: 'EXPR:FX,FY,FZ' (repeatable)");
-    app.add_option("--material", o.material, "Material model (neohookean is not built yet)")
+                   "A total force on the selected vertices, shared among them as --share says: 'EXPR:FX,FY,FZ' "
+                   "(repeatable)");
+    app.add_option("--share", o.share,
+                   "How a --force is shared: equal (the same part each) or area (by the boundary area around each "
+                   "vertex: a uniform traction on the selected boundary)")
+        ->check(CLI::IsMember({"equal", "area"}))
+        ->capture_default_str();
+    app.add_option("--material", o.material,
+                   "Material model: linear (small strains) or neohookean (compressible neo-Hookean, large strains, "
+                   "nonlinear CG)")
         ->check(CLI::IsMember({"linear", "neohookean"}))
         ->capture_default_str();
+    app.add_option("--thickness", o.thickness, "Slab thickness of a triangle mesh in plane stress, > 0 (default 1)")
+        ->check(number_in(0, false, 1e300, true, "(0, 1e300]"));
     app.add_option("--E,--young", o.young, "Young's modulus, > 0")->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
         ->capture_default_str();
     app.add_option("--nu,--poisson", o.poisson, "Poisson's ratio, -1 < nu < 0.5")
@@ -62,6 +78,7 @@ std::optional<Options> parse(std::span<const std::string> args, std::ostream& ou
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
         ->capture_default_str();
     app.add_flag("--json", o.json, "Print one JSON object (with the residual history) instead of the summary");
+    app.add_option("--plot", o.plot, "Also draw the convergence (residual per iteration, log scale) to this PNG file");
     add_read_options(app, o.reading);
     if (const std::optional<int> done = parse_command_line(app, args, "deform", out, err)) {
         code = *done;
@@ -119,7 +136,8 @@ std::optional<std::vector<Selected>> parse_all(const std::string& option, const 
 }  // namespace
 
 std::string_view DeformCommand::summary() const {
-    return "deform a tetrahedral mesh by linear elasticity: fixed vertices, loads, CG (thesis 3.1)";
+    return "deform a tetrahedral or planar triangle mesh by linear or neo-Hookean elasticity: fixed vertices, loads, "
+           "CG (thesis 3.1, 4.3.3, 6.3)";
 }
 
 int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
@@ -127,10 +145,6 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const std::optional<Options> options = parse(args, out, err, code);
     if (!options) return code;
     const Options& o = *options;
-    if (o.material != "linear") {
-        err << "sxk: deform: --material " << o.material << " is not built yet; only linear is\n";
-        return 2;
-    }
     const auto fixes = parse_all("--fix", o.fix, false, err);
     const auto displaces = parse_all("--displace", o.displace, true, err);
     const auto forces = parse_all("--force", o.force, true, err);
@@ -144,13 +158,22 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         err << "sxk: " << o.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
         return 2;
     }
-    std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
-    if (!mesh) return 2;
-    if (mesh->topological_dimension() != 3) {
-        err << "sxk: " << o.input << ":0: deform needs a tetrahedral mesh (plane stress for triangles is not built yet)\n";
+    if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {
+        err << "sxk: deform: --plot " << o.plot << ": the plot is a PNG picture; name it *.png\n";
         return 2;
     }
-    auto body = ElasticBody::make(*mesh, {.young = o.young, .poisson = o.poisson});
+    std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
+    if (!mesh) return 2;
+    const bool planar = mesh->topological_dimension() == 2 && mesh->ambient_dimension() == 2;
+    if (o.thickness && !planar) {
+        err << "sxk: deform: --thickness is for triangle meshes in the plane (plane stress); " << o.input
+            << " has " << mesh->topological_dimension() << "-dimensional elements in "
+            << mesh->ambient_dimension() << "-dimensional space\n";
+        return 2;
+    }
+    const Model model = o.material == "linear" ? Model::linear : Model::neohookean;
+    auto body = ElasticBody::make(*mesh, {.young = o.young, .poisson = o.poisson},
+                                  {.model = model, .thickness = o.thickness.value_or(1.0)});
     if (!body) {
         err << "sxk: " << o.input << ":0: " << body.reason() << '\n';
         return 2;
@@ -179,19 +202,49 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     for (const Selected& s : *forces) {
         const auto vertices = select("--force", s);
         if (!vertices) return 2;
-        const double share = 1.0 / static_cast<double>(vertices->size());
-        for (const VertexId v : *vertices)
-            (void)body->add_force(v, {s.vector[0] * share, s.vector[1] * share, s.vector[2] * share});
+        const auto parts = load_shares(*mesh, *vertices, o.share == "area" ? Share::area : Share::equal);
+        if (!parts) {
+            err << "sxk: deform: --force '" << s.selector.text << "' --share area: " << parts.reason() << '\n';
+            return 2;
+        }
+        for (std::size_t i = 0; i < vertices->size(); ++i) {
+            const double part = (*parts)[i];
+            (void)body->add_force((*vertices)[i], {s.vector[0] * part, s.vector[1] * part, s.vector[2] * part});
+        }
         loaded += vertices->size();
     }
-    const auto report = solve_linear_cg(*body, {.tolerance = o.tolerance, .max_iterations = o.max_iterations});
+    const auto report = solve(*body, {.tolerance = o.tolerance, .max_iterations = o.max_iterations});
     if (!report) {
         err << "sxk: " << o.input << ":0: " << report.reason() << '\n';
         return 2;
     }
+    if (!o.plot.empty()) {
+        // drawn before the verdict: a solve that did not converge is the one worth looking at
+        pictures::Plot plot;
+        plot.title = (model == Model::linear ? "linear CG, " : "nonlinear CG, ") +
+                     std::filesystem::path(o.input).filename().string();
+        plot.x_label = "iteration";
+        plot.y_label = "|r| (projected residual)";
+        plot.log_y = true;
+        pictures::Series residual;
+        residual.label = "|r|";
+        for (std::size_t i = 0; i < report->history.size(); ++i) {
+            residual.x.push_back(static_cast<double>(i));
+            residual.y.push_back(report->history[i]);
+        }
+        plot.series.push_back(std::move(residual));
+        plot.levels.push_back({"stop threshold", report->threshold});
+        try {
+            pictures::write_png(o.plot, pictures::draw(plot));
+        } catch (const std::exception& e) {
+            err << "sxk: " << e.what() << '\n';
+            return 1;
+        }
+    }
     if (!report->converged) {
-        err << "sxk: " << o.input << ":0: CG did not converge in " << report->iterations << " iterations (|r| = "
-            << report->residual << ", needed " << report->threshold << "); nothing written\n";
+        err << "sxk: " << o.input << ":0: " << (model == Model::linear ? "CG" : "nonlinear CG")
+            << " did not converge in " << report->iterations << " iterations (|r| = " << report->residual
+            << ", needed " << report->threshold << "); nothing written\n";
         return 1;
     }
     if (auto written = body->write_deformed(*mesh); !written) {
@@ -214,11 +267,14 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         json["file"] = o.input;
         json["output"] = o.output;
         json["material"] = {{"model", o.material}, {"young", o.young}, {"poisson", o.poisson}};
+        if (planar) json["thickness"] = body->thickness();
+        json["share"] = o.share;
         json["elements"] = mesh->element_count();
         json["fixed"] = body->constrained_count();
         json["loaded"] = loaded;
         json["tolerance"] = o.tolerance;
         json["iterations"] = report->iterations;
+        json["evaluations"] = report->evaluations;
         json["converged"] = report->converged;
         json["residual"] = report->residual;
         json["threshold"] = report->threshold;
@@ -229,9 +285,9 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         json["history"] = report->history;
         out << json.dump(2) << '\n';
     } else {
-        out << o.input << " -> " << o.output << ": " << mesh->element_count() << " tetrahedra, "
+        out << o.input << " -> " << o.output << ": " << mesh->element_count() << (planar ? " triangles, " : " tetrahedra, ")
             << body->constrained_count() << " vertices held, " << loaded << " loaded\n"
-            << "CG: " << report->iterations << " iterations, |r| " << report->residual << " <= " << report->threshold
+            << (model == Model::linear ? "CG: " : "nonlinear CG: ") << report->iterations << " iterations, |r| " << report->residual << " <= " << report->threshold
             << ", energy " << report->energy << ", " << report->seconds << " s\n"
             << "largest displacement " << largest_norm << " at vertex " << largest << '\n';
     }

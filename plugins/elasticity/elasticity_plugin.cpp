@@ -20,4 +20,5 @@ private:
 }  // namespace
 }  // namespace sxk::elasticity
 
-SXK_PLUGIN(elasticity, sxk::elasticity::ElasticityPlugin, "0.1.0", "linear elasticity: matrix-free CG on tetrahedral meshes; sxk deform");
+SXK_PLUGIN(elasticity, sxk::elasticity::ElasticityPlugin, "0.2.0",
+           "linear and neo-Hookean elasticity: matrix-free CG on tetrahedra and plane-stress triangles; sxk deform");

@@ -1,5 +1,5 @@
-// PNG output through libpng's simplified API (render.hpp): 8-bit RGB, no colour management beyond
-// the sRGB bytes render() produces; encoded in memory and written atomically.
+// PNG output through libpng's simplified API (image.hpp): 8-bit RGB, no colour management beyond
+// the sRGB bytes the image holds; encoded in memory and written atomically.
 #include <png.h>
 
 #include <stdexcept>
@@ -7,10 +7,10 @@
 #include <string_view>
 #include <vector>
 
-#include "render.hpp"
+#include "image.hpp"
 #include "sxk/atomic_write.hpp"
 
-namespace sxk::bezier {
+namespace sxk::pictures {
 
 void write_png(const std::filesystem::path& path, const Image& image) {
     const std::string name = path.string();
@@ -44,4 +44,4 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), size));
 }
 
-}  // namespace sxk::bezier
+}  // namespace sxk::pictures
