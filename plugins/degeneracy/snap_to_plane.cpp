@@ -83,6 +83,17 @@ std::string text(double x) {
 
 }  // namespace
 
+Plane plane_through_centre(const Mesh& mesh, const Point& normal) {
+    if (mesh.vertex_count() == 0) return {{0, 0, 0}, normal};
+    Point low = mesh.reference(0), high = low;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        for (std::size_t k = 0; k < 3; ++k) {
+            low[k] = std::min(low[k], mesh.reference(v)[k]);
+            high[k] = std::max(high[k], mesh.reference(v)[k]);
+        }
+    return {{(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2}, normal};
+}
+
 double mean_edge_length(const Mesh& mesh) {
     // each edge once: its sorted vertex pair packed into 64 bits, sorted and made unique (about
     // 7 pairs per tetrahedron: 1.5M for the 213k-tet femur, sorted in well under a second)

@@ -33,6 +33,11 @@ struct SnapReport {
     double mean_edge_length = 0;    // of the mesh before snapping (reference positions)
 };
 
+// The plane through the centre of the bounding box of the mesh's vertices (reference positions)
+// with the given normal: how the tests and benchmarks place their snap planes on real meshes
+// (the femur's: normal {0.3, 1, 0.12}, along the bone, not axis aligned).
+Plane plane_through_centre(const Mesh& mesh, const Point& normal);
+
 // Mean edge length of the mesh in the reference positions (each edge counted once).
 double mean_edge_length(const Mesh& mesh);
 

@@ -29,6 +29,8 @@ struct Options {
     std::string material = "linear", share = "equal", plot;
     double young = 1e6, poisson = 0.25, tolerance = 1e-6;
     std::optional<double> thickness;
+    std::string gravity;
+    double density = 1000;
     std::size_t max_iterations = 100000;
     bool json = false;
 };
@@ -57,6 +59,12 @@ std::optional<Options> parse(std::span<const std::string> args, std::ostream& ou
                    "How a --force is shared: equal (the same part each) or area (by the boundary area around each "
                    "vertex: a uniform traction on the selected boundary)")
         ->check(CLI::IsMember({"equal", "area"}))
+        ->capture_default_str();
+    app.add_option("--gravity", o.gravity,
+                   "An acceleration on every element's mass, 'GX,GY,GZ' (m/s^2, e.g. 0,-9.8,0): each element's weight "
+                   "shared equally by its corners");
+    app.add_option("--density", o.density, "Mass per volume for --gravity (kg/m^3)")
+        ->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
         ->capture_default_str();
     app.add_option("--material", o.material,
                    "Material model: linear (small strains) or neohookean (compressible neo-Hookean, large strains, "
@@ -149,6 +157,21 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const auto displaces = parse_all("--displace", o.displace, true, err);
     const auto forces = parse_all("--force", o.force, true, err);
     if (!fixes || !displaces || !forces) return 2;
+    Vector3 gravity{0, 0, 0};
+    if (!o.gravity.empty()) {
+        const auto numbers = parse_number_list(o.gravity);
+        if (const std::string* why = std::get_if<std::string>(&numbers)) {
+            err << "sxk: deform: --gravity '" << o.gravity << "': " << *why << '\n';
+            return 2;
+        }
+        const auto& list = std::get<std::vector<double>>(numbers);
+        if (list.size() != 3) {
+            err << "sxk: deform: --gravity '" << o.gravity << "': expected three numbers GX,GY,GZ, found " << list.size()
+                << '\n';
+            return 2;
+        }
+        gravity = {list[0], list[1], list[2]};
+    }
     if (fixes->empty() && displaces->empty()) {
         err << "sxk: deform: nothing holds the body (no --fix or --displace), so it can move freely and the problem "
                "is singular; fix at least three non-collinear vertices of every connected part\n";
@@ -211,7 +234,13 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
             const double part = (*parts)[i];
             (void)body->add_force((*vertices)[i], {s.vector[0] * part, s.vector[1] * part, s.vector[2] * part});
         }
-        loaded += vertices->size();
+    }
+    if (!o.gravity.empty()) {
+        (void)body->add_body_force({o.density * gravity[0], o.density * gravity[1], o.density * gravity[2]});
+    }
+    for (VertexId v = 0; v < body->vertex_count(); ++v) {
+        const Vector3 f = body->force(v);
+        loaded += f[0] != 0 || f[1] != 0 || f[2] != 0;
     }
     const auto report = solve(*body, {.tolerance = o.tolerance, .max_iterations = o.max_iterations});
     if (!report) {

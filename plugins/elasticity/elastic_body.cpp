@@ -134,6 +134,19 @@ Outcome<Done> ElasticBody::add_force(VertexId v, Vector3 force) {
     return Done{};
 }
 
+Outcome<Done> ElasticBody::add_body_force(Vector3 per_volume) {
+    if (!finite(per_volume)) return Refusal{RefusalCode::bad_argument, "elasticity: add_body_force: the force is not finite"};
+    if (auto fresh = refresh(); !fresh) return fresh;
+    if (m_dimension == 2) per_volume[2] = 0;
+    const auto corner_count = static_cast<std::size_t>(m_dimension + 1);
+    for (const ElementId t : m_elements) {
+        const double part = m_rest[t].volume / static_cast<double>(corner_count);
+        for (std::size_t j = 0; j < corner_count; ++j)
+            for (std::size_t k = 0; k < 3; ++k) m_force[static_cast<Eigen::Index>(3 * m_corners[t][j] + k)] += part * per_volume[k];
+    }
+    return Done{};
+}
+
 void ElasticBody::clear_forces() { m_force.setZero(); }
 
 template <class Kernel>

@@ -161,6 +161,12 @@ public:
     // External nodal forces; add_force accumulates. Refuse a vertex in no element (not_found) and
     // a non-finite force (bad_argument).
     Outcome<Done> add_force(VertexId v, Vector3 force);
+    // Adds the weight of each element under a body force `per_volume` (gravity: density x
+    // acceleration, N/m^3), an equal part at each corner: the consistent load of a uniform body
+    // force on linear elements. A triangle's volume is its area x thickness. Brings the body in
+    // step with its mesh first (refuses as refresh does) and refuses a non-finite force
+    // (bad_argument). Like every load it stays on its vertices: after an edit, add it anew.
+    Outcome<Done> add_body_force(Vector3 per_volume);
     void clear_forces();
     Vector3 force(VertexId v) const { return {m_force[3 * v], m_force[3 * v + 1], m_force[3 * v + 2]}; }
 

@@ -34,7 +34,7 @@ TEST(SxkDeform, HelpNamesEveryOption) {
     EXPECT_EQ(run.exit_code, 0);
     EXPECT_EQ(run.err, "");
     for (const char* word : {"IN", "OUT", "--fix", "--displace", "--force", "--material", "--E", "--nu", "--tol",
-                             "--max-iterations", "--json", "--strict", "--thickness", "--share", "--plot", "sxk deform"})
+                             "--max-iterations", "--json", "--strict", "--thickness", "--share", "--plot", "--gravity", "--density", "sxk deform"})
         EXPECT_NE(run.out.find(word), std::string::npos) << word << " missing from\n" << run.out;
 }
 
@@ -132,6 +132,8 @@ TEST(SxkDeform, UsageErrorsSayWhat) {
         {{"--fix", "x<0.01", "--force", "x>1.1999&y<0.0001&z<0.0001:0,-3,0", "--share", "area"},
          "sxk: deform: --force 'x>1.1999&y<0.0001&z<0.0001' --share area: no boundary face has all its corners among "
          "the selected vertices, so there is no area to share the force by\n"},
+        {{"--fix", "x<0.01", "--gravity", "0,-9.8"},
+         "sxk: deform: --gravity '0,-9.8': expected three numbers GX,GY,GZ, found 2\n"},
         {{"--fix", "x<0.01", "--material", "rubber"},
          "sxk: deform: --material: rubber not in {linear,neohookean}\n" + hint},
         {{"--fix", "x<0.01", "--nu", "0.5"},
@@ -242,6 +244,33 @@ TEST(SxkDeform, NeoHookeanAndTheConvergencePlot) {
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_TRUE(fs::exists(plot));
     EXPECT_FALSE(fs::exists(f.out));
+}
+
+// Chapter 4's rod under its own weight from the command line (the library's
+// ElasticityThesisRod test): the neo-Hookean tip sags less than the linear one and swings back
+// towards the wall.
+TEST(SxkDeform, ARodSagsUnderGravity) {
+    ScratchFolder folder;
+    const fs::path in = folder / "rod.mesh", out = folder / "rod-out.mesh";
+    write_mesh(*make_kuhn_box({10, 6, 6}, {0.01, 0.01, 0.01}), in);
+    auto tip = [&](const char* material) {
+        const ProcessResult run = sxk({"deform", in.string(), out.string(), "--fix", "x=0", "--gravity", "0,-9.8,0",
+                                       "--density", "1000", "--E", "1e4", "--nu", "0.3", "--material", material, "--tol",
+                                       "1e-8", "--json"});
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        const auto json = nlohmann::json::parse(run.out);
+        EXPECT_EQ(json["loaded"], 11 * 7 * 7);
+        const Mesh result = read_mesh(out);
+        Point mean{0, 0, 0};
+        for (VertexId v = 0; v < result.vertex_count(); ++v)
+            if (v % 11 == 10)  // x = l: make_kuhn_box numbers x fastest
+                for (std::size_t k = 0; k < 3; ++k) mean[k] += result.reference(v)[k] / 49;
+        return mean;
+    };
+    const Point linear = tip("linear"), rubber = tip("neohookean");
+    EXPECT_NEAR(linear[1] - 0.03, -0.0484, 0.0005);
+    EXPECT_NEAR(rubber[1] - 0.03, -0.0469, 0.0005);
+    EXPECT_LT(rubber[0], linear[0] - 0.005);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/fixtures.hpp"
 #include "remove_degeneracies.hpp"
 #include "snap_to_plane.hpp"
+#include "snapped_cube.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/quality.hpp"
@@ -318,20 +319,13 @@ void expect_done(const Mesh& mesh, const Report& report, std::size_t elements_be
     EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
 }
 
-// A diagonal plane with mixed-sign normal: Kuhn tetrahedra climb +x, +y, +z, so only a normal
-// with components of both signs lets one tetrahedron have all four vertices within h/3 of the
-// plane, the way snapping flattens elements (thesis §3.2.3, Fig. 3.7). Of 3000 random planes
-// through the middle of the cube none gave more than about 50 degenerates at h/3 (the thesis'
-// cut, made by a sweep of many triangles, gave 143); this one gives 45.
-const Plane thesis_cube_plane{{3.85, 4.0, 3.5}, {1, -0.95, 0.97}};
-
+// The snapped cube of snapped_cube.hpp, checked and described. One material, as the thesis'
+// cube: the test fixture's kuhn_cube labels its elements by t % 6, six materials whose
+// interfaces no flip may move.
 Mesh snapped_thesis_cube(SnapReport& snap) {
-    // one material, as the thesis' cube: the test fixture's kuhn_cube labels its elements by
-    // t % 6, six materials whose interfaces no flip may move
-    Mesh mesh = make_kuhn_cube(8).value();
+    Mesh mesh = test::snapped_thesis_cube(snap);
     EXPECT_EQ(mesh.vertex_count(), 729u);
     EXPECT_EQ(mesh.element_count(), 3072u);
-    snap = snap_to_plane(mesh, thesis_cube_plane, mean_edge_length(mesh) / 3);
     std::printf(
         "[ figures  ] snapped cube: h = %.4f, %zu vertices moved, %zu refused, %zu elements "
         "below aspect ratio 0.01\n",

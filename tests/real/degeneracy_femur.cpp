@@ -1,8 +1,7 @@
 // Degeneracy removal on a snapped real mesh (issue 4): the femur of CGAL's data set
 // tetrahedralised by TetGen -pq1.4 (tools/make-data, as in ops_femur.cpp), 47,733 nodes and
-// 212,936 tetrahedra. A plane through the centre of its bounding box, along the bone (normal
-// mostly across it, not axis aligned), and every vertex within h/3 of it snapped onto it
-// (h = mean edge length), as a snap cut does (thesis §3.2.2); then remove_degeneracies.
+// 212,936 tetrahedra, snapped onto a plane along the bone (snapped_femur.hpp); then
+// remove_degeneracies.
 //
 // TetGen's femur has degenerates of its own before any snapping (about 30 needles at the
 // boundary, aspect ratio down to 0.0027): the whole-mesh run removes them too, the run on the
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "real/femur_data.hpp"
+#include "real/snapped_femur.hpp"
 #include "remove_degeneracies.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/io.hpp"
@@ -77,17 +77,7 @@ protected:
         unsnapped = std::make_unique<Mesh>(read_mesh(ele));
         ASSERT_EQ(unsnapped->element_count(), 212936u);
         snapped = std::make_unique<Mesh>(*unsnapped);
-        Point low = snapped->reference(0), high = low;
-        for (VertexId v = 0; v < snapped->vertex_count(); ++v)
-            for (std::size_t k = 0; k < 3; ++k) {
-                low[k] = std::min(low[k], snapped->reference(v)[k]);
-                high[k] = std::max(high[k], snapped->reference(v)[k]);
-            }
-        // the bone runs along z: this plane cuts it lengthwise (tools/bench/degeneracies.cpp
-        // uses the same plane)
-        const Plane plane{{(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2},
-                          {0.3, 1, 0.12}};
-        snap = snap_to_plane(*snapped, plane, mean_edge_length(*snapped) / 3);
+        snap = test::snap_femur(*snapped);
         std::printf(
             "[ figures  ] femur: h = %.6g, %zu vertices moved, %zu refused; elements below aspect "
             "ratio 0.01: %zu before snapping, %zu after\n",

@@ -56,18 +56,6 @@ struct Case {
     std::size_t candidates = 0;
 };
 
-// The plane through the centre of the bounding box (reference positions), normal (0.3, 1, 0.12).
-dg::Plane plane_of(const sxk::Mesh& mesh) {
-    sxk::Point low = mesh.reference(0), high = low;
-    for (sxk::VertexId v = 0; v < mesh.vertex_count(); ++v)
-        for (std::size_t k = 0; k < 3; ++k) {
-            low[k] = std::min(low[k], mesh.reference(v)[k]);
-            high[k] = std::max(high[k], mesh.reference(v)[k]);
-        }
-    return {{(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2},
-            {0.3, 1, 0.12}};
-}
-
 double thread_cpu_seconds() {
     timespec now{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
@@ -138,7 +126,7 @@ int main(int argc, char** argv) {
         }
         c.elements = c.snapped.element_count();
         const dg::SnapReport snap =
-            dg::snap_to_plane(c.snapped, plane_of(c.snapped), dg::mean_edge_length(c.snapped) / 3);
+            dg::snap_to_plane(c.snapped, dg::plane_through_centre(c.snapped, {0.3, 1, 0.12}), dg::mean_edge_length(c.snapped) / 3);
         c.moved = snap.moved;
         c.candidates = dg::elements_around(c.snapped, c.moved).size();
         std::fprintf(
