@@ -173,17 +173,18 @@ TEST(ElasticityEdits, MaterialsPerElementFollowSplits) {
 // between. (Solving both and comparing was tried: random moves make slivers and dissections
 // hinges, so the problem can be too ill-conditioned for a residual test to pin the energy; the
 // solves after an edit are compared on well-shaped meshes above.)
-TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshBody) {
-    const std::uint64_t seed = test::seed_for("ElasticityEdits.RandomEditsKeepTheStateOfAFreshBody");
+// kind: the ops driver's start mesh (0 jittered planar grid, 3 jittered Kuhn cube).
+void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t kind, BodyOptions options) {
+    const std::uint64_t seed = test::seed_for(name);
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
-    test::StartChoices start(rng, 3);  // Kuhn cubes
+    test::StartChoices start(rng, kind);
     int compared = 0, edits = 0, flat = 0;
     for (int round = 0; round < 4; ++round) {
         start.restart();
         Mesh mesh = ops_driver::start_mesh(start.choices(), 3, 2);
-        ASSERT_EQ(mesh.topological_dimension(), 3);
-        auto made = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3});
+        ASSERT_EQ(mesh.topological_dimension(), kind == 3 ? 3 : 2);
+        auto made = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3}, options);
         ASSERT_TRUE(made.ok()) << made.reason();
         ElasticBody body = std::move(*made);
         ScopedWatcher following(mesh, body);
@@ -199,7 +200,7 @@ TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshBody) {
             ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
             // a sliver whose volume rounds to zero has no stiffness: both refuse it alike
             const auto refreshed = body.refresh();
-            auto fresh = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3});
+            auto fresh = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3}, options);
             ASSERT_EQ(refreshed.ok(), fresh.ok()) << (refreshed.ok() ? fresh.reason() : refreshed.reason());
             if (!fresh.ok()) {
                 EXPECT_EQ(refreshed.reason(), fresh.reason());
@@ -211,10 +212,16 @@ TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshBody) {
             ASSERT_TRUE(std::equal(body.elements().begin(), body.elements().end(), fresh->elements().begin(),
                                    fresh->elements().end()));
             Eigen::VectorXd d(static_cast<Eigen::Index>(body.dof_count())), ours, theirs;
-            for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = std::sin(0.7 * static_cast<double>(i) + step);
+            for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = 1e-3 * std::sin(0.7 * static_cast<double>(i) + step);
             body.multiply(d, ours);
             fresh->multiply(d, theirs);
             ASSERT_EQ(ours, theirs) << "round " << round << ", step " << step;
+            // the model's forces too (neo-Hookean: nonlinear in d; d small enough to invert nothing)
+            const bool ok = body.elastic_forces(d, ours);
+            ASSERT_EQ(ok, fresh->elastic_forces(d, theirs));
+            if (ok) {
+                ASSERT_EQ(ours, theirs) << "round " << round << ", step " << step;
+            }
             ++compared;
         }
     }
@@ -222,6 +229,20 @@ TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshBody) {
                 compared, flat, edits);
     EXPECT_GE(compared, 30);
     EXPECT_GT(edits, 60);
+}
+
+TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshBody) {
+    random_edits_keep_the_state_of_a_fresh_body("ElasticityEdits.RandomEditsKeepTheStateOfAFreshBody", 3, {});
+}
+
+TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshPlaneStressBody) {
+    random_edits_keep_the_state_of_a_fresh_body("ElasticityEdits.RandomEditsKeepTheStateOfAFreshPlaneStressBody", 0,
+                                                {.thickness = 0.05});
+}
+
+TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshNeoHookeanBody) {
+    random_edits_keep_the_state_of_a_fresh_body("ElasticityEdits.RandomEditsKeepTheStateOfAFreshNeoHookeanBody", 3,
+                                                {.model = Model::neohookean});
 }
 
 }  // namespace

@@ -39,10 +39,10 @@ struct Measured {
     double seconds = 0;
 };
 
-Measured cantilever(int n) {
+Measured cantilever(int n, double poisson = 0) {
     auto mesh = make_kuhn_box({4 * n, n, n}, {length / (4 * n), height / n, depth / n});
     EXPECT_TRUE(mesh.ok()) << mesh.reason();
-    auto body = ElasticBody::make(*mesh, {.young = young, .poisson = 0});
+    auto body = ElasticBody::make(*mesh, {.young = young, .poisson = poisson});
     EXPECT_TRUE(body.ok()) << body.reason();
     std::vector<VertexId> tip;
     for (VertexId v = 0; v < mesh->vertex_count(); ++v) {
@@ -90,6 +90,27 @@ TEST(ElasticityThesisBeam, ReproducesTable31) {
         EXPECT_LT(m.average_error, previous) << row.cells;
         EXPECT_LT(m.maximum_error - m.average_error, 1.0) << row.cells;
         previous = m.average_error;
+    }
+}
+
+// The same beams with nu = 1/4, the material of the thesis' other chapter 3 experiments: the CG
+// iteration counts come out within 3% of Table 3.1's (ours 389, 564, 728, 887, 1046), closer
+// than with the nu = 0 the table states (7-11% below), which suggests the thesis' beams had
+// nu = 1/4. The errors are still smaller than the table's (24.1, 12.3, 7.1, 4.4, 2.9%: within a
+// point on the two finest meshes only). docs/elasticity.md discusses it.
+TEST(ElasticityThesisBeam, IterationCountsMatchTable31WithAQuarterPoissonRatio) {
+    constexpr TableRow thesis[] = {
+        {4, 377, 29.0, 29.3}, {6, 561, 15.1, 15.3}, {8, 723, 8.6, 8.8}, {10, 882, 5.2, 5.3}, {12, 1044, 3.2, 3.3}};
+    for (const TableRow& row : thesis) {
+        const Measured m = cantilever(row.cells, 0.25);
+        std::printf("nu = 1/4, %2dx%2dx%-2d: %5zu iterations (thesis %4d), average error %5.2f%% (thesis %4.1f%%), "
+                    "maximum %5.2f%% (thesis %4.1f%%)\n",
+                    4 * row.cells, row.cells, row.cells, m.iterations, row.iterations, m.average_error,
+                    row.average_error, m.maximum_error, row.maximum_error);
+        EXPECT_TRUE(m.converged);
+        EXPECT_NEAR(static_cast<double>(m.iterations), row.iterations, 0.05 * row.iterations) << row.cells;
+        EXPECT_GT(m.average_error, 0) << row.cells;
+        EXPECT_LE(m.average_error, row.average_error) << row.cells;
     }
 }
 
