@@ -149,10 +149,10 @@ Outcome<Done> ElasticBody::add_body_force(Vector3 per_volume) {
 
 void ElasticBody::clear_forces() { m_force.setZero(); }
 
-template <class Kernel>
+template <int D, class Kernel>
 bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const Kernel& kernel) const {
     const std::size_t count = m_elements.size();
-    const auto corner_count = static_cast<std::size_t>(m_dimension + 1);
+    constexpr std::size_t corner_count = D + 1;  // known to the compiler: the gather unrolls
     m_corner_forces.resize(12 * count);
     m_element_energy.resize(count);
     // vertices beyond d (a rollback dropped them and no refresh followed) read as at rest
@@ -187,12 +187,12 @@ bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const K
 void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const {
     // the linear kernels do not need the element energy (1/2 d^T K_t d)
     if (m_dimension == 3)
-        gather(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
+        gather<3>(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
             detail::linear_element_forces<3>(rest, c, f);
             return true;
         });
     else
-        gather(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
+        gather<2>(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
             detail::linear_element_forces<2>(rest, c, f);
             return true;
         });
@@ -203,8 +203,8 @@ bool ElasticBody::elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out)
         multiply(u, out);
         return true;
     }
-    if (m_dimension == 3) return gather(u, out, detail::neo_hookean_forces<3>);
-    return gather(u, out, detail::neo_hookean_forces<2>);
+    if (m_dimension == 3) return gather<3>(u, out, detail::neo_hookean_forces<3>);
+    return gather<2>(u, out, detail::neo_hookean_forces<2>);
 }
 
 double ElasticBody::strain_energy(const Eigen::VectorXd& u) const {

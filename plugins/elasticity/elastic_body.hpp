@@ -225,10 +225,11 @@ private:
     void take_element(const Mesh& mesh, ElementId element);
     void interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added);
     void rebuild_elements_and_stars();
-    // Calls kernel(element, corner displacements, out) for every element in parallel, each
-    // writing 3 per corner into m_corner_forces (and its energy into m_element_energy), then sums
-    // the corners per vertex into out; false when a kernel returned false.
-    template <class Kernel>
+    // Calls kernel(rest shape, corner displacements, out, energy) for every element in parallel,
+    // each writing 3 per corner into m_corner_forces (and its energy into m_element_energy), then
+    // sums the corners per vertex into out; false when a kernel returned false. D: the body's
+    // dimension.
+    template <int D, class Kernel>
     bool gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const Kernel& kernel) const;
 
     const Mesh* m_mesh = nullptr;

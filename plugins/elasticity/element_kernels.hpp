@@ -73,18 +73,49 @@ void corner_forces(const RestShape& rest, const Eigen::Matrix<double, D, D>& t, 
 //
 //     E = (G + G^T) / 2, T = 2 mu E + lambda trace(E) I, out_j = volume T b_j.
 //
-// (The thesis numbers the corners from 1 and measures from the last; here from 0.) A triangle's
-// lambda is the plane-stress one (eq. 6.3), set in its rest shape. On fixed-size Eigen matrices
-// the compiler unrolls every loop; the product with dynamic 3 x 3 Eigen matrices (G = U Z^-1,
-// volume T Z^-T) took 60% of a CG iteration on the thesis' cube and was not inlined
-// (docs/elasticity.md "Speed").
+// (The thesis numbers the corners from 1 and measures from the last; here from 0.)
+//
+// The tetrahedron's is written out on scalars with the symmetry of T, in a function of its own:
+// the same product on Eigen's dynamic 3 x 3 matrices took twice as long per CG iteration, and
+// so did a template over D with this body inside (femur, 213k tets, two threads: 7.5 against
+// 4.9-5.0 ms per product, one thread 11.7 against 9.8; docs/elasticity.md "Speed").
+inline void linear_tetrahedron_forces(const RestShape& rest, const double* d, double* out) {
+    const Lame& lame = rest.lame;
+    const double* b = rest.gradient.data();
+    double g[3][3] = {};
+    for (int j = 0; j < 3; ++j) {
+        const double w[3] = {d[3 * j] - d[9], d[3 * j + 1] - d[10], d[3 * j + 2] - d[11]};
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k) g[i][k] += w[i] * b[3 * j + k];
+    }
+    const double v = rest.volume, trace = g[0][0] + g[1][1] + g[2][2];
+    const double two_mu = 2 * lame.mu * v, lambda = lame.lambda * trace * v, mu = lame.mu * v;
+    const double t[3][3] = {{two_mu * g[0][0] + lambda, mu * (g[0][1] + g[1][0]), mu * (g[0][2] + g[2][0])},
+                            {mu * (g[0][1] + g[1][0]), two_mu * g[1][1] + lambda, mu * (g[1][2] + g[2][1])},
+                            {mu * (g[0][2] + g[2][0]), mu * (g[1][2] + g[2][1]), two_mu * g[2][2] + lambda}};
+    double last[3] = {0, 0, 0};
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            const double f = t[i][0] * b[3 * j] + t[i][1] * b[3 * j + 1] + t[i][2] * b[3 * j + 2];
+            out[3 * j + i] = f;
+            last[i] -= f;
+        }
+    for (int i = 0; i < 3; ++i) out[9 + i] = last[i];
+}
+
+// The triangle's, in plane stress: its lambda is the plane-stress one (eq. 6.3), set in its rest
+// shape.
+inline void linear_triangle_forces(const RestShape& rest, const double* d, double* out) {
+    const Eigen::Matrix2d g = displacement_gradient<2>(rest, d);
+    Eigen::Matrix2d t = (rest.lame.mu * rest.volume) * (g + g.transpose());
+    t.diagonal().array() += rest.lame.lambda * rest.volume * g.trace();
+    corner_forces<2>(rest, t, out);
+}
+
 template <int D>
 void linear_element_forces(const RestShape& rest, const double* d, double* out) {
-    const Eigen::Matrix<double, D, D> g = displacement_gradient<D>(rest, d);
-    const double v = rest.volume;
-    Eigen::Matrix<double, D, D> t = (rest.lame.mu * v) * (g + g.transpose());
-    t.diagonal().array() += rest.lame.lambda * v * g.trace();
-    corner_forces<D>(rest, t, out);
+    if constexpr (D == 3) linear_tetrahedron_forces(rest, d, out);
+    else linear_triangle_forces(rest, d, out);
 }
 
 // The neo-Hookean element of eq. 4.6, W = 1/2 (mu (trace C - D) - mu ln det C + lambda (J - 1)^2)

@@ -44,13 +44,12 @@ double NonlinearRelaxation::line_search() {
     if (!(slope > 0) || !(curvature > 0)) return 0;
     double previous = 0, previous_slope = slope;
     double alpha = slope / curvature;
-    double current_slope = 0;
     // a step that inverts an element is halved until it does not
     for (int halving = 0; !residual_at(alpha, m_q); ++halving) {
         if (halving == 60) return 0;
         alpha /= 2;
     }
-    current_slope = m_d.dot(m_q);
+    double current_slope = m_d.dot(m_q);
     for (std::size_t step = 0; step < m_options.line_search_steps; ++step) {
         if (std::abs(current_slope) <= m_options.line_search_tolerance * slope) break;
         const double denominator = previous_slope - current_slope;
