@@ -1,5 +1,6 @@
 // solve_linear_cg: matrix-free linear CG with projected constraints (solve.hpp; thesis §2.4.1,
-// §3.1 and §6.6).
+// §3.1 and §6.6), with what both relaxations share (detail::Relaxation) and solve(), the
+// solver by model.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -89,34 +90,36 @@ bool LinearRelaxation::run(std::size_t iterations) {
         m_rr = next;
         m_report.history.push_back(std::sqrt(m_rr));
     }
+    return finish_run(start);
+}
+
+namespace detail {
+
+bool Relaxation::finish_run(std::chrono::steady_clock::time_point start) {
     m_report.residual = std::sqrt(m_rr);
     m_report.converged = m_report.residual <= m_report.threshold;
     m_report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return m_report.converged;
 }
 
-bool LinearRelaxation::done() const {
+bool Relaxation::done() const {
     return m_report.converged || m_stalled || m_report.iterations >= m_options.max_iterations;
 }
 
-SolveReport LinearRelaxation::report() const {
+SolveReport Relaxation::report() const {
     SolveReport report = m_report;
     report.energy = m_body->energy();
     return report;
 }
+
+}  // namespace detail
 
 Outcome<SolveReport> solve(ElasticBody& body, const SolveOptions& options) {
     return body.model() == Model::linear ? solve_linear_cg(body, options) : solve_nonlinear_cg(body, options);
 }
 
 Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    auto relaxation = LinearRelaxation::start(body, options);
-    if (!relaxation) return relaxation.refusal();
-    relaxation->run(options.max_iterations);
-    SolveReport report = relaxation->report();
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return report;
+    return detail::solve_with<LinearRelaxation>(body, options);
 }
 
 }  // namespace sxk::elasticity

@@ -90,30 +90,11 @@ bool NonlinearRelaxation::run(std::size_t iterations) {
         m_rr = next;
         m_report.history.push_back(std::sqrt(m_rr));
     }
-    m_report.residual = std::sqrt(m_rr);
-    m_report.converged = m_report.residual <= m_report.threshold;
-    m_report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return m_report.converged;
-}
-
-bool NonlinearRelaxation::done() const {
-    return m_report.converged || m_stalled || m_report.iterations >= m_options.max_iterations;
-}
-
-SolveReport NonlinearRelaxation::report() const {
-    SolveReport report = m_report;
-    report.energy = m_body->energy();
-    return report;
+    return finish_run(start);
 }
 
 Outcome<SolveReport> solve_nonlinear_cg(ElasticBody& body, const SolveOptions& options) {
-    const auto start = std::chrono::steady_clock::now();
-    auto relaxation = NonlinearRelaxation::start(body, options);
-    if (!relaxation) return relaxation.refusal();
-    relaxation->run(options.max_iterations);
-    SolveReport report = relaxation->report();
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return report;
+    return detail::solve_with<NonlinearRelaxation>(body, options);
 }
 
 }  // namespace sxk::elasticity

@@ -4,6 +4,7 @@
 // ConjugateGradient) that tests and benchmarks compare the linear one with.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -55,6 +56,41 @@ struct SolveReport {
 // report says converged = false and the body holds the last iterate.
 Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options = {});
 
+namespace detail {
+// What the linear and the nonlinear relaxation share: the body, the options, the report so far,
+// and when they are done.
+class Relaxation {
+public:
+    // Converged, out of iterations (max_iterations), or unable to progress.
+    bool done() const;
+    // Iterations, residual, threshold and history so far; the energy of the current displacements.
+    SolveReport report() const;
+
+protected:
+    Relaxation(ElasticBody& body, const SolveOptions& options) : m_body(&body), m_options(options) {}
+    // The end of a run() that began at `start`: the residual, converged and the time; converged.
+    bool finish_run(std::chrono::steady_clock::time_point start);
+
+    ElasticBody* m_body;
+    SolveOptions m_options;
+    SolveReport m_report;
+    double m_rr = 0;  // ||r||^2
+    bool m_stalled = false;
+};
+
+// R::start, then R::run(max_iterations); the report's time is the whole solve's.
+template <class R>
+Outcome<SolveReport> solve_with(ElasticBody& body, const SolveOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    auto relaxation = R::start(body, options);
+    if (!relaxation) return relaxation.refusal();
+    relaxation->run(options.max_iterations);
+    SolveReport report = relaxation->report();
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+}  // namespace detail
+
 // The same CG a few iterations at a time, as the thesis interleaves relaxation with rendering
 // (§3.3: "the course of the CG iteration is visualized during the simulation"): an application
 // starts it, runs a bounded number of iterations per frame, shows the displacements in between
@@ -62,27 +98,18 @@ Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& opti
 // change in forces or boundary conditions, the CG iteration is restarted"). solve_linear_cg is
 // start + run(max_iterations). The body must outlive the relaxation and must not be edited or
 // re-constrained while it runs.
-class LinearRelaxation {
+class LinearRelaxation : public detail::Relaxation {
 public:
     // From the body's current displacements; refuses as solve_linear_cg.
     static Outcome<LinearRelaxation> start(ElasticBody& body, const SolveOptions& options = {});
     // At most `iterations` more CG iterations (none when done()); true when converged.
     bool run(std::size_t iterations);
-    // Converged, out of iterations (max_iterations), or unable to progress.
-    bool done() const;
-    // Iterations, residual, threshold and history so far; the energy of the current displacements.
-    SolveReport report() const;
 
 private:
-    LinearRelaxation(ElasticBody& body, const SolveOptions& options) : m_body(&body), m_options(options) {}
+    LinearRelaxation(ElasticBody& body, const SolveOptions& options) : Relaxation(body, options) {}
     void residual();
 
-    ElasticBody* m_body;
-    SolveOptions m_options;
-    SolveReport m_report;
     Eigen::VectorXd m_ku, m_r, m_d, m_q;
-    double m_rr = 0;
-    bool m_stalled = false;
 };
 
 // Minimises the potential energy of a body of any model (neo-Hookean: strain energy of eq. 4.6
@@ -95,25 +122,18 @@ private:
 Outcome<SolveReport> solve_nonlinear_cg(ElasticBody& body, const SolveOptions& options = {});
 
 // The same a few iterations at a time (see LinearRelaxation).
-class NonlinearRelaxation {
+class NonlinearRelaxation : public detail::Relaxation {
 public:
     static Outcome<NonlinearRelaxation> start(ElasticBody& body, const SolveOptions& options = {});
     bool run(std::size_t iterations);
-    bool done() const;
-    SolveReport report() const;
 
 private:
-    NonlinearRelaxation(ElasticBody& body, const SolveOptions& options) : m_body(&body), m_options(options) {}
+    NonlinearRelaxation(ElasticBody& body, const SolveOptions& options) : Relaxation(body, options) {}
     // r = P(f - g(u)) at u + alpha d; false when that inverts an element
     bool residual_at(double alpha, Eigen::VectorXd& r);
     double line_search();
 
-    ElasticBody* m_body;
-    SolveOptions m_options;
-    SolveReport m_report;
     Eigen::VectorXd m_r, m_d, m_trial, m_g, m_q;
-    double m_rr = 0;
-    bool m_stalled = false;
 };
 
 // The solver of the body's model: solve_linear_cg for linear bodies, solve_nonlinear_cg else.
