@@ -28,7 +28,8 @@ Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body) {
 }
 
 Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& options) {
-    if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
+    if (auto ready = detail::prepare_solve(body); !ready)
+        return ready.refusal();
     const auto start = std::chrono::steady_clock::now();
     // B: one orthonormal column per allowed motion (3 for a free vertex, 2 in a planar body, its
     // line for a line vertex, none for a fixed one or one in no element, whose rows of K are
@@ -36,20 +37,23 @@ Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& o
     std::vector<Eigen::Triplet<double>> basis;
     int columns = 0;
     for (VertexId v = 0; v < body.vertex_count(); ++v) {
-        if (v >= body.mesh().vertex_count() || body.mesh().vertex_element(v) == invalid_id) continue;
+        if (v >= body.mesh().vertex_count() || body.mesh().vertex_element(v) == invalid_id)
+            continue;
         const auto row = static_cast<int>(3 * v);
         switch (body.freedom(v)) {
-        case Freedom::free:
-            for (int k = 0; k < body.dimension(); ++k) basis.emplace_back(row + k, columns++, 1.0);
-            break;
-        case Freedom::line: {
-            const Vector3 l = body.line_direction(v);
-            for (int k = 0; k < 3; ++k) basis.emplace_back(row + k, columns, l[static_cast<std::size_t>(k)]);
-            ++columns;
-            break;
-        }
-        case Freedom::fixed:
-            break;
+            case Freedom::free:
+                for (int k = 0; k < body.dimension(); ++k)
+                    basis.emplace_back(row + k, columns++, 1.0);
+                break;
+            case Freedom::line: {
+                const Vector3 l = body.line_direction(v);
+                for (int k = 0; k < 3; ++k)
+                    basis.emplace_back(row + k, columns, l[static_cast<std::size_t>(k)]);
+                ++columns;
+                break;
+            }
+            case Freedom::fixed:
+                break;
         }
     }
     const auto n = static_cast<Eigen::Index>(body.dof_count());
@@ -80,7 +84,8 @@ Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& o
     // Eigen stops on its own residual, recomputed here: allow its last rounding
     report.converged = report.residual <= report.threshold * (1 + 1e-6);
     report.energy = 0.5 * u.dot(ku) - body.forces().dot(u);
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
 }
 

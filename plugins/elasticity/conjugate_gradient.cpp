@@ -23,9 +23,11 @@ double reaction_norm(const ElasticBody& body, const Eigen::VectorXd& ku) {
 
 namespace detail {
 
-double stop_threshold(const ElasticBody& body, const SolveOptions& options, const Eigen::VectorXd& ku) {
+double stop_threshold(const ElasticBody& body, const SolveOptions& options,
+                      const Eigen::VectorXd& ku) {
     const double external = body.forces().norm();
-    if (options.stop == StopCriterion::external_force) return options.tolerance * external;
+    if (options.stop == StopCriterion::external_force)
+        return options.tolerance * external;
     const double reaction = reaction_norm(body, ku);
     const double n = static_cast<double>(std::max<std::size_t>(body.dof_count(), 1));
     const double h = body.diameter();
@@ -35,16 +37,19 @@ double stop_threshold(const ElasticBody& body, const SolveOptions& options, cons
 
 Outcome<Done> prepare_solve(ElasticBody& body) {
     if (body.constrained_count() == 0)
-        return Refusal{RefusalCode::bad_argument,
-                       "elasticity: no vertex is constrained, so the body can move freely and its stiffness matrix is "
-                       "singular; fix at least three non-collinear vertices of every connected part"};
+        return Refusal{
+            RefusalCode::bad_argument,
+            "elasticity: no vertex is constrained, so the body can move freely and its stiffness "
+            "matrix is "
+            "singular; fix at least three non-collinear vertices of every connected part"};
     return body.refresh();
 }
 
 }  // namespace detail
 
 Outcome<LinearRelaxation> LinearRelaxation::start(ElasticBody& body, const SolveOptions& options) {
-    if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
+    if (auto ready = detail::prepare_solve(body); !ready)
+        return ready.refusal();
     LinearRelaxation relaxation(body, options);
     relaxation.residual();
     relaxation.m_rr = relaxation.m_r.squaredNorm();
@@ -68,7 +73,9 @@ bool LinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
     Eigen::VectorXd& u = m_body->displacements();
     for (std::size_t i = 0; i < iterations && !m_stalled; ++i) {
-        if (std::sqrt(m_rr) <= m_report.threshold || m_report.iterations >= m_options.max_iterations) break;
+        if (std::sqrt(m_rr) <= m_report.threshold ||
+            m_report.iterations >= m_options.max_iterations)
+            break;
         m_body->multiply(m_d, m_q);
         ++m_report.evaluations;
         m_body->project(m_q);  // P K P: d is already in the allowed space
@@ -98,7 +105,8 @@ namespace detail {
 bool Relaxation::finish_run(std::chrono::steady_clock::time_point start) {
     m_report.residual = std::sqrt(m_rr);
     m_report.converged = m_report.residual <= m_report.threshold;
-    m_report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_report.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return m_report.converged;
 }
 
@@ -115,7 +123,8 @@ SolveReport Relaxation::report() const {
 }  // namespace detail
 
 Outcome<SolveReport> solve(ElasticBody& body, const SolveOptions& options) {
-    return body.model() == Model::linear ? solve_linear_cg(body, options) : solve_nonlinear_cg(body, options);
+    return body.model() == Model::linear ? solve_linear_cg(body, options)
+                                         : solve_nonlinear_cg(body, options);
 }
 
 Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options) {

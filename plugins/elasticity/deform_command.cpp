@@ -41,52 +41,70 @@ struct Selected {
     Vector3 vector{0, 0, 0};
 };
 
-std::optional<Options> parse(std::span<const std::string> args, std::ostream& out, std::ostream& err, int& code) {
+std::optional<Options> parse(std::span<const std::string> args, std::ostream& out,
+                             std::ostream& err, int& code) {
     Options o;
-    CLI::App app("Deforms a tetrahedral mesh, or a triangle mesh in the plane as a slab in plane stress, by linear "
-                 "or neo-Hookean elasticity (thesis 3.1, 4.3.3, 6.3): fixed and displaced vertices, loads, "
-                 "matrix-free linear or nonlinear conjugate gradients; OUT holds the deformed positions",
-                 "sxk deform");
-    app.add_option("IN", o.input, "Input mesh file (tetrahedra in space or triangles in the plane)")->required();
-    app.add_option("OUT", o.output, "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+    CLI::App app(
+        "Deforms a tetrahedral mesh, or a triangle mesh in the plane as a slab in plane stress, by "
+        "linear "
+        "or neo-Hookean elasticity (thesis 3.1, 4.3.3, 6.3): fixed and displaced vertices, loads, "
+        "matrix-free linear or nonlinear conjugate gradients; OUT holds the deformed positions",
+        "sxk deform");
+    app.add_option("IN", o.input, "Input mesh file (tetrahedra in space or triangles in the plane)")
         ->required();
-    app.add_option("--fix", o.fix, "Vertices held in place: a selector such as 'x<0.001', 'label=2&boundary' (repeatable)");
-    app.add_option("--displace", o.displace, "Vertices moved by a prescribed displacement: 'EXPR:DX,DY,DZ' (repeatable)");
+    app.add_option("OUT", o.output,
+                   "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+        ->required();
+    app.add_option(
+        "--fix", o.fix,
+        "Vertices held in place: a selector such as 'x<0.001', 'label=2&boundary' (repeatable)");
+    app.add_option("--displace", o.displace,
+                   "Vertices moved by a prescribed displacement: 'EXPR:DX,DY,DZ' (repeatable)");
     app.add_option("--force", o.force,
-                   "A total force on the selected vertices, shared among them as --share says: 'EXPR:FX,FY,FZ' "
+                   "A total force on the selected vertices, shared among them as --share says: "
+                   "'EXPR:FX,FY,FZ' "
                    "(repeatable)");
     app.add_option("--share", o.share,
-                   "How a --force is shared: equal (the same part each) or area (by the boundary area around each "
+                   "How a --force is shared: equal (the same part each) or area (by the boundary "
+                   "area around each "
                    "vertex: a uniform traction on the selected boundary)")
         ->check(CLI::IsMember({"equal", "area"}))
         ->capture_default_str();
     app.add_option("--gravity", o.gravity,
-                   "An acceleration on every element's mass, 'GX,GY,GZ' (m/s^2, e.g. 0,-9.8,0): each element's weight "
+                   "An acceleration on every element's mass, 'GX,GY,GZ' (m/s^2, e.g. 0,-9.8,0): "
+                   "each element's weight "
                    "shared equally by its corners");
     app.add_option("--density", o.density, "Mass per volume for --gravity (kg/m^3)")
         ->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
         ->capture_default_str();
     app.add_option("--material", o.material,
-                   "Material model: linear (small strains) or neohookean (compressible neo-Hookean, large strains, "
+                   "Material model: linear (small strains) or neohookean (compressible "
+                   "neo-Hookean, large strains, "
                    "nonlinear CG)")
         ->check(CLI::IsMember({"linear", "neohookean"}))
         ->capture_default_str();
-    app.add_option("--thickness", o.thickness, "Slab thickness of a triangle mesh in plane stress, > 0 (default 1)")
+    app.add_option("--thickness", o.thickness,
+                   "Slab thickness of a triangle mesh in plane stress, > 0 (default 1)")
         ->check(number_in(0, false, 1e300, true, "(0, 1e300]"));
-    app.add_option("--E,--young", o.young, "Young's modulus, > 0")->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
+    app.add_option("--E,--young", o.young, "Young's modulus, > 0")
+        ->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
         ->capture_default_str();
     app.add_option("--nu,--poisson", o.poisson, "Poisson's ratio, -1 < nu < 0.5")
         ->check(number_in(-1, false, 0.5, false, "(-1, 0.5)"))
         ->capture_default_str();
     app.add_option("--tol", o.tolerance,
-                   "Relative tolerance of the residual against the loads and reactions (thesis eq. 6.9), 0 < tol < 1")
+                   "Relative tolerance of the residual against the loads and reactions (thesis eq. "
+                   "6.9), 0 < tol < 1")
         ->check(number_in(0, false, 1, false, "(0, 1)"))
         ->capture_default_str();
     app.add_option("--max-iterations", o.max_iterations, "Most CG iterations before giving up")
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
         ->capture_default_str();
-    app.add_flag("--json", o.json, "Print one JSON object (with the residual history) instead of the summary");
-    app.add_option("--plot", o.plot, "Also draw the convergence (residual per iteration, log scale) to this PNG file");
+    app.add_flag("--json", o.json,
+                 "Print one JSON object (with the residual history) instead of the summary");
+    app.add_option(
+        "--plot", o.plot,
+        "Also draw the convergence (residual per iteration, log scale) to this PNG file");
     add_read_options(app, o.reading);
     if (const std::optional<int> done = parse_command_line(app, args, "deform", out, err)) {
         code = *done;
@@ -96,8 +114,8 @@ std::optional<Options> parse(std::span<const std::string> args, std::ostream& ou
 }
 
 // "EXPR" (with_vector false) or "EXPR:X,Y,Z"; nullopt with the message printed.
-std::optional<Selected> parse_selected(const std::string& option, const std::string& text, bool with_vector,
-                                       std::ostream& err) {
+std::optional<Selected> parse_selected(const std::string& option, const std::string& text,
+                                       bool with_vector, std::ostream& err) {
     Selected s;
     std::string expression = text;
     if (with_vector) {
@@ -114,8 +132,8 @@ std::optional<Selected> parse_selected(const std::string& option, const std::str
         }
         const auto& list = std::get<std::vector<double>>(numbers);
         if (list.size() != 3) {
-            err << "sxk: deform: " << option << " '" << text << "': expected three numbers X,Y,Z after ':', found "
-                << list.size() << '\n';
+            err << "sxk: deform: " << option << " '" << text
+                << "': expected three numbers X,Y,Z after ':', found " << list.size() << '\n';
             return std::nullopt;
         }
         s.vector = {list[0], list[1], list[2]};
@@ -130,12 +148,14 @@ std::optional<Selected> parse_selected(const std::string& option, const std::str
 }
 
 // Every occurrence of one option; nullopt when one of them does not parse (message printed).
-std::optional<std::vector<Selected>> parse_all(const std::string& option, const std::vector<std::string>& texts,
+std::optional<std::vector<Selected>> parse_all(const std::string& option,
+                                               const std::vector<std::string>& texts,
                                                bool with_vector, std::ostream& err) {
     std::vector<Selected> all;
     for (const std::string& text : texts) {
         std::optional<Selected> s = parse_selected(option, text, with_vector, err);
-        if (!s) return std::nullopt;
+        if (!s)
+            return std::nullopt;
         all.push_back(std::move(*s));
     }
     return all;
@@ -144,19 +164,22 @@ std::optional<std::vector<Selected>> parse_all(const std::string& option, const 
 }  // namespace
 
 std::string_view DeformCommand::summary() const {
-    return "deform a tetrahedral or planar triangle mesh by linear or neo-Hookean elasticity: fixed vertices, loads, "
+    return "deform a tetrahedral or planar triangle mesh by linear or neo-Hookean elasticity: "
+           "fixed vertices, loads, "
            "CG (thesis 3.1, 4.3.3, 6.3)";
 }
 
 int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     int code = 0;
     const std::optional<Options> options = parse(args, out, err, code);
-    if (!options) return code;
+    if (!options)
+        return code;
     const Options& o = *options;
     const auto fixes = parse_all("--fix", o.fix, false, err);
     const auto displaces = parse_all("--displace", o.displace, true, err);
     const auto forces = parse_all("--force", o.force, true, err);
-    if (!fixes || !displaces || !forces) return 2;
+    if (!fixes || !displaces || !forces)
+        return 2;
     Vector3 gravity{0, 0, 0};
     if (!o.gravity.empty()) {
         const auto numbers = parse_number_list(o.gravity);
@@ -166,19 +189,21 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         }
         const auto& list = std::get<std::vector<double>>(numbers);
         if (list.size() != 3) {
-            err << "sxk: deform: --gravity '" << o.gravity << "': expected three numbers GX,GY,GZ, found " << list.size()
-                << '\n';
+            err << "sxk: deform: --gravity '" << o.gravity
+                << "': expected three numbers GX,GY,GZ, found " << list.size() << '\n';
             return 2;
         }
         gravity = {list[0], list[1], list[2]};
     }
     if (fixes->empty() && displaces->empty()) {
-        err << "sxk: deform: nothing holds the body (no --fix or --displace), so it can move freely and the problem "
+        err << "sxk: deform: nothing holds the body (no --fix or --displace), so it can move "
+               "freely and the problem "
                "is singular; fix at least three non-collinear vertices of every connected part\n";
         return 2;
     }
     if (!format_from_extension(o.output)) {
-        err << "sxk: " << o.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        err << "sxk: " << o.output
+            << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
         return 2;
     }
     if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {
@@ -186,11 +211,12 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         return 2;
     }
     std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
-    if (!mesh) return 2;
+    if (!mesh)
+        return 2;
     const bool planar = mesh->topological_dimension() == 2 && mesh->ambient_dimension() == 2;
     if (o.thickness && !planar) {
-        err << "sxk: deform: --thickness is for triangle meshes in the plane (plane stress); " << o.input
-            << " has " << mesh->topological_dimension() << "-dimensional elements in "
+        err << "sxk: deform: --thickness is for triangle meshes in the plane (plane stress); "
+            << o.input << " has " << mesh->topological_dimension() << "-dimensional elements in "
             << mesh->ambient_dimension() << "-dimensional space\n";
         return 2;
     }
@@ -203,10 +229,12 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     }
     // selections: one that selects nothing is a mistake worth stopping for (a coordinate off by
     // a unit, a label the file does not have)
-    auto select = [&](const std::string& option, const Selected& s) -> std::optional<std::vector<VertexId>> {
+    auto select = [&](const std::string& option,
+                      const Selected& s) -> std::optional<std::vector<VertexId>> {
         std::vector<VertexId> vertices = select_vertices(*mesh, s.selector);
         if (vertices.empty()) {
-            err << "sxk: deform: " << option << " '" << s.selector.text << "' selects no vertex of " << o.input << '\n';
+            err << "sxk: deform: " << option << " '" << s.selector.text << "' selects no vertex of "
+                << o.input << '\n';
             return std::nullopt;
         }
         return vertices;
@@ -214,35 +242,45 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     std::size_t loaded = 0;
     for (const Selected& s : *fixes) {
         const auto vertices = select("--fix", s);
-        if (!vertices) return 2;
-        for (const VertexId v : *vertices) (void)body->fix(v);
+        if (!vertices)
+            return 2;
+        for (const VertexId v : *vertices)
+            (void)body->fix(v);
     }
     for (const Selected& s : *displaces) {
         const auto vertices = select("--displace", s);
-        if (!vertices) return 2;
-        for (const VertexId v : *vertices) (void)body->fix(v, s.vector);
+        if (!vertices)
+            return 2;
+        for (const VertexId v : *vertices)
+            (void)body->fix(v, s.vector);
     }
     for (const Selected& s : *forces) {
         const auto vertices = select("--force", s);
-        if (!vertices) return 2;
-        const auto parts = load_shares(*mesh, *vertices, o.share == "area" ? Share::area : Share::equal);
+        if (!vertices)
+            return 2;
+        const auto parts =
+            load_shares(*mesh, *vertices, o.share == "area" ? Share::area : Share::equal);
         if (!parts) {
-            err << "sxk: deform: --force '" << s.selector.text << "' --share area: " << parts.reason() << '\n';
+            err << "sxk: deform: --force '" << s.selector.text
+                << "' --share area: " << parts.reason() << '\n';
             return 2;
         }
         for (std::size_t i = 0; i < vertices->size(); ++i) {
             const double part = (*parts)[i];
-            (void)body->add_force((*vertices)[i], {s.vector[0] * part, s.vector[1] * part, s.vector[2] * part});
+            (void)body->add_force((*vertices)[i],
+                                  {s.vector[0] * part, s.vector[1] * part, s.vector[2] * part});
         }
     }
     if (!o.gravity.empty()) {
-        (void)body->add_body_force({o.density * gravity[0], o.density * gravity[1], o.density * gravity[2]});
+        (void)body->add_body_force(
+            {o.density * gravity[0], o.density * gravity[1], o.density * gravity[2]});
     }
     for (VertexId v = 0; v < body->vertex_count(); ++v) {
         const Vector3 f = body->force(v);
         loaded += f[0] != 0 || f[1] != 0 || f[2] != 0;
     }
-    const auto report = solve(*body, {.tolerance = o.tolerance, .max_iterations = o.max_iterations});
+    const auto report =
+        solve(*body, {.tolerance = o.tolerance, .max_iterations = o.max_iterations});
     if (!report) {
         err << "sxk: " << o.input << ":0: " << report.reason() << '\n';
         return 2;
@@ -272,15 +310,17 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     }
     if (!report->converged) {
         err << "sxk: " << o.input << ":0: " << (model == Model::linear ? "CG" : "nonlinear CG")
-            << " did not converge in " << report->iterations << " iterations (|r| = " << report->residual
-            << ", needed " << report->threshold << "); nothing written\n";
+            << " did not converge in " << report->iterations
+            << " iterations (|r| = " << report->residual << ", needed " << report->threshold
+            << "); nothing written\n";
         return 1;
     }
     if (auto written = body->write_deformed(*mesh); !written) {
         err << "sxk: " << o.input << ":0: " << written.reason() << "; nothing written\n";
         return 1;
     }
-    if (!save_mesh_for_command(*mesh, o.output, err)) return 1;
+    if (!save_mesh_for_command(*mesh, o.output, err))
+        return 1;
 
     VertexId largest = 0;
     double largest_norm = -1;
@@ -296,7 +336,8 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         json["file"] = o.input;
         json["output"] = o.output;
         json["material"] = {{"model", o.material}, {"young", o.young}, {"poisson", o.poisson}};
-        if (planar) json["thickness"] = body->thickness();
+        if (planar)
+            json["thickness"] = body->thickness();
         json["share"] = o.share;
         json["elements"] = mesh->element_count();
         json["fixed"] = body->constrained_count();
@@ -310,14 +351,17 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         json["energy"] = report->energy;
         json["seconds"] = report->seconds;
         const Vector3 u = body->displacement(largest);
-        json["largest_displacement"] = {{"vertex", largest}, {"length", largest_norm}, {"vector", {u[0], u[1], u[2]}}};
+        json["largest_displacement"] = {
+            {"vertex", largest}, {"length", largest_norm}, {"vector", {u[0], u[1], u[2]}}};
         json["history"] = report->history;
         out << json.dump(2) << '\n';
     } else {
-        out << o.input << " -> " << o.output << ": " << mesh->element_count() << (planar ? " triangles, " : " tetrahedra, ")
-            << body->constrained_count() << " vertices held, " << loaded << " loaded\n"
-            << (model == Model::linear ? "CG: " : "nonlinear CG: ") << report->iterations << " iterations, |r| " << report->residual << " <= " << report->threshold
-            << ", energy " << report->energy << ", " << report->seconds << " s\n"
+        out << o.input << " -> " << o.output << ": " << mesh->element_count()
+            << (planar ? " triangles, " : " tetrahedra, ") << body->constrained_count()
+            << " vertices held, " << loaded << " loaded\n"
+            << (model == Model::linear ? "CG: " : "nonlinear CG: ") << report->iterations
+            << " iterations, |r| " << report->residual << " <= " << report->threshold << ", energy "
+            << report->energy << ", " << report->seconds << " s\n"
             << "largest displacement " << largest_norm << " at vertex " << largest << '\n';
     }
     return 0;

@@ -16,7 +16,9 @@
 namespace sxk::elasticity {
 namespace {
 
-bool finite(const Vector3& x) { return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]); }
+bool finite(const Vector3& x) {
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+}
 
 std::string text(double x) {
     char buffer[32];
@@ -51,22 +53,25 @@ std::string material_problem(const Material& material) {
 Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material, BodyOptions options) {
     const int dimension = mesh.topological_dimension();
     if (dimension != mesh.ambient_dimension() || dimension < 2)
-        return Refusal{RefusalCode::wrong_dimension,
-                       "elasticity: the mesh has " + std::to_string(dimension) + "-dimensional elements in " +
-                           std::to_string(mesh.ambient_dimension()) +
-                           "-dimensional space; the body needs tetrahedra in space or triangles in the plane"};
+        return Refusal{
+            RefusalCode::wrong_dimension,
+            "elasticity: the mesh has " + std::to_string(dimension) + "-dimensional elements in " +
+                std::to_string(mesh.ambient_dimension()) +
+                "-dimensional space; the body needs tetrahedra in space or triangles in the plane"};
     if (const std::string problem = detail::material_problem(material); !problem.empty())
         return Refusal{RefusalCode::bad_argument, "elasticity: " + problem};
     if (!(options.thickness > 0) || !std::isfinite(options.thickness))
-        return Refusal{RefusalCode::bad_argument,
-                       "elasticity: the thickness " + text(options.thickness) + " is not positive and finite"};
+        return Refusal{
+            RefusalCode::bad_argument,
+            "elasticity: the thickness " + text(options.thickness) + " is not positive and finite"};
     ElasticBody body;
     body.m_mesh = &mesh;
     body.m_material = material;
     body.m_options = options;
     body.m_dimension = dimension;
     body.init(mesh);
-    if (auto fresh = body.refresh(); !fresh) return fresh.refusal();
+    if (auto fresh = body.refresh(); !fresh)
+        return fresh.refusal();
     return body;
 }
 
@@ -85,72 +90,99 @@ void ElasticBody::resize_vertices(std::size_t n) {
 }
 
 Outcome<Done> ElasticBody::check_vertex(VertexId v, const char* what) const {
-    if (v >= vertex_count() || v >= m_mesh->vertex_count() || m_mesh->vertex_element(v) == invalid_id)
-        return Refusal{RefusalCode::not_found,
-                       std::string("elasticity: ") + what + ": " + std::to_string(v) + " is not a vertex of an element"};
+    if (v >= vertex_count() || v >= m_mesh->vertex_count() ||
+        m_mesh->vertex_element(v) == invalid_id)
+        return Refusal{RefusalCode::not_found, std::string("elasticity: ") + what + ": " +
+                                                   std::to_string(v) +
+                                                   " is not a vertex of an element"};
     return Done{};
 }
 
 Outcome<Done> ElasticBody::fix(VertexId v, Vector3 displacement) {
-    if (auto ok = check_vertex(v, "fix"); !ok) return ok;
-    if (!finite(displacement)) return Refusal{RefusalCode::bad_argument, "elasticity: fix: the displacement is not finite"};
+    if (auto ok = check_vertex(v, "fix"); !ok)
+        return ok;
+    if (!finite(displacement))
+        return Refusal{RefusalCode::bad_argument,
+                       "elasticity: fix: the displacement is not finite"};
     m_freedom[v] = Freedom::fixed;
-    if (m_dimension == 2) displacement[2] = 0;
-    for (std::size_t k = 0; k < 3; ++k) m_u[static_cast<Eigen::Index>(3 * v + k)] = displacement[k];
+    if (m_dimension == 2)
+        displacement[2] = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+        m_u[static_cast<Eigen::Index>(3 * v + k)] = displacement[k];
     return Done{};
 }
 
 Outcome<Done> ElasticBody::constrain_to_line(VertexId v, Vector3 direction, Vector3 displacement) {
-    if (auto ok = check_vertex(v, "constrain_to_line"); !ok) return ok;
-    const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+    if (auto ok = check_vertex(v, "constrain_to_line"); !ok)
+        return ok;
+    const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                                    direction[2] * direction[2]);
     if (!(length > 0) || !std::isfinite(length) || !finite(displacement))
         return Refusal{RefusalCode::bad_argument,
-                       "elasticity: constrain_to_line: the direction is zero or not finite, or the displacement not finite"};
+                       "elasticity: constrain_to_line: the direction is zero or not finite, or the "
+                       "displacement not finite"};
     if (m_dimension == 2 && direction[2] != 0)
         return Refusal{RefusalCode::bad_argument,
-                       "elasticity: constrain_to_line: a planar body's line must lie in the plane (direction z = 0)"};
+                       "elasticity: constrain_to_line: a planar body's line must lie in the plane "
+                       "(direction z = 0)"};
     m_freedom[v] = Freedom::line;
-    if (m_dimension == 2) displacement[2] = 0;
+    if (m_dimension == 2)
+        displacement[2] = 0;
     m_line[v] = {direction[0] / length, direction[1] / length, direction[2] / length};
-    for (std::size_t k = 0; k < 3; ++k) m_u[static_cast<Eigen::Index>(3 * v + k)] = displacement[k];
+    for (std::size_t k = 0; k < 3; ++k)
+        m_u[static_cast<Eigen::Index>(3 * v + k)] = displacement[k];
     return Done{};
 }
 
 Outcome<Done> ElasticBody::free(VertexId v) {
-    if (auto ok = check_vertex(v, "free"); !ok) return ok;
+    if (auto ok = check_vertex(v, "free"); !ok)
+        return ok;
     m_freedom[v] = Freedom::free;
     return Done{};
 }
 
 std::size_t ElasticBody::constrained_count() const {
-    return static_cast<std::size_t>(std::count_if(m_freedom.begin(), m_freedom.end(), [](Freedom f) { return f != Freedom::free; }));
+    return static_cast<std::size_t>(std::count_if(m_freedom.begin(), m_freedom.end(),
+                                                  [](Freedom f) { return f != Freedom::free; }));
 }
 
 Outcome<Done> ElasticBody::add_force(VertexId v, Vector3 force) {
-    if (auto ok = check_vertex(v, "add_force"); !ok) return ok;
-    if (!finite(force)) return Refusal{RefusalCode::bad_argument, "elasticity: add_force: the force is not finite"};
-    if (m_dimension == 2) force[2] = 0;
-    for (std::size_t k = 0; k < 3; ++k) m_force[static_cast<Eigen::Index>(3 * v + k)] += force[k];
+    if (auto ok = check_vertex(v, "add_force"); !ok)
+        return ok;
+    if (!finite(force))
+        return Refusal{RefusalCode::bad_argument, "elasticity: add_force: the force is not finite"};
+    if (m_dimension == 2)
+        force[2] = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+        m_force[static_cast<Eigen::Index>(3 * v + k)] += force[k];
     return Done{};
 }
 
 Outcome<Done> ElasticBody::add_body_force(Vector3 per_volume) {
-    if (!finite(per_volume)) return Refusal{RefusalCode::bad_argument, "elasticity: add_body_force: the force is not finite"};
-    if (auto fresh = refresh(); !fresh) return fresh;
-    if (m_dimension == 2) per_volume[2] = 0;
+    if (!finite(per_volume))
+        return Refusal{RefusalCode::bad_argument,
+                       "elasticity: add_body_force: the force is not finite"};
+    if (auto fresh = refresh(); !fresh)
+        return fresh;
+    if (m_dimension == 2)
+        per_volume[2] = 0;
     const auto corner_count = static_cast<std::size_t>(m_dimension + 1);
     for (const ElementId t : m_elements) {
         const double part = m_rest[t].volume / static_cast<double>(corner_count);
         for (std::size_t j = 0; j < corner_count; ++j)
-            for (std::size_t k = 0; k < 3; ++k) m_force[static_cast<Eigen::Index>(3 * m_corners[t][j] + k)] += part * per_volume[k];
+            for (std::size_t k = 0; k < 3; ++k)
+                m_force[static_cast<Eigen::Index>(3 * m_corners[t][j] + k)] += part * per_volume[k];
     }
     return Done{};
 }
 
-void ElasticBody::clear_forces() { m_force.setZero(); }
+void ElasticBody::clear_forces() {
+    m_force.setZero();
+}
 
 template <int D, class Kernel>
-bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const Kernel& kernel) const {
+bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out,
+                         const Kernel& kernel) const {
     const std::size_t count = m_elements.size();
     constexpr std::size_t corner_count = D + 1;  // known to the compiler: the gather unrolls
     m_corner_forces.resize(12 * count);
@@ -165,19 +197,22 @@ bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const K
             double corners[12];
             for (std::size_t j = 0; j < corner_count; ++j) {
                 const std::size_t v = m_corners[t][j];
-                for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = v < vertices ? d[static_cast<Eigen::Index>(3 * v + k)] : 0;
+                for (std::size_t k = 0; k < 3; ++k)
+                    corners[3 * j + k] = v < vertices ? d[static_cast<Eigen::Index>(3 * v + k)] : 0;
             }
             if (!kernel(m_rest[t], corners, m_corner_forces.data() + 12 * e, m_element_energy[e]))
                 ok.store(false, std::memory_order_relaxed);
         }
     });
     out.setZero(d.size());
-    const std::size_t starred = std::min(m_star_begin.size() - 1, vertices);  // the vertices of the last refresh
+    const std::size_t starred =
+        std::min(m_star_begin.size() - 1, vertices);  // the vertices of the last refresh
     tbb::parallel_for(Range(0, starred, 4096), [&](const Range& r) {
         for (std::size_t v = r.begin(); v != r.end(); ++v) {
             Eigen::Vector3d sum = Eigen::Vector3d::Zero();
             for (std::uint32_t i = m_star_begin[v]; i < m_star_begin[v + 1]; ++i)
-                sum += Eigen::Map<const Eigen::Vector3d>(m_corner_forces.data() + 3 * std::size_t{m_star[i]});
+                sum += Eigen::Map<const Eigen::Vector3d>(m_corner_forces.data() +
+                                                         3 * std::size_t{m_star[i]});
             out.segment<3>(3 * static_cast<Eigen::Index>(v)) = sum;
         }
     });
@@ -203,7 +238,8 @@ bool ElasticBody::elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out)
         multiply(u, out);
         return true;
     }
-    if (m_dimension == 3) return gather<3>(u, out, detail::neo_hookean_forces<3>);
+    if (m_dimension == 3)
+        return gather<3>(u, out, detail::neo_hookean_forces<3>);
     return gather<2>(u, out, detail::neo_hookean_forces<2>);
 }
 
@@ -213,19 +249,23 @@ double ElasticBody::strain_energy(const Eigen::VectorXd& u) const {
         multiply(u, forces);
         return 0.5 * u.dot(forces);
     }
-    if (!elastic_forces(u, forces)) return std::numeric_limits<double>::infinity();
+    if (!elastic_forces(u, forces))
+        return std::numeric_limits<double>::infinity();
     // in element order, serially: the same sum on any number of threads
     double sum = 0;
-    for (const double e : m_element_energy) sum += e;
+    for (const double e : m_element_energy)
+        sum += e;
     return sum;
 }
 
 void ElasticBody::project(Eigen::VectorXd& v) const {
     const std::size_t n = std::min(vertex_count(), static_cast<std::size_t>(v.size()) / 3);
     if (m_dimension == 2)
-        for (std::size_t i = 0; i < n; ++i) v[static_cast<Eigen::Index>(3 * i + 2)] = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            v[static_cast<Eigen::Index>(3 * i + 2)] = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        if (m_freedom[i] == Freedom::free) continue;
+        if (m_freedom[i] == Freedom::free)
+            continue;
         auto x = v.segment<3>(3 * static_cast<Eigen::Index>(i));
         if (m_freedom[i] == Freedom::fixed) {
             x.setZero();
@@ -236,18 +276,23 @@ void ElasticBody::project(Eigen::VectorXd& v) const {
     }
 }
 
-double ElasticBody::energy() const { return strain_energy(m_u) - m_force.dot(m_u); }
+double ElasticBody::energy() const {
+    return strain_energy(m_u) - m_force.dot(m_u);
+}
 
 Eigen::Matrix<double, 12, 12> ElasticBody::element_stiffness(ElementId t) const {
     Eigen::Matrix<double, 12, 12> k = Eigen::Matrix<double, 12, 12>::Zero();
-    if (!std::binary_search(m_elements.begin(), m_elements.end(), t)) return k;
+    if (!std::binary_search(m_elements.begin(), m_elements.end(), t))
+        return k;
     const detail::RestShape& rest = m_rest[t];
     const int size = 3 * (m_dimension + 1);
     for (int column = 0; column < size; ++column) {
         double unit[12] = {};
         unit[column] = 1;
-        if (m_dimension == 3) detail::linear_element_forces<3>(rest, unit, k.col(column).data());
-        else detail::linear_element_forces<2>(rest, unit, k.col(column).data());
+        if (m_dimension == 3)
+            detail::linear_element_forces<3>(rest, unit, k.col(column).data());
+        else
+            detail::linear_element_forces<2>(rest, unit, k.col(column).data());
     }
     return k;
 }

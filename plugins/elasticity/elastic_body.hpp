@@ -89,9 +89,10 @@ enum class Freedom : std::uint8_t { free, fixed, line };
 
 // The body of a tetrahedral mesh in space, or of a triangle mesh in the plane: a thin slab in
 // plane stress (§6.3), whose vertices keep 3 unknowns with z held at 0 by project(), so that the
-// solvers, the constraints and the loads are the same for both. To follow edits of the mesh, attach it as a watcher
-// (mesh.add_watcher(body), or a ScopedWatcher) once it sits where it will stay: a body must not
-// be moved or copied while attached. It then keeps its state in step with the mesh (thesis §7.4):
+// solvers, the constraints and the loads are the same for both. To follow edits of the mesh, attach
+// it as a watcher (mesh.add_watcher(body), or a ScopedWatcher) once it sits where it will stay: a
+// body must not be moved or copied while attached. It then keeps its state in step with the mesh
+// (thesis §7.4):
 //
 //   - added and changed elements get their rest shapes computed, and so do the elements around
 //     a vertex whose reference position moved; the others keep theirs;
@@ -131,7 +132,8 @@ public:
     void element_removed(const Mesh& mesh, ElementId element, const Simplex& was) override;
     void element_changed(const Mesh& mesh, ElementId element, const Simplex& was) override;
     void element_added(const Mesh& mesh, ElementId element) override;
-    void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) override;
+    void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices,
+                        PositionSet which) override;
 
     const Mesh& mesh() const { return *m_mesh; }
     // 3 (tetrahedra in space) or 2 (triangles in the plane).
@@ -151,11 +153,14 @@ public:
     // (bad_argument; in a planar body also a line out of the plane). Setting a constraint sets
     // u(v) to the prescribed displacement. A planar body ignores the z of displacements and forces.
     Outcome<Done> fix(VertexId v, Vector3 displacement = {0, 0, 0});
-    Outcome<Done> constrain_to_line(VertexId v, Vector3 direction, Vector3 displacement = {0, 0, 0});
+    Outcome<Done> constrain_to_line(VertexId v, Vector3 direction,
+                                    Vector3 displacement = {0, 0, 0});
     Outcome<Done> free(VertexId v);
     Freedom freedom(VertexId v) const { return m_freedom[v]; }
     // The unit direction of v's line constraint (zero for other vertices).
-    Vector3 line_direction(VertexId v) const { return m_freedom[v] == Freedom::line ? m_line[v] : Vector3{0, 0, 0}; }
+    Vector3 line_direction(VertexId v) const {
+        return m_freedom[v] == Freedom::line ? m_line[v] : Vector3{0, 0, 0};
+    }
     std::size_t constrained_count() const;
 
     // External nodal forces; add_force accumulates. Refuse a vertex in no element (not_found) and
@@ -168,7 +173,9 @@ public:
     // (bad_argument). Like every load it stays on its vertices: after an edit, add it anew.
     Outcome<Done> add_body_force(Vector3 per_volume);
     void clear_forces();
-    Vector3 force(VertexId v) const { return {m_force[3 * v], m_force[3 * v + 1], m_force[3 * v + 2]}; }
+    Vector3 force(VertexId v) const {
+        return {m_force[3 * v], m_force[3 * v + 1], m_force[3 * v + 2]};
+    }
 
     Vector3 displacement(VertexId v) const { return {m_u[3 * v], m_u[3 * v + 1], m_u[3 * v + 2]}; }
     // The unknowns, 3 per vertex: the solvers start from them (a warm start) and leave the
@@ -249,16 +256,18 @@ private:
     std::vector<Freedom> m_freedom;
     std::vector<Vector3> m_line;  // the unit direction of a line constraint
     Eigen::VectorXd m_u, m_force;
-    mutable std::vector<double> m_corner_forces;  // 12 per entry of m_elements (a triangle's: 9 used)
-    mutable std::vector<double> m_element_energy; // per entry of m_elements
+    mutable std::vector<double>
+        m_corner_forces;  // 12 per entry of m_elements (a triangle's: 9 used)
+    mutable std::vector<double> m_element_energy;  // per entry of m_elements
 
     // what the events recorded for the next refresh
     bool m_stale = false;
-    bool m_rebuild_all = false;           // init: every rest shape again
-    std::vector<ElementId> m_dirty;       // rest shapes to compute
-    std::vector<char> m_known;            // per vertex: its displacement is set
-    std::vector<Simplex> m_edit_removed;  // the current edit's removed and changed elements, as they were
-    bool m_edit_adding = false;           // the current edit reported an addition already
+    bool m_rebuild_all = false;      // init: every rest shape again
+    std::vector<ElementId> m_dirty;  // rest shapes to compute
+    std::vector<char> m_known;       // per vertex: its displacement is set
+    std::vector<Simplex>
+        m_edit_removed;          // the current edit's removed and changed elements, as they were
+    bool m_edit_adding = false;  // the current edit reported an addition already
 };
 
 }  // namespace sxk::elasticity

@@ -21,4 +21,5 @@ private:
 }  // namespace sxk::elasticity
 
 SXK_PLUGIN(elasticity, sxk::elasticity::ElasticityPlugin, "0.2.0",
-           "linear and neo-Hookean elasticity: matrix-free CG on tetrahedra and plane-stress triangles; sxk deform");
+           "linear and neo-Hookean elasticity: matrix-free CG on tetrahedra and plane-stress "
+           "triangles; sxk deform");

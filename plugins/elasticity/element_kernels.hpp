@@ -20,7 +20,8 @@ Eigen::Matrix<double, D, D> edge_matrix(const Mesh& mesh, const Simplex& s) {
     const Point& origin = mesh.reference(s.vertex(D));
     for (int j = 0; j < D; ++j)
         for (int k = 0; k < D; ++k)
-            z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
+            z(k, j) = mesh.reference(s.vertex(j))[static_cast<std::size_t>(k)] -
+                      origin[static_cast<std::size_t>(k)];
     return z;
 }
 
@@ -31,8 +32,10 @@ RestShape rest_shape(const Eigen::Matrix<double, D, D>& z, double thickness) {
     const Eigen::Matrix<double, D, D> inverse = z.inverse();
     RestShape rest;
     for (int j = 0; j < D; ++j)
-        for (int k = 0; k < D; ++k) rest.gradient[static_cast<std::size_t>(3 * j + k)] = inverse(j, k);
-    rest.volume = D == 3 ? std::abs(z.determinant()) / 6 : std::abs(z.determinant()) / 2 * thickness;
+        for (int k = 0; k < D; ++k)
+            rest.gradient[static_cast<std::size_t>(3 * j + k)] = inverse(j, k);
+    rest.volume =
+        D == 3 ? std::abs(z.determinant()) / 6 : std::abs(z.determinant()) / 2 * thickness;
     return rest;
 }
 
@@ -44,7 +47,8 @@ Eigen::Matrix<double, D, D> displacement_gradient(const RestShape& rest, const d
     for (int j = 0; j < D; ++j)
         for (int i = 0; i < D; ++i) {
             const double w = d[3 * j + i] - d[3 * D + i];
-            for (int k = 0; k < D; ++k) g(i, k) += w * rest.gradient[static_cast<std::size_t>(3 * j + k)];
+            for (int k = 0; k < D; ++k)
+                g(i, k) += w * rest.gradient[static_cast<std::size_t>(3 * j + k)];
         }
     return g;
 }
@@ -59,13 +63,16 @@ void corner_forces(const RestShape& rest, const Eigen::Matrix<double, D, D>& t, 
     for (int j = 0; j < D; ++j) {
         for (int i = 0; i < D; ++i) {
             double f = 0;
-            for (int k = 0; k < D; ++k) f += t(i, k) * b[3 * j + k];
+            for (int k = 0; k < D; ++k)
+                f += t(i, k) * b[3 * j + k];
             out[3 * j + i] = f;
             last[i] -= f;
         }
-        if constexpr (D == 2) out[3 * j + 2] = 0;
+        if constexpr (D == 2)
+            out[3 * j + 2] = 0;
     }
-    for (int i = 0; i < 3; ++i) out[3 * D + i] = last[i];
+    for (int i = 0; i < 3; ++i)
+        out[3 * D + i] = last[i];
 }
 
 // K_t d for one linear element (of material rest.lame): the force on each corner that the
@@ -86,13 +93,15 @@ inline void linear_tetrahedron_forces(const RestShape& rest, const double* d, do
     for (int j = 0; j < 3; ++j) {
         const double w[3] = {d[3 * j] - d[9], d[3 * j + 1] - d[10], d[3 * j + 2] - d[11]};
         for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < 3; ++k) g[i][k] += w[i] * b[3 * j + k];
+            for (int k = 0; k < 3; ++k)
+                g[i][k] += w[i] * b[3 * j + k];
     }
     const double v = rest.volume, trace = g[0][0] + g[1][1] + g[2][2];
     const double two_mu = 2 * lame.mu * v, lambda = lame.lambda * trace * v, mu = lame.mu * v;
-    const double t[3][3] = {{two_mu * g[0][0] + lambda, mu * (g[0][1] + g[1][0]), mu * (g[0][2] + g[2][0])},
-                            {mu * (g[0][1] + g[1][0]), two_mu * g[1][1] + lambda, mu * (g[1][2] + g[2][1])},
-                            {mu * (g[0][2] + g[2][0]), mu * (g[1][2] + g[2][1]), two_mu * g[2][2] + lambda}};
+    const double t[3][3] = {
+        {two_mu * g[0][0] + lambda, mu * (g[0][1] + g[1][0]), mu * (g[0][2] + g[2][0])},
+        {mu * (g[0][1] + g[1][0]), two_mu * g[1][1] + lambda, mu * (g[1][2] + g[2][1])},
+        {mu * (g[0][2] + g[2][0]), mu * (g[1][2] + g[2][1]), two_mu * g[2][2] + lambda}};
     double last[3] = {0, 0, 0};
     for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 3; ++i) {
@@ -100,7 +109,8 @@ inline void linear_tetrahedron_forces(const RestShape& rest, const double* d, do
             out[3 * j + i] = f;
             last[i] -= f;
         }
-    for (int i = 0; i < 3; ++i) out[9 + i] = last[i];
+    for (int i = 0; i < 3; ++i)
+        out[9 + i] = last[i];
 }
 
 // The triangle's, in plane stress: its lambda is the plane-stress one (eq. 6.3), set in its rest
@@ -114,8 +124,10 @@ inline void linear_triangle_forces(const RestShape& rest, const double* d, doubl
 
 template <int D>
 void linear_element_forces(const RestShape& rest, const double* d, double* out) {
-    if constexpr (D == 3) linear_tetrahedron_forces(rest, d, out);
-    else linear_triangle_forces(rest, d, out);
+    if constexpr (D == 3)
+        linear_tetrahedron_forces(rest, d, out);
+    else
+        linear_triangle_forces(rest, d, out);
 }
 
 // The neo-Hookean element of eq. 4.6, W = 1/2 (mu (trace C - D) - mu ln det C + lambda (J - 1)^2)
@@ -127,14 +139,18 @@ void linear_element_forces(const RestShape& rest, const double* d, double* out) 
 // untouched) when the element is inverted or flat at d (J <= 0: W is infinite there).
 template <int D>
 bool neo_hookean_forces(const RestShape& rest, const double* d, double* out, double& energy) {
-    const Eigen::Matrix<double, D, D> f = Eigen::Matrix<double, D, D>::Identity() + displacement_gradient<D>(rest, d);
+    const Eigen::Matrix<double, D, D> f =
+        Eigen::Matrix<double, D, D>::Identity() + displacement_gradient<D>(rest, d);
     const double j = f.determinant();
-    if (!(j > 0)) return false;
+    if (!(j > 0))
+        return false;
     const Eigen::Matrix<double, D, D> inverse_transpose = f.inverse().transpose();
     const double mu = rest.lame.mu, lambda = rest.lame.lambda, v = rest.volume;
-    const Eigen::Matrix<double, D, D> p = mu * (f - inverse_transpose) + (lambda * (j - 1) * j) * inverse_transpose;
+    const Eigen::Matrix<double, D, D> p =
+        mu * (f - inverse_transpose) + (lambda * (j - 1) * j) * inverse_transpose;
     corner_forces<D>(rest, (v * p).eval(), out);
-    energy = v * 0.5 * (mu * (f.squaredNorm() - D) - 2 * mu * std::log(j) + lambda * (j - 1) * (j - 1));
+    energy =
+        v * 0.5 * (mu * (f.squaredNorm() - D) - 2 * mu * std::log(j) + lambda * (j - 1) * (j - 1));
     return true;
 }
 

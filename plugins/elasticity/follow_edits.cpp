@@ -22,16 +22,20 @@ template <int D>
 std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, const Point& x) {
     const Point& origin = mesh.reference(s.vertex(D));
     const Eigen::FullPivLU<Eigen::Matrix<double, D, D>> lu(detail::edge_matrix<D>(mesh, s));
-    if (!lu.isInvertible()) return std::nullopt;
+    if (!lu.isInvertible())
+        return std::nullopt;
     Eigen::Matrix<double, D, 1> offset;
-    for (int k = 0; k < D; ++k) offset[k] = x[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
+    for (int k = 0; k < D; ++k)
+        offset[k] = x[static_cast<std::size_t>(k)] - origin[static_cast<std::size_t>(k)];
     const Eigen::Matrix<double, D, 1> w = lu.solve(offset);
     std::array<double, 4> b{};
-    for (int j = 0; j < D; ++j) b[static_cast<std::size_t>(j)] = w[j];
+    for (int j = 0; j < D; ++j)
+        b[static_cast<std::size_t>(j)] = w[j];
     b[D] = 1 - w.sum();
     constexpr double slack = 1e-9;
     for (const double bj : b)
-        if (!(bj >= -slack)) return std::nullopt;
+        if (!(bj >= -slack))
+            return std::nullopt;
     return b;
 }
 
@@ -81,16 +85,21 @@ void ElasticBody::element_added(const Mesh& mesh, ElementId element) {
 void ElasticBody::take_element(const Mesh& mesh, ElementId element) {
     m_stale = true;
     m_dirty.push_back(element);
-    if (mesh.vertex_count() > vertex_count()) resize_vertices(mesh.vertex_count());
+    if (mesh.vertex_count() > vertex_count())
+        resize_vertices(mesh.vertex_count());
     const Simplex& s = mesh.simplex(element);
     for (int j = 0; j < s.count(); ++j)
-        if (const VertexId v = s.vertex(j); !m_known[v]) interpolate_new_vertex(mesh, v, s);
+        if (const VertexId v = s.vertex(j); !m_known[v])
+            interpolate_new_vertex(mesh, v, s);
 }
 
-void ElasticBody::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
-    if (!writes_reference(which)) return;  // the deformed positions are ours to write, not a rest shape
+void ElasticBody::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices,
+                                 PositionSet which) {
+    if (!writes_reference(which))
+        return;  // the deformed positions are ours to write, not a rest shape
     for (const VertexId v : vertices)
-        for (const ElementId t : star(mesh, v)) m_dirty.push_back(t);
+        for (const ElementId t : star(mesh, v))
+            m_dirty.push_back(t);
     m_stale = true;
 }
 
@@ -100,10 +109,14 @@ void ElasticBody::interpolate_new_vertex(const Mesh& mesh, VertexId v, const Sim
     bool found = false;
     for (const Simplex& was : m_edit_removed) {
         bool usable = true;  // every corner's displacement must be set already
-        for (int j = 0; j < was.count(); ++j) usable = usable && was.vertex(j) < vertex_count() && m_known[was.vertex(j)];
-        if (!usable) continue;
+        for (int j = 0; j < was.count(); ++j)
+            usable = usable && was.vertex(j) < vertex_count() && m_known[was.vertex(j)];
+        if (!usable)
+            continue;
         if (const auto b = inside(mesh, was, x)) {
-            for (int j = 0; j < was.count(); ++j) u += (*b)[static_cast<std::size_t>(j)] * m_u.segment<3>(3 * static_cast<Eigen::Index>(was.vertex(j)));
+            for (int j = 0; j < was.count(); ++j)
+                u += (*b)[static_cast<std::size_t>(j)] *
+                     m_u.segment<3>(3 * static_cast<Eigen::Index>(was.vertex(j)));
             found = true;
             break;
         }
@@ -115,50 +128,63 @@ void ElasticBody::interpolate_new_vertex(const Mesh& mesh, VertexId v, const Sim
                 u += m_u.segment<3>(3 * static_cast<Eigen::Index>(w));
                 ++count;
             }
-        if (count > 0) u /= count;
+        if (count > 0)
+            u /= count;
     }
     m_u.segment<3>(3 * static_cast<Eigen::Index>(v)) = u;
     m_known[v] = 1;
 }
 
 Outcome<Done> ElasticBody::refresh() {
-    if (!m_stale) return Done{};
+    if (!m_stale)
+        return Done{};
     const Mesh& mesh = *m_mesh;
-    if (mesh.vertex_count() != vertex_count()) resize_vertices(mesh.vertex_count());  // a rollback may drop vertices
+    if (mesh.vertex_count() != vertex_count())
+        resize_vertices(mesh.vertex_count());  // a rollback may drop vertices
     m_rest.resize(mesh.element_capacity());
     m_corners.resize(mesh.element_capacity());
     if (m_rebuild_all) {
         m_dirty.clear();
-        for (const ElementId t : sxk::elements(mesh)) m_dirty.push_back(t);
+        for (const ElementId t : sxk::elements(mesh))
+            m_dirty.push_back(t);
     }
     std::sort(m_dirty.begin(), m_dirty.end());
     m_dirty.erase(std::unique(m_dirty.begin(), m_dirty.end()), m_dirty.end());
     AttributeId materials = mesh.find_element_attribute(material_attribute);
-    if (materials != invalid_id && mesh.element_attribute_components(materials) != 2) materials = invalid_id;
+    if (materials != invalid_id && mesh.element_attribute_components(materials) != 2)
+        materials = invalid_id;
     for (const ElementId t : m_dirty) {
-        if (!mesh.is_element(t)) continue;  // added, then removed again
+        if (!mesh.is_element(t))
+            continue;  // added, then removed again
         Material material = m_material;
         if (materials != invalid_id) {
             const std::span<const double> values = mesh.element_attribute(materials, t);
             material = {values[0], values[1]};
             if (const std::string problem = detail::material_problem(material); !problem.empty())
                 return Refusal{RefusalCode::bad_argument,
-                               "elasticity: element " + std::to_string(t) + " (" + material_attribute + "): " + problem, t};
+                               "elasticity: element " + std::to_string(t) + " (" +
+                                   material_attribute + "): " + problem,
+                               t};
         }
         const Simplex& s = mesh.simplex(t);
-        const detail::RestShape rest = m_dimension == 3
-                                           ? detail::rest_shape<3>(detail::edge_matrix<3>(mesh, s), thickness())
-                                           : detail::rest_shape<2>(detail::edge_matrix<2>(mesh, s), thickness());
+        const detail::RestShape rest =
+            m_dimension == 3 ? detail::rest_shape<3>(detail::edge_matrix<3>(mesh, s), thickness())
+                             : detail::rest_shape<2>(detail::edge_matrix<2>(mesh, s), thickness());
         // flat by the exact predicate, or so thin that its volume rounds to zero in doubles (a
         // sliver of random moves did: exact orientation positive, determinant 0)
-        const bool finite = std::all_of(rest.gradient.begin(), rest.gradient.end(), [](double g) { return std::isfinite(g); });
-        if (!(rest.volume > 0) || !finite || element_orientation(mesh, t, Positions::reference) == Sign::zero)
+        const bool finite = std::all_of(rest.gradient.begin(), rest.gradient.end(),
+                                        [](double g) { return std::isfinite(g); });
+        if (!(rest.volume > 0) || !finite ||
+            element_orientation(mesh, t, Positions::reference) == Sign::zero)
             return Refusal{RefusalCode::would_flatten,
-                           "elasticity: element " + std::to_string(t) + " is flat at rest (its stiffness is undefined)", t};
+                           "elasticity: element " + std::to_string(t) +
+                               " is flat at rest (its stiffness is undefined)",
+                           t};
         m_rest[t] = rest;
         m_rest[t].lame = m_dimension == 3 ? lame(material) : plane_stress_lame(material);
         m_corners[t].fill(invalid_id);
-        for (int j = 0; j < s.count(); ++j) m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
+        for (int j = 0; j < s.count(); ++j)
+            m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
     }
     rebuild_elements_and_stars();
     // E of eq. 6.9: the stiffest element's (2 mu (1 + nu) = E; in plane stress nu = lambda /
@@ -166,7 +192,8 @@ Outcome<Done> ElasticBody::refresh() {
     m_largest_young = m_elements.empty() ? m_material.young : 0;
     for (const ElementId t : m_elements) {
         const Lame& l = m_rest[t].lame;
-        const double nu = m_dimension == 3 ? l.lambda / (2 * (l.lambda + l.mu)) : l.lambda / (l.lambda + 2 * l.mu);
+        const double nu = m_dimension == 3 ? l.lambda / (2 * (l.lambda + l.mu))
+                                           : l.lambda / (l.lambda + 2 * l.mu);
         m_largest_young = std::max(m_largest_young, 2 * l.mu * (1 + nu));
     }
     m_dirty.clear();
@@ -181,7 +208,8 @@ void ElasticBody::rebuild_elements_and_stars() {
     const Mesh& mesh = *m_mesh;
     const std::size_t n = vertex_count();
     m_elements.clear();
-    for (const ElementId t : sxk::elements(mesh)) m_elements.push_back(t);
+    for (const ElementId t : sxk::elements(mesh))
+        m_elements.push_back(t);
     Vector3 low{}, high{};
     low.fill(std::numeric_limits<double>::infinity());
     high.fill(-std::numeric_limits<double>::infinity());
@@ -196,7 +224,8 @@ void ElasticBody::rebuild_elements_and_stars() {
                 high[k] = std::max(high[k], mesh.reference(v)[k]);
             }
         }
-    for (std::size_t v = 0; v < n; ++v) m_star_begin[v + 1] += m_star_begin[v];
+    for (std::size_t v = 0; v < n; ++v)
+        m_star_begin[v + 1] += m_star_begin[v];
     m_star.resize(m_star_begin[n]);
     std::vector<std::uint32_t> next(m_star_begin.begin(), m_star_begin.end() - 1);
     for (std::size_t e = 0; e < m_elements.size(); ++e)

@@ -19,6 +19,7 @@ enum class Share {
 // triangle mesh) gives each corner an equal part of its area (length), in reference positions:
 // the consistent nodal loads of a uniform traction on linear elements. Refuses (not_found) by
 // area when no boundary face has all its corners selected.
-Outcome<std::vector<double>> load_shares(const Mesh& mesh, std::span<const VertexId> vertices, Share share);
+Outcome<std::vector<double>> load_shares(const Mesh& mesh, std::span<const VertexId> vertices,
+                                         Share share);
 
 }  // namespace sxk::elasticity

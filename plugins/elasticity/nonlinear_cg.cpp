@@ -8,12 +8,15 @@
 
 namespace sxk::elasticity {
 
-Outcome<NonlinearRelaxation> NonlinearRelaxation::start(ElasticBody& body, const SolveOptions& options) {
-    if (auto ready = detail::prepare_solve(body); !ready) return ready.refusal();
+Outcome<NonlinearRelaxation> NonlinearRelaxation::start(ElasticBody& body,
+                                                        const SolveOptions& options) {
+    if (auto ready = detail::prepare_solve(body); !ready)
+        return ready.refusal();
     NonlinearRelaxation relaxation(body, options);
     if (!relaxation.residual_at(0, relaxation.m_r))
         return Refusal{RefusalCode::would_invert,
-                       "elasticity: the starting displacements invert an element, where the neo-Hookean energy is "
+                       "elasticity: the starting displacements invert an element, where the "
+                       "neo-Hookean energy is "
                        "infinite; start from rest (set the displacements to zero)"};
     relaxation.m_report.threshold = detail::stop_threshold(body, options, relaxation.m_g);
     relaxation.m_rr = relaxation.m_r.squaredNorm();
@@ -25,9 +28,11 @@ Outcome<NonlinearRelaxation> NonlinearRelaxation::start(ElasticBody& body, const
 
 bool NonlinearRelaxation::residual_at(double alpha, Eigen::VectorXd& r) {
     const Eigen::VectorXd& u = m_body->displacements();
-    if (alpha != 0) m_trial = u + alpha * m_d;
+    if (alpha != 0)
+        m_trial = u + alpha * m_d;
     ++m_report.evaluations;
-    if (!m_body->elastic_forces(alpha != 0 ? m_trial : u, m_g)) return false;
+    if (!m_body->elastic_forces(alpha != 0 ? m_trial : u, m_g))
+        return false;
     r = m_body->forces() - m_g;
     m_body->project(r);
     return true;
@@ -41,27 +46,33 @@ double NonlinearRelaxation::line_search() {
     ++m_report.evaluations;
     m_body->project(m_q);
     const double curvature = m_d.dot(m_q);
-    if (!(slope > 0) || !(curvature > 0)) return 0;
+    if (!(slope > 0) || !(curvature > 0))
+        return 0;
     double previous = 0, previous_slope = slope;
     double alpha = slope / curvature;
     // a step that inverts an element is halved until it does not
     for (int halving = 0; !residual_at(alpha, m_q); ++halving) {
-        if (halving == 60) return 0;
+        if (halving == 60)
+            return 0;
         alpha /= 2;
     }
     double current_slope = m_d.dot(m_q);
     for (std::size_t step = 0; step < m_options.line_search_steps; ++step) {
-        if (std::abs(current_slope) <= m_options.line_search_tolerance * slope) break;
+        if (std::abs(current_slope) <= m_options.line_search_tolerance * slope)
+            break;
         const double denominator = previous_slope - current_slope;
-        double next = denominator != 0 ? alpha + current_slope * (alpha - previous) / denominator : 2 * alpha;
+        double next =
+            denominator != 0 ? alpha + current_slope * (alpha - previous) / denominator : 2 * alpha;
         // keep the bracket sensible: positive, and no wild jumps on a curved slope
-        if (!(next > 0) || !std::isfinite(next)) next = alpha / 2;
+        if (!(next > 0) || !std::isfinite(next))
+            next = alpha / 2;
         next = std::min(next, 4 * alpha);
         previous = alpha;
         previous_slope = current_slope;
         alpha = next;
         for (int halving = 0; !residual_at(alpha, m_q); ++halving) {
-            if (halving == 60) return 0;
+            if (halving == 60)
+                return 0;
             alpha = (alpha + previous) / 2;  // back towards the last step that did not invert
         }
         current_slope = m_d.dot(m_q);
@@ -73,8 +84,11 @@ bool NonlinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
     Eigen::VectorXd& u = m_body->displacements();
     for (std::size_t i = 0; i < iterations && !m_stalled; ++i) {
-        if (std::sqrt(m_rr) <= m_report.threshold || m_report.iterations >= m_options.max_iterations) break;
-        if (!(m_d.dot(m_r) > 0)) m_d = m_r;  // not a descent direction: restart along the residual
+        if (std::sqrt(m_rr) <= m_report.threshold ||
+            m_report.iterations >= m_options.max_iterations)
+            break;
+        if (!(m_d.dot(m_r) > 0))
+            m_d = m_r;  // not a descent direction: restart along the residual
         const double alpha = line_search();
         if (!(alpha > 0)) {
             m_stalled = true;

@@ -28,7 +28,7 @@ struct SolveOptions {
     double tolerance = 1e-3;
     std::size_t max_iterations = 100000;
     StopCriterion stop = StopCriterion::with_reactions;
-    double rounding = 1e-12;      // epsilon_round of eq. 6.9
+    double rounding = 1e-12;           // epsilon_round of eq. 6.9
     std::size_t recompute_every = 50;  // r = P(f - K u) afresh every so many steps (drift)
     // Nonlinear CG: the line search along d stops when |d . r(u + alpha d)| <= this times
     // |d . r(u)| (the thesis' epsilon_newton, §4.5: 0.1 worked best), or after
@@ -38,15 +38,16 @@ struct SolveOptions {
 };
 
 struct SolveReport {
-    std::size_t iterations = 0;  // CG steps (linear: matrix-vector products after the first residual)
+    std::size_t iterations =
+        0;  // CG steps (linear: matrix-vector products after the first residual)
     // passes over the elements (products or force evaluations), the first residual's included
     std::size_t evaluations = 0;
     bool converged = false;
-    double residual = 0;   // ||r|| at the end (r projected onto the allowed motions)
-    double threshold = 0;  // what ||r|| had to reach
+    double residual = 0;          // ||r|| at the end (r projected onto the allowed motions)
+    double threshold = 0;         // what ||r|| had to reach
     std::vector<double> history;  // ||r|| before each iteration and at the end
-    double seconds = 0;  // in the solver (LinearRelaxation: in run, summed over its calls)
-    double energy = 0;  // the potential energy at the end (ElasticBody::energy)
+    double seconds = 0;           // in the solver (LinearRelaxation: in run, summed over its calls)
+    double energy = 0;            // the potential energy at the end (ElasticBody::energy)
 };
 
 // Minimises the potential energy over the displacements the constraints allow, by linear CG
@@ -67,7 +68,8 @@ public:
     SolveReport report() const;
 
 protected:
-    Relaxation(ElasticBody& body, const SolveOptions& options) : m_body(&body), m_options(options) {}
+    Relaxation(ElasticBody& body, const SolveOptions& options)
+        : m_body(&body), m_options(options) {}
     // The end of a run() that began at `start`: the residual, converged and the time; converged.
     bool finish_run(std::chrono::steady_clock::time_point start);
 
@@ -83,10 +85,12 @@ template <class R>
 Outcome<SolveReport> solve_with(ElasticBody& body, const SolveOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     auto relaxation = R::start(body, options);
-    if (!relaxation) return relaxation.refusal();
+    if (!relaxation)
+        return relaxation.refusal();
     relaxation->run(options.max_iterations);
     SolveReport report = relaxation->report();
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
 }
 }  // namespace detail
@@ -128,7 +132,8 @@ public:
     bool run(std::size_t iterations);
 
 private:
-    NonlinearRelaxation(ElasticBody& body, const SolveOptions& options) : Relaxation(body, options) {}
+    NonlinearRelaxation(ElasticBody& body, const SolveOptions& options)
+        : Relaxation(body, options) {}
     // r = P(f - g(u)) at u + alpha d; false when that inverts an element
     bool residual_at(double alpha, Eigen::VectorXd& r);
     double line_search();
@@ -153,7 +158,8 @@ namespace detail {
 Outcome<Done> prepare_solve(ElasticBody& body);
 // The stop threshold of `options` in the current state, the elastic forces (K u) being `ku` (the
 // reactions are computed only for the criterion that uses them).
-double stop_threshold(const ElasticBody& body, const SolveOptions& options, const Eigen::VectorXd& ku);
+double stop_threshold(const ElasticBody& body, const SolveOptions& options,
+                      const Eigen::VectorXd& ku);
 }  // namespace detail
 
 }  // namespace sxk::elasticity

@@ -18,8 +18,8 @@ namespace {
 
 using Colour = std::array<double, 3>;
 // distinguishable on white and in grey print (the first four of Tableau's palette)
-constexpr std::array<Colour, 4> palette{Colour{0.12, 0.47, 0.71}, Colour{1.0, 0.50, 0.05}, Colour{0.17, 0.63, 0.17},
-                                        Colour{0.84, 0.15, 0.16}};
+constexpr std::array<Colour, 4> palette{Colour{0.12, 0.47, 0.71}, Colour{1.0, 0.50, 0.05},
+                                        Colour{0.17, 0.63, 0.17}, Colour{0.84, 0.15, 0.16}};
 
 struct Range {
     double low = std::numeric_limits<double>::infinity();
@@ -37,16 +37,21 @@ std::vector<double> linear_ticks(double low, double high) {
     const double power = std::pow(10, std::floor(std::log10(raw)));
     double step = power;
     for (const double m : {2.0, 5.0, 10.0})
-        if (raw > step) step = m * power;
+        if (raw > step)
+            step = m * power;
     std::vector<double> ticks;
-    for (double t = std::ceil(low / step) * step; t <= high + step * 1e-9; t += step) ticks.push_back(std::abs(t) < step * 1e-9 ? 0 : t);
+    for (double t = std::ceil(low / step) * step; t <= high + step * 1e-9; t += step)
+        ticks.push_back(std::abs(t) < step * 1e-9 ? 0 : t);
     return ticks;
 }
 
 std::string tick_text(double value, bool power_of_ten) {
     char buffer[32];
-    if (power_of_ten) std::snprintf(buffer, sizeof buffer, "1e%d", static_cast<int>(std::lround(std::log10(value))));
-    else std::snprintf(buffer, sizeof buffer, "%g", value);
+    if (power_of_ten)
+        std::snprintf(buffer, sizeof buffer, "1e%d",
+                      static_cast<int>(std::lround(std::log10(value))));
+    else
+        std::snprintf(buffer, sizeof buffer, "%g", value);
     return buffer;
 }
 
@@ -54,13 +59,16 @@ std::string tick_text(double value, bool power_of_ten) {
 
 Image draw(const Plot& plot) {
     if (plot.width < 200 || plot.height < 150)
-        throw std::invalid_argument("draw: a plot of " + std::to_string(plot.width) + "x" + std::to_string(plot.height) +
-                                    " is smaller than 200x150");
+        throw std::invalid_argument("draw: a plot of " + std::to_string(plot.width) + "x" +
+                                    std::to_string(plot.height) + " is smaller than 200x150");
     for (const Series& s : plot.series)
         if (s.x.size() != s.y.size())
-            throw std::invalid_argument("draw: series '" + s.label + "' has " + std::to_string(s.x.size()) +
-                                        " x values and " + std::to_string(s.y.size()) + " y values");
-    auto usable = [&](double x, double y) { return std::isfinite(x) && std::isfinite(y) && (!plot.log_y || y > 0); };
+            throw std::invalid_argument("draw: series '" + s.label + "' has " +
+                                        std::to_string(s.x.size()) + " x values and " +
+                                        std::to_string(s.y.size()) + " y values");
+    auto usable = [&](double x, double y) {
+        return std::isfinite(x) && std::isfinite(y) && (!plot.log_y || y > 0);
+    };
     // the data's extent, y in log10 on a log axis
     Range xs, ys;
     for (const Series& s : plot.series)
@@ -70,20 +78,28 @@ Image draw(const Plot& plot) {
                 ys.take(plot.log_y ? std::log10(s.y[i]) : s.y[i]);
             }
     for (const Level& l : plot.levels)
-        if (std::isfinite(l.y) && (!plot.log_y || l.y > 0)) ys.take(plot.log_y ? std::log10(l.y) : l.y);
-    if (xs.empty()) xs = {0, 1};
-    if (ys.empty()) ys = {0, 1};
-    if (xs.high == xs.low) xs = {xs.low - 0.5, xs.high + 0.5};
-    if (plot.log_y) ys = {std::floor(ys.low), std::max(std::ceil(ys.high), std::floor(ys.low) + 1)};
-    else if (ys.high == ys.low) ys = {ys.low - 0.5, ys.high + 0.5};
+        if (std::isfinite(l.y) && (!plot.log_y || l.y > 0))
+            ys.take(plot.log_y ? std::log10(l.y) : l.y);
+    if (xs.empty())
+        xs = {0, 1};
+    if (ys.empty())
+        ys = {0, 1};
+    if (xs.high == xs.low)
+        xs = {xs.low - 0.5, xs.high + 0.5};
+    if (plot.log_y)
+        ys = {std::floor(ys.low), std::max(std::ceil(ys.high), std::floor(ys.low) + 1)};
+    else if (ys.high == ys.low)
+        ys = {ys.low - 0.5, ys.high + 0.5};
     else {  // a margin of 5% so that lines do not run along the frame
         const double margin = 0.05 * (ys.high - ys.low);
         ys = {ys.low - margin, ys.high + margin};
     }
 
     const std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, plot.width, plot.height), cairo_surface_destroy);
-    const std::unique_ptr<cairo_t, void (*)(cairo_t*)> context(cairo_create(surface.get()), cairo_destroy);
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, plot.width, plot.height),
+        cairo_surface_destroy);
+    const std::unique_ptr<cairo_t, void (*)(cairo_t*)> context(cairo_create(surface.get()),
+                                                               cairo_destroy);
     cairo_t* cr = context.get();
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
@@ -95,13 +111,15 @@ Image draw(const Plot& plot) {
         const double v = plot.log_y ? std::log10(y) : y;
         return bottom - (v - ys.low) / (ys.high - ys.low) * (bottom - top);
     };
-    auto text = [&](const std::string& s, double x, double y, double size, double align_x, double align_y, bool vertical = false) {
+    auto text = [&](const std::string& s, double x, double y, double size, double align_x,
+                    double align_y, bool vertical = false) {
         cairo_set_font_size(cr, size);
         cairo_text_extents_t e;
         cairo_text_extents(cr, s.c_str(), &e);
         cairo_save(cr);
         cairo_translate(cr, x, y);
-        if (vertical) cairo_rotate(cr, -M_PI / 2);
+        if (vertical)
+            cairo_rotate(cr, -M_PI / 2);
         // align 0: the text's left (top) edge at x (y), 1: its right (bottom) edge, 0.5: centred
         cairo_move_to(cr, -align_x * e.width - e.x_bearing, -align_y * e.height - e.y_bearing);
         cairo_show_text(cr, s.c_str());
@@ -114,7 +132,8 @@ Image draw(const Plot& plot) {
     if (plot.log_y) {
         const int decades = static_cast<int>(ys.high - ys.low);
         const int every = std::max(1, decades / 8);
-        for (int e = static_cast<int>(ys.low); e <= static_cast<int>(ys.high); e += every) y_ticks.push_back(std::pow(10.0, e));
+        for (int e = static_cast<int>(ys.low); e <= static_cast<int>(ys.high); e += every)
+            y_ticks.push_back(std::pow(10.0, e));
     } else {
         y_ticks = linear_ticks(ys.low, ys.high);
     }
@@ -156,18 +175,22 @@ Image draw(const Plot& plot) {
                 drawing = false;
                 continue;
             }
-            if (drawing) cairo_line_to(cr, px(s.x[i]), py(s.y[i]));
-            else cairo_move_to(cr, px(s.x[i]), py(s.y[i]));
+            if (drawing)
+                cairo_line_to(cr, px(s.x[i]), py(s.y[i]));
+            else
+                cairo_move_to(cr, px(s.x[i]), py(s.y[i]));
             drawing = true;
         }
-        if (s.x.size() == 1 && usable(s.x[0], s.y[0])) cairo_arc(cr, px(s.x[0]), py(s.y[0]), 2, 0, 2 * M_PI);
+        if (s.x.size() == 1 && usable(s.x[0], s.y[0]))
+            cairo_arc(cr, px(s.x[0]), py(s.y[0]), 2, 0, 2 * M_PI);
         cairo_stroke(cr);
     }
     const double dash[] = {6, 4};
     cairo_set_dash(cr, dash, 2, 0);
     cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
     for (const Level& l : plot.levels) {
-        if (!std::isfinite(l.y) || (plot.log_y && !(l.y > 0))) continue;
+        if (!std::isfinite(l.y) || (plot.log_y && !(l.y > 0)))
+            continue;
         cairo_move_to(cr, left, py(l.y));
         cairo_line_to(cr, right, py(l.y));
         cairo_stroke(cr);
@@ -178,7 +201,8 @@ Image draw(const Plot& plot) {
     // the legend, top right
     double y = top + 10;
     for (std::size_t k = 0; k < plot.series.size(); ++k) {
-        if (plot.series[k].label.empty()) continue;
+        if (plot.series[k].label.empty())
+            continue;
         const Colour& c = palette[k % palette.size()];
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);
         cairo_set_line_width(cr, 2);
@@ -191,15 +215,21 @@ Image draw(const Plot& plot) {
     }
 
     cairo_surface_flush(surface.get());
-    Image image{plot.width, plot.height, std::vector<std::uint8_t>(3 * static_cast<std::size_t>(plot.width * plot.height))};
+    Image image{plot.width, plot.height,
+                std::vector<std::uint8_t>(3 * static_cast<std::size_t>(plot.width * plot.height))};
     const unsigned char* data = cairo_image_surface_get_data(surface.get());
     const int stride = cairo_image_surface_get_stride(surface.get());
     for (int row = 0; row < plot.height; ++row)
         for (int column = 0; column < plot.width; ++column) {
             // RGB24: one native-endian 32-bit word per pixel, 0x00RRGGBB
             std::uint32_t word;
-            std::memcpy(&word, data + static_cast<std::size_t>(row) * static_cast<std::size_t>(stride) + 4 * static_cast<std::size_t>(column), 4);
-            std::uint8_t* out = image.rgb.data() + 3 * (static_cast<std::size_t>(row) * static_cast<std::size_t>(plot.width) + static_cast<std::size_t>(column));
+            std::memcpy(&word,
+                        data + static_cast<std::size_t>(row) * static_cast<std::size_t>(stride) +
+                            4 * static_cast<std::size_t>(column),
+                        4);
+            std::uint8_t* out = image.rgb.data() + 3 * (static_cast<std::size_t>(row) *
+                                                            static_cast<std::size_t>(plot.width) +
+                                                        static_cast<std::size_t>(column));
             out[0] = static_cast<std::uint8_t>(word >> 16);
             out[1] = static_cast<std::uint8_t>(word >> 8);
             out[2] = static_cast<std::uint8_t>(word);

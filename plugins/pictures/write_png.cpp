@@ -34,14 +34,15 @@ void write_png(const std::filesystem::path& path, const Image& image) {
     int done = png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), 0, nullptr);
     if (done != 0) {
         encoded.resize(size);
-        done = png_image_write_to_memory(&png, encoded.data(), &size, 0, image.rgb.data(), 0,
-                                         nullptr);
+        done =
+            png_image_write_to_memory(&png, encoded.data(), &size, 0, image.rgb.data(), 0, nullptr);
     }
     const std::string libpng_message = png.message;
     png_image_free(&png);
     if (done == 0)
         throw OutputError("cannot write " + name + ": libpng: " + libpng_message);
-    write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(encoded.data()), size));
+    write_file_atomically(path,
+                          std::string_view(reinterpret_cast<const char*>(encoded.data()), size));
 }
 
 }  // namespace sxk::pictures

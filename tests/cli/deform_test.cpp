@@ -33,15 +33,18 @@ TEST(SxkDeform, HelpNamesEveryOption) {
     const ProcessResult run = sxk({"deform", "--help"});
     EXPECT_EQ(run.exit_code, 0);
     EXPECT_EQ(run.err, "");
-    for (const char* word : {"IN", "OUT", "--fix", "--displace", "--force", "--material", "--E", "--nu", "--tol",
-                             "--max-iterations", "--json", "--strict", "--thickness", "--share", "--plot", "--gravity", "--density", "sxk deform"})
+    for (const char* word :
+         {"IN", "OUT", "--fix", "--displace", "--force", "--material", "--E", "--nu", "--tol",
+          "--max-iterations", "--json", "--strict", "--thickness", "--share", "--plot", "--gravity",
+          "--density", "sxk deform"})
         EXPECT_NE(run.out.find(word), std::string::npos) << word << " missing from\n" << run.out;
 }
 
 TEST(SxkDeform, ListedAsAPluginCommand) {
     const ProcessResult run = sxk({"plugins"});
     EXPECT_EQ(run.exit_code, 0);
-    EXPECT_NE(run.out.find("elasticity 0.2.0  linear and neo-Hookean elasticity: matrix-free CG on tetrahedra and plane-stress triangles; sxk deform\n"),
+    EXPECT_NE(run.out.find("elasticity 0.2.0  linear and neo-Hookean elasticity: matrix-free CG on "
+                           "tetrahedra and plane-stress triangles; sxk deform\n"),
               std::string::npos)
         << run.out;
 }
@@ -51,8 +54,8 @@ TEST(SxkDeform, ListedAsAPluginCommand) {
 // not move, and OUT holds the deformed positions.
 TEST(SxkDeform, SolvesTheThesisCantilever) {
     DeformFixture f;
-    const ProcessResult run =
-        f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--E", "1e6", "--nu", "0", "--tol", "1e-9", "--json"});
+    const ProcessResult run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--E", "1e6",
+                                     "--nu", "0", "--tol", "1e-9", "--json"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_EQ(run.err, "");
     const auto json = nlohmann::json::parse(run.out);
@@ -87,7 +90,8 @@ TEST(SxkDeform, DisplacedVerticesLandExactly) {
     const ProcessResult run = f.run({"--fix", "x<0.001", "--displace", "x>1.1999:0.01,0,0"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_NE(run.out.find(" -> "), std::string::npos);
-    EXPECT_NE(run.out.find("1536 tetrahedra, 50 vertices held, 0 loaded\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("1536 tetrahedra, 50 vertices held, 0 loaded\n"), std::string::npos)
+        << run.out;
     const Mesh before = read_mesh(f.in), after = read_mesh(f.out);
     for (VertexId v = 0; v < before.vertex_count(); ++v) {
         const Point& x = before.reference(v);
@@ -108,29 +112,38 @@ TEST(SxkDeform, UsageErrorsSayWhat) {
     const std::string beam = f.in.string();
     const Case cases[] = {
         {{"--force", "x>1:0,-3,0"},
-         "sxk: deform: nothing holds the body (no --fix or --displace), so it can move freely and the problem is "
+         "sxk: deform: nothing holds the body (no --fix or --displace), so it can move freely and "
+         "the problem is "
          "singular; fix at least three non-collinear vertices of every connected part\n"},
-        {{"--fix", "x<<1"}, "sxk: deform: --fix: selector 'x<<1': term 'x<<1': expected a number after '<', found '<1'\n"},
+        {{"--fix", "x<<1"},
+         "sxk: deform: --fix: selector 'x<<1': term 'x<<1': expected a number after '<', found "
+         "'<1'\n"},
         {{"--fix", "q<1"},
-         "sxk: deform: --fix: selector 'q<1': term 'q<1': expected x, y or z compared with a number, label=N or "
+         "sxk: deform: --fix: selector 'q<1': term 'q<1': expected x, y or z compared with a "
+         "number, label=N or "
          "boundary\n"},
         {{"--fix", "label=x"},
-         "sxk: deform: --fix: selector 'label=x': term 'label=x': expected a whole number after 'label=', found 'x'\n"},
-        {{"--fix", "x<0&"}, "sxk: deform: --fix: selector 'x<0&': term '': expected x, y or z compared with a number, "
-                            "label=N or boundary\n"},
+         "sxk: deform: --fix: selector 'label=x': term 'label=x': expected a whole number after "
+         "'label=', found 'x'\n"},
+        {{"--fix", "x<0&"},
+         "sxk: deform: --fix: selector 'x<0&': term '': expected x, y or z compared with a number, "
+         "label=N or boundary\n"},
         {{"--fix", "x<-1"}, "sxk: deform: --fix 'x<-1' selects no vertex of " + beam + "\n"},
         {{"--fix", "x<0.01", "--force", "x>1:0,1"},
          "sxk: deform: --force 'x>1:0,1': expected three numbers X,Y,Z after ':', found 2\n"},
-        {{"--fix", "x<0.01", "--force", "x>1"}, "sxk: deform: --force 'x>1': expected SELECTOR:X,Y,Z\n"},
+        {{"--fix", "x<0.01", "--force", "x>1"},
+         "sxk: deform: --force 'x>1': expected SELECTOR:X,Y,Z\n"},
         {{"--fix", "x<0.01", "--displace", "x>1:0,nan,0"},
-         "sxk: deform: --displace 'x>1:0,nan,0': expected a finite number, found 'nan' in '0,nan,0'\n"},
+         "sxk: deform: --displace 'x>1:0,nan,0': expected a finite number, found 'nan' in "
+         "'0,nan,0'\n"},
         {{"--fix", "x<0.01", "--thickness", "0.1"},
          "sxk: deform: --thickness is for triangle meshes in the plane (plane stress); " + beam +
              " has 3-dimensional elements in 3-dimensional space\n"},
         {{"--fix", "x<0.01", "--plot", "convergence.svg"},
          "sxk: deform: --plot convergence.svg: the plot is a PNG picture; name it *.png\n"},
         {{"--fix", "x<0.01", "--force", "x>1.1999&y<0.0001&z<0.0001:0,-3,0", "--share", "area"},
-         "sxk: deform: --force 'x>1.1999&y<0.0001&z<0.0001' --share area: no boundary face has all its corners among "
+         "sxk: deform: --force 'x>1.1999&y<0.0001&z<0.0001' --share area: no boundary face has all "
+         "its corners among "
          "the selected vertices, so there is no area to share the force by\n"},
         {{"--fix", "x<0.01", "--gravity", "0,-9.8"},
          "sxk: deform: --gravity '0,-9.8': expected three numbers GX,GY,GZ, found 2\n"},
@@ -155,13 +168,17 @@ TEST(SxkDeform, RefusesSurfacesAndWritesNothingItCannotStandBehind) {
     ProcessResult run = sxk({"deform", surface.string(), f.out.string(), "--fix", "x<0.5"});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err, "sxk: " + surface.string() +
-                           ":0: elasticity: the mesh has 2-dimensional elements in 3-dimensional space; the body needs "
+                           ":0: elasticity: the mesh has 2-dimensional elements in 3-dimensional "
+                           "space; the body needs "
                            "tetrahedra in space or triangles in the plane\n");
 
     // too few iterations: exit 1, no file
     run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--max-iterations", "5"});
     EXPECT_EQ(run.exit_code, 1);
-    EXPECT_EQ(run.err.rfind("sxk: " + f.in.string() + ":0: CG did not converge in 5 iterations (|r| = ", 0), 0u) << run.err;
+    EXPECT_EQ(run.err.rfind(
+                  "sxk: " + f.in.string() + ":0: CG did not converge in 5 iterations (|r| = ", 0),
+              0u)
+        << run.err;
     EXPECT_NE(run.err.find("); nothing written\n"), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(f.out));
 
@@ -169,9 +186,13 @@ TEST(SxkDeform, RefusesSurfacesAndWritesNothingItCannotStandBehind) {
     // and the result would not be a mesh any command accepts
     run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3e6,0"});
     EXPECT_EQ(run.exit_code, 1);
-    EXPECT_EQ(run.err.rfind("sxk: " + f.in.string() + ":0: elasticity: the solution cannot be shown: element ", 0), 0u)
+    EXPECT_EQ(
+        run.err.rfind(
+            "sxk: " + f.in.string() + ":0: elasticity: the solution cannot be shown: element ", 0),
+        0u)
         << run.err;
-    EXPECT_NE(run.err.find(" would be inverted in the deformed positions; nothing written\n"), std::string::npos)
+    EXPECT_NE(run.err.find(" would be inverted in the deformed positions; nothing written\n"),
+              std::string::npos)
         << run.err;
     EXPECT_FALSE(fs::exists(f.out));
 }
@@ -186,7 +207,8 @@ TEST(SxkDeform, StretchesAPlanarStripInPlaneStress) {
     const fs::path in = folder / "strip.mesh", out = folder / "strip-out.mesh";
     Mesh strip(2, 2);
     for (int j = 0; j <= 4; ++j)
-        for (int i = 0; i <= 8; ++i) strip.add_vertex({0.5 * i, 0.5 * j, 0});
+        for (int i = 0; i <= 8; ++i)
+            strip.add_vertex({0.5 * i, 0.5 * j, 0});
     std::vector<Simplex> triangles;
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 8; ++i) {
@@ -196,9 +218,10 @@ TEST(SxkDeform, StretchesAPlanarStripInPlaneStress) {
         }
     ASSERT_TRUE(strip.assign_elements(triangles).ok());
     write_mesh(strip, in);
-    const ProcessResult run = sxk({"deform", in.string(), out.string(), "--fix", "x=0&y=0", "--displace", "x=0&y>0:0,0,0",
-                                   "--force", "x=4:3,0,0", "--share", "area", "--E", "1e5", "--nu", "0.3", "--thickness",
-                                   "0.01", "--tol", "1e-10", "--json"});
+    const ProcessResult run = sxk(
+        {"deform",  in.string(),   out.string(), "--fix", "x=0&y=0", "--displace", "x=0&y>0:0,0,0",
+         "--force", "x=4:3,0,0",   "--share",    "area",  "--E",     "1e5",        "--nu",
+         "0.3",     "--thickness", "0.01",       "--tol", "1e-10",   "--json"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["elements"], 64);
@@ -209,7 +232,8 @@ TEST(SxkDeform, StretchesAPlanarStripInPlaneStress) {
     // within 10% of the free strip's stretch, and below it
     const double expected = 3.0 / (2 * 0.01) / 1e5 * 4;
     double mean = 0;
-    for (VertexId v = 8; v < 45; v += 9) mean += (result.reference(v)[0] - 4) / 5;
+    for (VertexId v = 8; v < 45; v += 9)
+        mean += (result.reference(v)[0] - 4) / 5;
     EXPECT_GT(mean, 0.9 * expected);
     EXPECT_LT(mean, expected);
     EXPECT_TRUE(result.validate().ok());
@@ -220,8 +244,9 @@ TEST(SxkDeform, StretchesAPlanarStripInPlaneStress) {
 TEST(SxkDeform, NeoHookeanAndTheConvergencePlot) {
     DeformFixture f;
     const fs::path plot = f.folder / "convergence.png";
-    ProcessResult run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--E", "1e6", "--nu", "0.3",
-                               "--material", "neohookean", "--tol", "1e-7", "--plot", plot.string(), "--json"});
+    ProcessResult run =
+        f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--E", "1e6", "--nu", "0.3",
+               "--material", "neohookean", "--tol", "1e-7", "--plot", plot.string(), "--json"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["material"]["model"], "neohookean");
@@ -232,15 +257,18 @@ TEST(SxkDeform, NeoHookeanAndTheConvergencePlot) {
     ASSERT_GT(png.size(), 1000u);
     EXPECT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n");
     // the deflection is the linear one's within a percent: 3 N is a small load for this beam
-    run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--E", "1e6", "--nu", "0.3", "--tol", "1e-7", "--json"});
+    run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--E", "1e6", "--nu", "0.3",
+                 "--tol", "1e-7", "--json"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto linear = nlohmann::json::parse(run.out);
-    const double a = json["largest_displacement"]["length"], b = linear["largest_displacement"]["length"];
+    const double a = json["largest_displacement"]["length"],
+                 b = linear["largest_displacement"]["length"];
     EXPECT_NEAR(a, b, 0.01 * b);
     // not converged: the plot is still drawn, the mesh is not written
     fs::remove(plot);
     fs::remove(f.out);
-    run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--max-iterations", "3", "--plot", plot.string()});
+    run = f.run({"--fix", "x<0.001", "--force", "x>1.1999:0,-3,0", "--max-iterations", "3",
+                 "--plot", plot.string()});
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_TRUE(fs::exists(plot));
     EXPECT_FALSE(fs::exists(f.out));
@@ -254,9 +282,10 @@ TEST(SxkDeform, ARodSagsUnderGravity) {
     const fs::path in = folder / "rod.mesh", out = folder / "rod-out.mesh";
     write_mesh(*make_kuhn_box({10, 6, 6}, {0.01, 0.01, 0.01}), in);
     auto tip = [&](const char* material) {
-        const ProcessResult run = sxk({"deform", in.string(), out.string(), "--fix", "x=0", "--gravity", "0,-9.8,0",
-                                       "--density", "1000", "--E", "1e4", "--nu", "0.3", "--material", material, "--tol",
-                                       "1e-8", "--json"});
+        const ProcessResult run =
+            sxk({"deform", in.string(), out.string(), "--fix", "x=0", "--gravity", "0,-9.8,0",
+                 "--density", "1000", "--E", "1e4", "--nu", "0.3", "--material", material, "--tol",
+                 "1e-8", "--json"});
         EXPECT_EQ(run.exit_code, 0) << run.err;
         const auto json = nlohmann::json::parse(run.out);
         EXPECT_EQ(json["loaded"], 11 * 7 * 7);
@@ -264,7 +293,8 @@ TEST(SxkDeform, ARodSagsUnderGravity) {
         Point mean{0, 0, 0};
         for (VertexId v = 0; v < result.vertex_count(); ++v)
             if (v % 11 == 10)  // x = l: make_kuhn_box numbers x fastest
-                for (std::size_t k = 0; k < 3; ++k) mean[k] += result.reference(v)[k] / 49;
+                for (std::size_t k = 0; k < 3; ++k)
+                    mean[k] += result.reference(v)[k] / 49;
         return mean;
     };
     const Point linear = tip("linear"), rubber = tip("neohookean");

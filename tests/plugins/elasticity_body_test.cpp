@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <tbb/task_arena.h>
+#include <Eigen/Dense>
 
 #include "elastic_body.hpp"
 #include "solve.hpp"
@@ -33,9 +33,11 @@ Mesh unit_cube(int n) {
 
 // The textbook linear tetrahedron: K = V B^T D B with B from the shape functions' gradients and D
 // the isotropic matrix in Voigt notation (xx, yy, zz, yz, xz, xy; engineering shears).
-Eigen::Matrix<double, 12, 12> voigt_stiffness(const std::array<Point, 4>& x, double young, double poisson) {
+Eigen::Matrix<double, 12, 12> voigt_stiffness(const std::array<Point, 4>& x, double young,
+                                              double poisson) {
     Eigen::Matrix4d m;
-    for (int a = 0; a < 4; ++a) m.row(a) << 1, x[a][0], x[a][1], x[a][2];
+    for (int a = 0; a < 4; ++a)
+        m.row(a) << 1, x[a][0], x[a][1], x[a][2];
     const double volume = std::abs(m.determinant()) / 6;
     const Eigen::Matrix4d c = m.inverse();  // column a: the coefficients of shape function a
     Eigen::Matrix<double, 6, 12> b = Eigen::Matrix<double, 6, 12>::Zero();
@@ -51,7 +53,8 @@ Eigen::Matrix<double, 12, 12> voigt_stiffness(const std::array<Point, 4>& x, dou
         b(5, 3 * a) = gy;
         b(5, 3 * a + 1) = gx;
     }
-    const double lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson)), mu = young / (2 * (1 + poisson));
+    const double lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson)),
+                 mu = young / (2 * (1 + poisson));
     Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
     d.topLeftCorner<3, 3>().setConstant(lambda);
     d.topLeftCorner<3, 3>().diagonal().array() += 2 * mu;
@@ -65,20 +68,26 @@ TEST(ElasticityBody, ElementStiffnessIsTheTextbookOne) {
     std::uniform_real_distribution<double> coordinate(-1, 1);
     for (int trial = 0; trial < 20; ++trial) {
         std::array<Point, 4> x;
-        for (auto& p : x) p = {coordinate(random), coordinate(random), coordinate(random)};
+        for (auto& p : x)
+            p = {coordinate(random), coordinate(random), coordinate(random)};
         Mesh mesh(3, 3);
-        for (const Point& p : x) mesh.add_vertex(p);
+        for (const Point& p : x)
+            mesh.add_vertex(p);
         const Eigen::Matrix3d z{{x[1][0] - x[0][0], x[2][0] - x[0][0], x[3][0] - x[0][0]},
                                 {x[1][1] - x[0][1], x[2][1] - x[0][1], x[3][1] - x[0][1]},
                                 {x[1][2] - x[0][2], x[2][2] - x[0][2], x[3][2] - x[0][2]}};
-        if (std::abs(z.determinant()) < 1e-3) continue;  // too flat for a 1e-9 comparison
-        ASSERT_TRUE(mesh.assign_elements(std::vector<Simplex>{Simplex(z.determinant() > 0 ? 1 : -1, {0, 1, 2, 3})}).ok());
+        if (std::abs(z.determinant()) < 1e-3)
+            continue;  // too flat for a 1e-9 comparison
+        ASSERT_TRUE(mesh.assign_elements(std::vector<Simplex>{
+                                             Simplex(z.determinant() > 0 ? 1 : -1, {0, 1, 2, 3})})
+                        .ok());
         ASSERT_TRUE(mesh.validate().ok());
         auto body = ElasticBody::make(mesh, {.young = 2.5e3, .poisson = 0.3});
         ASSERT_TRUE(body.ok()) << body.reason();
         const Eigen::Matrix<double, 12, 12> ours = body->element_stiffness(0);
         const Eigen::Matrix<double, 12, 12> textbook = voigt_stiffness(x, 2.5e3, 0.3);
-        EXPECT_LT((ours - textbook).norm(), 1e-9 * textbook.norm()) << "trial " << trial << ", seed " << seed;
+        EXPECT_LT((ours - textbook).norm(), 1e-9 * textbook.norm())
+            << "trial " << trial << ", seed " << seed;
     }
 }
 
@@ -88,7 +97,8 @@ TEST(ElasticityBody, StiffnessIsSymmetricAndRigidMotionsCostNothing) {
     ASSERT_TRUE(body.ok()) << body.reason();
     const Eigen::SparseMatrix<double> k = assemble_stiffness(*body);
     const double scale = k.norm();
-    EXPECT_LT(Eigen::SparseMatrix<double>(k - Eigen::SparseMatrix<double>(k.transpose())).norm(), 1e-13 * scale);
+    EXPECT_LT(Eigen::SparseMatrix<double>(k - Eigen::SparseMatrix<double>(k.transpose())).norm(),
+              1e-13 * scale);
     const auto n = static_cast<Eigen::Index>(body->dof_count());
     const Eigen::Vector3d omega(0.3, -0.2, 0.7), shift(1, -2, 0.5);
     Eigen::VectorXd translation(n), rotation(n), out;
@@ -111,7 +121,8 @@ TEST(ElasticityBody, MatrixFreeProductIsTheAssembledOne) {
     auto body = ElasticBody::make(mesh, {.young = 3e5, .poisson = 0.45});
     ASSERT_TRUE(body.ok()) << body.reason();
     Eigen::VectorXd d(static_cast<Eigen::Index>(body->dof_count())), ours;
-    for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = normal(random);
+    for (Eigen::Index i = 0; i < d.size(); ++i)
+        d[i] = normal(random);
     body->multiply(d, ours);
     const Eigen::VectorXd assembled = assemble_stiffness(*body) * d;
     EXPECT_LT((ours - assembled).norm(), 1e-12 * assembled.norm()) << "seed " << seed;
@@ -123,7 +134,8 @@ TEST(ElasticityBody, ProductDoesNotDependOnTheThreadCount) {
     auto body = ElasticBody::make(mesh, {.young = 1, .poisson = 0.25});
     ASSERT_TRUE(body.ok()) << body.reason();
     Eigen::VectorXd d(static_cast<Eigen::Index>(body->dof_count())), one, two;
-    for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = std::sin(0.37 * static_cast<double>(i));
+    for (Eigen::Index i = 0; i < d.size(); ++i)
+        d[i] = std::sin(0.37 * static_cast<double>(i));
     tbb::task_arena(1).execute([&] { body->multiply(d, one); });
     tbb::task_arena(2).execute([&] { body->multiply(d, two); });
     EXPECT_EQ(one, two);
@@ -144,7 +156,8 @@ TEST(ElasticityBody, PassesThePatchTest) {
     std::size_t interior = 0;
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
         const Point& p = mesh.reference(v);
-        const bool boundary = std::min({p[0], p[1], p[2]}) < 1e-12 || std::max({p[0], p[1], p[2]}) > 1 - 1e-12;
+        const bool boundary =
+            std::min({p[0], p[1], p[2]}) < 1e-12 || std::max({p[0], p[1], p[2]}) > 1 - 1e-12;
         if (boundary) {
             const Eigen::Vector3d u = field(v);
             ASSERT_TRUE(body->fix(v, {u[0], u[1], u[2]}).ok());
@@ -159,7 +172,8 @@ TEST(ElasticityBody, PassesThePatchTest) {
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
         const Vector3 u = body->displacement(v);
         const Eigen::Vector3d expected = field(v);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(u[static_cast<std::size_t>(k)], expected[k], 1e-12) << v;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(u[static_cast<std::size_t>(k)], expected[k], 1e-12) << v;
     }
 }
 
@@ -176,7 +190,9 @@ TEST(ElasticityBody, ConstrainedSolveMatchesTheAssembledReference) {
             if (p[2] == 0) {
                 ASSERT_TRUE(body.fix(v).ok());
             } else if (p[2] > 1 - 1e-12 && v % 3 == 0) {
-                ASSERT_TRUE(body.constrain_to_line(v, {n01(again), n01(again), n01(again)}, {0, 0, 1e-3}).ok());
+                ASSERT_TRUE(
+                    body.constrain_to_line(v, {n01(again), n01(again), n01(again)}, {0, 0, 1e-3})
+                        .ok());
             } else if (v % 7 == 0) {
                 ASSERT_TRUE(body.add_force(v, {n01(again), n01(again), n01(again)}).ok());
             }
@@ -193,7 +209,8 @@ TEST(ElasticityBody, ConstrainedSolveMatchesTheAssembledReference) {
     ASSERT_TRUE(ours.ok() && reference.ok());
     EXPECT_TRUE(ours->converged);
     EXPECT_TRUE(reference->converged);
-    std::printf("iterations: matrix-free %zu, Eigen (Jacobi) %zu\n", ours->iterations, reference->iterations);
+    std::printf("iterations: matrix-free %zu, Eigen (Jacobi) %zu\n", ours->iterations,
+                reference->iterations);
     const Eigen::VectorXd& u = matrix_free->displacements();
     EXPECT_LT((u - assembled->displacements()).norm(), 1e-8 * u.norm()) << "seed " << seed;
     EXPECT_NEAR(ours->energy, reference->energy, 1e-9 * std::abs(reference->energy));
@@ -236,7 +253,8 @@ TEST(ElasticityBody, WarmStartSavesIterations) {
     body->displacements().setZero();
     const auto from_rest = solve_linear_cg(*body, options);
     ASSERT_TRUE(from_rest.ok() && from_rest->converged);
-    std::printf("iterations: cold %zu, warm %zu, from rest %zu\n", cold->iterations, warm->iterations, from_rest->iterations);
+    std::printf("iterations: cold %zu, warm %zu, from rest %zu\n", cold->iterations,
+                warm->iterations, from_rest->iterations);
     EXPECT_LT(warm->iterations, from_rest->iterations);
 }
 
@@ -289,7 +307,8 @@ TEST(ElasticityBody, RefusesWhatItCannotSolve) {
     auto curved = ElasticBody::make(surface, {});
     EXPECT_EQ(curved.code(), RefusalCode::wrong_dimension);
     EXPECT_EQ(curved.reason(),
-              "elasticity: the mesh has 2-dimensional elements in 3-dimensional space; the body needs tetrahedra in "
+              "elasticity: the mesh has 2-dimensional elements in 3-dimensional space; the body "
+              "needs tetrahedra in "
               "space or triangles in the plane");
     Mesh triangles(2, 2);
     triangles.add_vertex({0, 0, 0});
@@ -301,29 +320,37 @@ TEST(ElasticityBody, RefusesWhatItCannotSolve) {
     auto planar = ElasticBody::make(triangles, {});
     ASSERT_TRUE(planar.ok()) << planar.reason();
     EXPECT_EQ(planar->constrain_to_line(0, {0, 1, 1}).reason(),
-              "elasticity: constrain_to_line: a planar body's line must lie in the plane (direction z = 0)");
+              "elasticity: constrain_to_line: a planar body's line must lie in the plane "
+              "(direction z = 0)");
 
     const Mesh mesh = unit_cube(2);
-    EXPECT_EQ(ElasticBody::make(mesh, {.young = 0}).reason(), "elasticity: Young's modulus 0 is not positive and finite");
+    EXPECT_EQ(ElasticBody::make(mesh, {.young = 0}).reason(),
+              "elasticity: Young's modulus 0 is not positive and finite");
     EXPECT_EQ(ElasticBody::make(mesh, {.young = 0}).code(), RefusalCode::bad_argument);
-    EXPECT_EQ(ElasticBody::make(mesh, {.poisson = 0.5}).reason(), "elasticity: Poisson's ratio 0.5 is not in (-1, 0.5)");
+    EXPECT_EQ(ElasticBody::make(mesh, {.poisson = 0.5}).reason(),
+              "elasticity: Poisson's ratio 0.5 is not in (-1, 0.5)");
 
     Mesh flat(3, 3);
-    for (const Point& p : {Point{0, 0, 0}, Point{1, 0, 0}, Point{0, 1, 0}, Point{1, 1, 0}}) flat.add_vertex(p);
-    ASSERT_TRUE(flat.assign_elements(std::vector<Simplex>{Simplex(1, {0, 1, 2, 3})}).ok());  // the kernel allows flat elements
-    EXPECT_EQ(ElasticBody::make(flat, {}).reason(), "elasticity: element 0 is flat at rest (its stiffness is undefined)");
+    for (const Point& p : {Point{0, 0, 0}, Point{1, 0, 0}, Point{0, 1, 0}, Point{1, 1, 0}})
+        flat.add_vertex(p);
+    ASSERT_TRUE(flat.assign_elements(std::vector<Simplex>{Simplex(1, {0, 1, 2, 3})})
+                    .ok());  // the kernel allows flat elements
+    EXPECT_EQ(ElasticBody::make(flat, {}).reason(),
+              "elasticity: element 0 is flat at rest (its stiffness is undefined)");
     EXPECT_EQ(ElasticBody::make(flat, {}).code(), RefusalCode::would_flatten);
 
     auto body = ElasticBody::make(mesh, {});
     ASSERT_TRUE(body.ok()) << body.reason();
     EXPECT_EQ(body->fix(27).reason(), "elasticity: fix: 27 is not a vertex of an element");
     EXPECT_EQ(body->fix(27).code(), RefusalCode::not_found);
-    EXPECT_EQ(body->add_force(0, {0, NAN, 0}).reason(), "elasticity: add_force: the force is not finite");
+    EXPECT_EQ(body->add_force(0, {0, NAN, 0}).reason(),
+              "elasticity: add_force: the force is not finite");
     EXPECT_EQ(body->constrain_to_line(0, {0, 0, 0}).code(), RefusalCode::bad_argument);
     const auto unconstrained = solve_linear_cg(*body);
     EXPECT_EQ(unconstrained.code(), RefusalCode::bad_argument);
     EXPECT_EQ(unconstrained.reason(),
-              "elasticity: no vertex is constrained, so the body can move freely and its stiffness matrix is singular; "
+              "elasticity: no vertex is constrained, so the body can move freely and its stiffness "
+              "matrix is singular; "
               "fix at least three non-collinear vertices of every connected part");
     EXPECT_EQ(solve_assembled_cg(*body).reason(), unconstrained.reason());
     EXPECT_EQ(LinearRelaxation::start(*body).reason(), unconstrained.reason());

@@ -32,7 +32,8 @@ void hold(ElasticBody& body, const Mesh& mesh) {
             high = std::max(high, mesh.reference(v)[2]);
         }
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
-        if (mesh.vertex_element(v) == invalid_id) continue;
+        if (mesh.vertex_element(v) == invalid_id)
+            continue;
         const double z = mesh.reference(v)[2];
         if (z <= low + 1e-9) {
             ASSERT_TRUE(body.fix(v).ok());
@@ -57,7 +58,9 @@ struct Solved {
     }
 };
 
-Eigen::VectorXd u_of(const ElasticBody& body, VertexId v) { return body.displacements().segment<3>(3 * v); }
+Eigen::VectorXd u_of(const ElasticBody& body, VertexId v) {
+    return body.displacements().segment<3>(3 * v);
+}
 
 TEST(ElasticityEdits, SplitMidpointStartsAtTheMeanOfItsEnds) {
     Solved s;
@@ -78,9 +81,11 @@ TEST(ElasticityEdits, SplitMidpointStartsAtTheMeanOfItsEnds) {
     ASSERT_TRUE(fresh.ok());
     hold(*fresh, s.mesh);
     const auto cold = solve_linear_cg(*fresh, {.tolerance = 1e-10});
-    std::printf("after a split: %zu iterations warm, %zu from rest\n", warm->iterations, cold->iterations);
+    std::printf("after a split: %zu iterations warm, %zu from rest\n", warm->iterations,
+                cold->iterations);
     EXPECT_LT(warm->iterations, cold->iterations);
-    EXPECT_LT((s.body->displacements() - fresh->displacements()).norm(), 1e-7 * fresh->displacements().norm());
+    EXPECT_LT((s.body->displacements() - fresh->displacements()).norm(),
+              1e-7 * fresh->displacements().norm());
 }
 
 TEST(ElasticityEdits, DissectionCopiesStartWhereTheirOriginalsAre) {
@@ -92,8 +97,10 @@ TEST(ElasticityEdits, DissectionCopiesStartWhereTheirOriginalsAre) {
         for (int i = 0; i < 4; ++i) {
             const Simplex f = s.mesh.face_simplex(s.mesh.face(t, i));
             bool on = true;
-            for (int j = 0; j < 3; ++j) on = on && s.mesh.reference(f.vertex(j))[0] == 1.0 / 3;
-            if (on && s.mesh.neighbor(t, i) != invalid_id && s.mesh.neighbor(t, i) > t) cut.push_back(f);
+            for (int j = 0; j < 3; ++j)
+                on = on && s.mesh.reference(f.vertex(j))[0] == 1.0 / 3;
+            if (on && s.mesh.neighbor(t, i) != invalid_id && s.mesh.neighbor(t, i) > t)
+                cut.push_back(f);
         }
     ASSERT_EQ(cut.size(), 18u);
     const auto dissected = dissect(s.mesh, cut);
@@ -105,7 +112,9 @@ TEST(ElasticityEdits, DissectionCopiesStartWhereTheirOriginalsAre) {
     ASSERT_TRUE(s.body->refresh().ok());
     auto fresh = ElasticBody::make(s.mesh, {.young = 1e3, .poisson = 0.3});
     ASSERT_TRUE(fresh.ok());
-    Eigen::VectorXd d = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(fresh->dof_count()), -1, 1), ours, theirs;
+    Eigen::VectorXd d = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(fresh->dof_count()),
+                                                   -1, 1),
+                    ours, theirs;
     s.body->multiply(d, ours);
     fresh->multiply(d, theirs);
     EXPECT_EQ(ours, theirs);
@@ -122,12 +131,14 @@ TEST(ElasticityEdits, MaterialsPerElementFollowSplits) {
     ASSERT_TRUE(materials.ok()) << materials.reason();
     for (const ElementId t : elements(mesh)) {
         double z = 0;
-        for (int j = 0; j < 4; ++j) z += mesh.reference(mesh.simplex(t).vertex(j))[2] / 4;
+        for (int j = 0; j < 4; ++j)
+            z += mesh.reference(mesh.simplex(t).vertex(j))[2] / 4;
         if (z > 1) {
             ASSERT_TRUE(mesh.set_element_attribute(*materials, t, stiff).ok());
         }
     }
-    auto body = ElasticBody::make(mesh, {.young = 7, .poisson = 0.2});  // the attribute overrides it everywhere
+    auto body = ElasticBody::make(
+        mesh, {.young = 7, .poisson = 0.2});  // the attribute overrides it everywhere
     ASSERT_TRUE(body.ok()) << body.reason();
     EXPECT_EQ(body->largest_young(), 4e3);
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
@@ -151,20 +162,26 @@ TEST(ElasticityEdits, MaterialsPerElementFollowSplits) {
     ScopedWatcher following(mesh, *body);
     ElementId upper = invalid_id;
     for (const ElementId t : elements(mesh))
-        if (mesh.element_attribute(*materials, t)[0] == stiff[0]) upper = t;
-    ASSERT_TRUE(split_edge(mesh, mesh.simplex(upper).vertex(0), mesh.simplex(upper).vertex(1), 0.5).ok());
+        if (mesh.element_attribute(*materials, t)[0] == stiff[0])
+            upper = t;
+    ASSERT_TRUE(
+        split_edge(mesh, mesh.simplex(upper).vertex(0), mesh.simplex(upper).vertex(1), 0.5).ok());
     ASSERT_TRUE(body->refresh().ok());
     auto fresh = ElasticBody::make(mesh, {.young = 7, .poisson = 0.2});
     ASSERT_TRUE(fresh.ok());
-    Eigen::VectorXd d = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(fresh->dof_count()), -1, 1), ours, theirs;
+    Eigen::VectorXd d = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(fresh->dof_count()),
+                                                   -1, 1),
+                    ours, theirs;
     body->multiply(d, ours);
     fresh->multiply(d, theirs);
     EXPECT_EQ(ours, theirs);
     // and a material out of range is refused by name
-    ASSERT_TRUE(mesh.set_element_attribute(*materials, upper, std::array<double, 2>{4e3, 0.5}).ok());
+    ASSERT_TRUE(
+        mesh.set_element_attribute(*materials, upper, std::array<double, 2>{4e3, 0.5}).ok());
     body->materials_changed();
-    EXPECT_EQ(body->refresh().reason(), "elasticity: element " + std::to_string(upper) +
-                                            " (elasticity.material): Poisson's ratio 0.5 is not in (-1, 0.5)");
+    EXPECT_EQ(body->refresh().reason(),
+              "elasticity: element " + std::to_string(upper) +
+                  " (elasticity.material): Poisson's ratio 0.5 is not in (-1, 0.5)");
 }
 
 // Random flips, splits, collapses, dissections, bisections and vertex moves (the operation
@@ -174,7 +191,8 @@ TEST(ElasticityEdits, MaterialsPerElementFollowSplits) {
 // hinges, so the problem can be too ill-conditioned for a residual test to pin the energy; the
 // solves after an edit are compared on well-shaped meshes above.)
 // kind: the ops driver's start mesh (0 jittered planar grid, 3 jittered Kuhn cube).
-void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t kind, BodyOptions options) {
+void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t kind,
+                                                 BodyOptions options) {
     const std::uint64_t seed = test::seed_for(name);
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
     std::mt19937_64 rng(seed);
@@ -196,12 +214,14 @@ void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t
                 ASSERT_TRUE(done.finding.empty()) << done.finding;
                 edits += done.done;
             }
-            if (step % 15 != 14) continue;
+            if (step % 15 != 14)
+                continue;
             ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
             // a sliver whose volume rounds to zero has no stiffness: both refuse it alike
             const auto refreshed = body.refresh();
             auto fresh = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3}, options);
-            ASSERT_EQ(refreshed.ok(), fresh.ok()) << (refreshed.ok() ? fresh.reason() : refreshed.reason());
+            ASSERT_EQ(refreshed.ok(), fresh.ok())
+                << (refreshed.ok() ? fresh.reason() : refreshed.reason());
             if (!fresh.ok()) {
                 EXPECT_EQ(refreshed.reason(), fresh.reason());
                 EXPECT_EQ(fresh.code(), RefusalCode::would_flatten);
@@ -209,14 +229,16 @@ void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t
                 continue;
             }
             ASSERT_EQ(body.dof_count(), fresh->dof_count());
-            ASSERT_TRUE(std::equal(body.elements().begin(), body.elements().end(), fresh->elements().begin(),
-                                   fresh->elements().end()));
+            ASSERT_TRUE(std::equal(body.elements().begin(), body.elements().end(),
+                                   fresh->elements().begin(), fresh->elements().end()));
             Eigen::VectorXd d(static_cast<Eigen::Index>(body.dof_count())), ours, theirs;
-            for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = 1e-3 * std::sin(0.7 * static_cast<double>(i) + step);
+            for (Eigen::Index i = 0; i < d.size(); ++i)
+                d[i] = 1e-3 * std::sin(0.7 * static_cast<double>(i) + step);
             body.multiply(d, ours);
             fresh->multiply(d, theirs);
             ASSERT_EQ(ours, theirs) << "round " << round << ", step " << step;
-            // the model's forces too (neo-Hookean: nonlinear in d; d small enough to invert nothing)
+            // the model's forces too (neo-Hookean: nonlinear in d; d small enough to invert
+            // nothing)
             const bool ok = body.elastic_forces(d, ours);
             ASSERT_EQ(ok, fresh->elastic_forces(d, theirs));
             if (ok) {
@@ -225,24 +247,28 @@ void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t
             ++compared;
         }
     }
-    std::printf("%d states compared (%d times both refused an element flat in doubles) after %d successful edits\n",
-                compared, flat, edits);
+    std::printf(
+        "%d states compared (%d times both refused an element flat in doubles) after %d successful "
+        "edits\n",
+        compared, flat, edits);
     EXPECT_GE(compared, 30);
     EXPECT_GT(edits, 60);
 }
 
 TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshBody) {
-    random_edits_keep_the_state_of_a_fresh_body("ElasticityEdits.RandomEditsKeepTheStateOfAFreshBody", 3, {});
+    random_edits_keep_the_state_of_a_fresh_body(
+        "ElasticityEdits.RandomEditsKeepTheStateOfAFreshBody", 3, {});
 }
 
 TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshPlaneStressBody) {
-    random_edits_keep_the_state_of_a_fresh_body("ElasticityEdits.RandomEditsKeepTheStateOfAFreshPlaneStressBody", 0,
-                                                {.thickness = 0.05});
+    random_edits_keep_the_state_of_a_fresh_body(
+        "ElasticityEdits.RandomEditsKeepTheStateOfAFreshPlaneStressBody", 0, {.thickness = 0.05});
 }
 
 TEST(ElasticityEdits, RandomEditsKeepTheStateOfAFreshNeoHookeanBody) {
-    random_edits_keep_the_state_of_a_fresh_body("ElasticityEdits.RandomEditsKeepTheStateOfAFreshNeoHookeanBody", 3,
-                                                {.model = Model::neohookean});
+    random_edits_keep_the_state_of_a_fresh_body(
+        "ElasticityEdits.RandomEditsKeepTheStateOfAFreshNeoHookeanBody", 3,
+        {.model = Model::neohookean});
 }
 
 }  // namespace

@@ -22,13 +22,15 @@ using test::planar_grid;
 TEST(ElasticityPlaneStress, TriangleStiffnessIsTheTextbookOne) {
     Mesh mesh(2, 2);
     const std::array<Point, 3> p{Point{0.1, 0.2, 0}, Point{2.1, 0.4, 0}, Point{0.7, 1.9, 0}};
-    for (const Point& x : p) mesh.add_vertex(x);
+    for (const Point& x : p)
+        mesh.add_vertex(x);
     ASSERT_TRUE(mesh.assign_elements(std::vector<Simplex>{Simplex(+1, {0, 1, 2})}).ok());
     const Material material{.young = 3e4, .poisson = 0.34};
     const double thickness = 0.01;
     auto body = ElasticBody::make(mesh, material, {.thickness = thickness});
     ASSERT_TRUE(body.ok()) << body.reason();
-    const double area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]));
+    const double area = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                               (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]));
     Eigen::Matrix<double, 3, 6> b = Eigen::Matrix<double, 3, 6>::Zero();
     for (int j = 0; j < 3; ++j) {
         const Point& q = p[static_cast<std::size_t>((j + 1) % 3)];
@@ -50,7 +52,9 @@ TEST(ElasticityPlaneStress, TriangleStiffnessIsTheTextbookOne) {
         for (int c = 0; c < 3; ++c)
             for (int i = 0; i < 2; ++i)
                 for (int j = 0; j < 2; ++j)
-                    EXPECT_NEAR(k(3 * a + i, 3 * c + j), expected(2 * static_cast<int>(s.vertex(a)) + i, 2 * static_cast<int>(s.vertex(c)) + j),
+                    EXPECT_NEAR(k(3 * a + i, 3 * c + j),
+                                expected(2 * static_cast<int>(s.vertex(a)) + i,
+                                         2 * static_cast<int>(s.vertex(c)) + j),
                                 1e-9 * expected.norm());
     // nothing in z, nothing in the unused fourth corner
     for (int a = 0; a < 12; ++a) {
@@ -68,26 +72,32 @@ TEST(ElasticityPlaneStress, StripStretchesAndNarrowsAsTheStaticsSay) {
     const int nx = 8, ny = 4;
     const double length = 4, height = 2, thickness = 0.01, force = 3;
     for (int j = 0; j <= ny; ++j)
-        for (int i = 0; i <= nx; ++i) mesh.add_vertex({length * i / nx, height * j / ny, 0});
+        for (int i = 0; i <= nx; ++i)
+            mesh.add_vertex({length * i / nx, height * j / ny, 0});
     auto id = [&](int i, int j) { return VertexId(j * (nx + 1) + i); };
     std::vector<Simplex> triangles;
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
-            triangles.emplace_back(+1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            triangles.emplace_back(+1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            triangles.emplace_back(
+                +1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            triangles.emplace_back(
+                +1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j + 1), id(i, j + 1)});
         }
     ASSERT_TRUE(mesh.assign_elements(triangles).ok());
     const Material material{.young = 1e5, .poisson = 0.3};
     auto body = ElasticBody::make(mesh, material, {.thickness = thickness});
     ASSERT_TRUE(body.ok()) << body.reason();
     for (int j = 0; j <= ny; ++j) {
-        if (j == 0) ASSERT_TRUE(body->fix(id(0, 0)).ok());
-        else ASSERT_TRUE(body->constrain_to_line(id(0, j), {0, 1, 0}).ok());
+        if (j == 0)
+            ASSERT_TRUE(body->fix(id(0, 0)).ok());
+        else
+            ASSERT_TRUE(body->constrain_to_line(id(0, j), {0, 1, 0}).ok());
         // the consistent load of a uniform traction: the end nodes carry half a share
         const double share = force / ny * (j == 0 || j == ny ? 0.5 : 1.0);
         ASSERT_TRUE(body->add_force(id(nx, j), {share, 0, 7}).ok());  // z is ignored
     }
-    const auto report = solve_linear_cg(*body, {.tolerance = 1e-12, .stop = StopCriterion::external_force});
+    const auto report =
+        solve_linear_cg(*body, {.tolerance = 1e-12, .stop = StopCriterion::external_force});
     ASSERT_TRUE(report.ok()) << report.reason();
     EXPECT_TRUE(report->converged);
     const double strain = force / (height * thickness) / material.young;
@@ -95,13 +105,17 @@ TEST(ElasticityPlaneStress, StripStretchesAndNarrowsAsTheStaticsSay) {
         for (int i = 0; i <= nx; ++i) {
             const Vector3 u = body->displacement(id(i, j));
             EXPECT_NEAR(u[0], strain * length * i / nx, 1e-9 * strain) << i << " " << j;
-            EXPECT_NEAR(u[1], -material.poisson * strain * height * j / ny, 1e-9 * strain) << i << " " << j;
+            EXPECT_NEAR(u[1], -material.poisson * strain * height * j / ny, 1e-9 * strain)
+                << i << " " << j;
             EXPECT_EQ(u[2], 0.0);
         }
     // the assembled reference agrees
     body->displacements().setZero();
-    for (int j = 0; j <= ny; ++j) ASSERT_TRUE(j == 0 ? body->fix(id(0, 0)).ok() : body->constrain_to_line(id(0, j), {0, 1, 0}).ok());
-    const auto assembled = solve_assembled_cg(*body, {.tolerance = 1e-12, .stop = StopCriterion::external_force});
+    for (int j = 0; j <= ny; ++j)
+        ASSERT_TRUE(j == 0 ? body->fix(id(0, 0)).ok()
+                           : body->constrain_to_line(id(0, j), {0, 1, 0}).ok());
+    const auto assembled =
+        solve_assembled_cg(*body, {.tolerance = 1e-12, .stop = StopCriterion::external_force});
     ASSERT_TRUE(assembled.ok()) << assembled.reason();
     EXPECT_NEAR(body->displacement(id(nx, ny))[0], strain * length, 1e-9 * strain);
     ASSERT_TRUE(body->write_deformed(mesh).ok());
@@ -113,32 +127,39 @@ TEST(ElasticityPlaneStress, StripStretchesAndNarrowsAsTheStaticsSay) {
 // on random displacements of a fifth of an element's size), for tetrahedra and triangles.
 void expect_forces_are_the_energy_gradient(const Mesh& mesh, std::uint64_t seed) {
     SCOPED_TRACE("SXK_SEED=" + std::to_string(seed));
-    auto body = ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3}, {.model = Model::neohookean, .thickness = 0.1});
+    auto body = ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3},
+                                  {.model = Model::neohookean, .thickness = 0.1});
     ASSERT_TRUE(body.ok()) << body.reason();
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(-0.2, 0.2);
     Eigen::VectorXd u(static_cast<Eigen::Index>(body->dof_count()));
-    for (Eigen::Index i = 0; i < u.size(); ++i) u[i] = unit(rng);
+    for (Eigen::Index i = 0; i < u.size(); ++i)
+        u[i] = unit(rng);
     if (body->dimension() == 2)
-        for (Eigen::Index i = 2; i < u.size(); i += 3) u[i] = 0;
+        for (Eigen::Index i = 2; i < u.size(); i += 3)
+            u[i] = 0;
     Eigen::VectorXd g;
     ASSERT_TRUE(body->elastic_forces(u, g));
     const double h = 1e-6;
     for (Eigen::Index i = 0; i < u.size(); i += 7) {
-        if (body->dimension() == 2 && i % 3 == 2) continue;
+        if (body->dimension() == 2 && i % 3 == 2)
+            continue;
         Eigen::VectorXd plus = u, minus = u;
         plus[i] += h;
         minus[i] -= h;
         const double numeric = (body->strain_energy(plus) - body->strain_energy(minus)) / (2 * h);
-        EXPECT_NEAR(g[i], numeric, 1e-5 * (std::abs(numeric) + 1e-2 * g.cwiseAbs().maxCoeff())) << "unknown " << i;
+        EXPECT_NEAR(g[i], numeric, 1e-5 * (std::abs(numeric) + 1e-2 * g.cwiseAbs().maxCoeff()))
+            << "unknown " << i;
     }
     // an inverted element: no forces, infinite energy
     Eigen::VectorXd crushed = Eigen::VectorXd::Zero(u.size());
     const Simplex& s = mesh.simplex(0);
     for (int k = 0; k < body->dimension(); ++k)
         crushed[3 * static_cast<Eigen::Index>(s.vertex(0)) + k] =
-            2 * (mesh.reference(s.vertex(1))[static_cast<std::size_t>(k)] - mesh.reference(s.vertex(0))[static_cast<std::size_t>(k)]) +
-            2 * (mesh.reference(s.vertex(2))[static_cast<std::size_t>(k)] - mesh.reference(s.vertex(0))[static_cast<std::size_t>(k)]);
+            2 * (mesh.reference(s.vertex(1))[static_cast<std::size_t>(k)] -
+                 mesh.reference(s.vertex(0))[static_cast<std::size_t>(k)]) +
+            2 * (mesh.reference(s.vertex(2))[static_cast<std::size_t>(k)] -
+                 mesh.reference(s.vertex(0))[static_cast<std::size_t>(k)]);
     EXPECT_FALSE(body->elastic_forces(crushed, g));
     EXPECT_EQ(body->strain_energy(crushed), std::numeric_limits<double>::infinity());
 }
@@ -154,24 +175,32 @@ TEST(ElasticityNeoHookean, ForcesAreTheEnergyGradient) {
 // A cube on its floor, pushed sideways and down on top: small loads give the linear answer,
 // large ones a different equilibrium that nonlinear CG reaches (projected residual below the
 // threshold, energy below that of the linear answer in the neo-Hookean energy).
-Outcome<SolveReport> push_cube(ElasticBody& body, const Mesh& mesh, double load, double tolerance = 1e-9) {
+Outcome<SolveReport> push_cube(ElasticBody& body, const Mesh& mesh, double load,
+                               double tolerance = 1e-9) {
     body.displacements().setZero();
     body.clear_forces();
     std::vector<VertexId> top;
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
-        if (mesh.reference(v)[2] == 0 && !body.fix(v).ok()) return Refusal{RefusalCode::bad_argument, "fix"};
-        if (mesh.reference(v)[2] == 3) top.push_back(v);
+        if (mesh.reference(v)[2] == 0 && !body.fix(v).ok())
+            return Refusal{RefusalCode::bad_argument, "fix"};
+        if (mesh.reference(v)[2] == 3)
+            top.push_back(v);
     }
     for (const VertexId v : top)
-        if (!body.add_force(v, {load / static_cast<double>(top.size()), 0, -load / static_cast<double>(top.size())}).ok())
+        if (!body.add_force(v, {load / static_cast<double>(top.size()), 0,
+                                -load / static_cast<double>(top.size())})
+                 .ok())
             return Refusal{RefusalCode::bad_argument, "force"};
-    return solve(body, {.tolerance = tolerance, .max_iterations = 5000, .stop = StopCriterion::external_force});
+    return solve(
+        body,
+        {.tolerance = tolerance, .max_iterations = 5000, .stop = StopCriterion::external_force});
 }
 
 TEST(ElasticityNeoHookean, SmallLoadsGiveTheLinearAnswer) {
     const Mesh mesh = kuhn_cube(3);
     auto linear = ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3});
-    auto rubber = ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3}, {.model = Model::neohookean});
+    auto rubber =
+        ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3}, {.model = Model::neohookean});
     ASSERT_TRUE(linear.ok() && rubber.ok());
     // strains of about 1e-6; the neo-Hookean forces mu (F - F^-T) cancel to about 1e-10 of
     // themselves there, so the residual can fall to 1e-6 of the load but not to 1e-9
@@ -181,27 +210,33 @@ TEST(ElasticityNeoHookean, SmallLoadsGiveTheLinearAnswer) {
     ASSERT_TRUE(a.ok() && b.ok()) << a.reason() << b.reason();
     EXPECT_TRUE(a->converged && b->converged);
     const double scale = linear->displacements().cwiseAbs().maxCoeff();
-    EXPECT_LT((linear->displacements() - rubber->displacements()).cwiseAbs().maxCoeff(), 1e-4 * scale);
+    EXPECT_LT((linear->displacements() - rubber->displacements()).cwiseAbs().maxCoeff(),
+              1e-4 * scale);
     EXPECT_TRUE(mesh.validate().ok());
 }
 
 TEST(ElasticityNeoHookean, LargeLoadsReachANonlinearEquilibrium) {
     Mesh mesh = kuhn_cube(3);
     auto linear = ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3});
-    auto rubber = ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3}, {.model = Model::neohookean});
+    auto rubber =
+        ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3}, {.model = Model::neohookean});
     ASSERT_TRUE(linear.ok() && rubber.ok());
     const double load = 8e3;  // shear strains of about a third
     auto a = push_cube(*linear, mesh, load);
     auto b = push_cube(*rubber, mesh, load);
     ASSERT_TRUE(a.ok() && b.ok()) << a.reason() << b.reason();
     ASSERT_TRUE(b->converged) << b->residual << " > " << b->threshold;
-    std::printf("[ measured ] neo-Hookean cube: %zu iterations, %zu force evaluations; top corner moves %.4g (linear %.4g)\n",
-                b->iterations, b->evaluations, rubber->displacement(mesh.vertex_count() - 1)[0],
-                linear->displacement(mesh.vertex_count() - 1)[0]);
+    std::printf(
+        "[ measured ] neo-Hookean cube: %zu iterations, %zu force evaluations; top corner moves "
+        "%.4g (linear %.4g)\n",
+        b->iterations, b->evaluations, rubber->displacement(mesh.vertex_count() - 1)[0],
+        linear->displacement(mesh.vertex_count() - 1)[0]);
     // the answers differ by more than the tolerance, and each is its own model's minimum
     const double scale = linear->displacements().cwiseAbs().maxCoeff();
-    EXPECT_GT((linear->displacements() - rubber->displacements()).cwiseAbs().maxCoeff(), 1e-2 * scale);
-    const double at_linear = rubber->strain_energy(linear->displacements()) - rubber->forces().dot(linear->displacements());
+    EXPECT_GT((linear->displacements() - rubber->displacements()).cwiseAbs().maxCoeff(),
+              1e-2 * scale);
+    const double at_linear = rubber->strain_energy(linear->displacements()) -
+                             rubber->forces().dot(linear->displacements());
     EXPECT_LT(rubber->energy(), at_linear);
     // a relaxation in frames of 3 iterations is the same solve
     Eigen::VectorXd solved = rubber->displacements();
@@ -210,9 +245,11 @@ TEST(ElasticityNeoHookean, LargeLoadsReachANonlinearEquilibrium) {
         if (mesh.reference(v)[2] == 0) {
             ASSERT_TRUE(rubber->fix(v).ok());
         }
-    auto relaxation = NonlinearRelaxation::start(*rubber, {.tolerance = 1e-9, .stop = StopCriterion::external_force});
+    auto relaxation = NonlinearRelaxation::start(
+        *rubber, {.tolerance = 1e-9, .stop = StopCriterion::external_force});
     ASSERT_TRUE(relaxation.ok()) << relaxation.reason();
-    while (!relaxation->done()) relaxation->run(3);
+    while (!relaxation->done())
+        relaxation->run(3);
     EXPECT_EQ(relaxation->report().iterations, b->iterations);
     EXPECT_EQ(rubber->displacements(), solved);
     ASSERT_TRUE(rubber->write_deformed(mesh).ok());
@@ -227,10 +264,12 @@ TEST(ElasticityNeoHookean, NonlinearCGSolvesALinearBodyToo) {
     ASSERT_TRUE(push_cube(*body, mesh, 10).ok());
     const Eigen::VectorXd expected = body->displacements();
     body->displacements().setZero();
-    const auto report = solve_nonlinear_cg(*body, {.tolerance = 1e-9, .stop = StopCriterion::external_force});
+    const auto report =
+        solve_nonlinear_cg(*body, {.tolerance = 1e-9, .stop = StopCriterion::external_force});
     ASSERT_TRUE(report.ok()) << report.reason();
     EXPECT_TRUE(report->converged);
-    EXPECT_LT((body->displacements() - expected).cwiseAbs().maxCoeff(), 1e-6 * expected.cwiseAbs().maxCoeff());
+    EXPECT_LT((body->displacements() - expected).cwiseAbs().maxCoeff(),
+              1e-6 * expected.cwiseAbs().maxCoeff());
 }
 
 }  // namespace

@@ -61,12 +61,15 @@ TEST(ElasticityOutput, RefusesASolutionThatInvertsAnElement) {
     body->displacements()[3 * centre] = 2;
     const auto written = body->write_deformed(mesh);
     EXPECT_EQ(written.code(), RefusalCode::would_invert);
-    EXPECT_EQ(written.reason().rfind("elasticity: the solution cannot be shown: element ", 0), 0u) << written.reason();
+    EXPECT_EQ(written.reason().rfind("elasticity: the solution cannot be shown: element ", 0), 0u)
+        << written.reason();
     EXPECT_TRUE(mesh.is_element(static_cast<ElementId>(written.refusal().item)));
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) EXPECT_EQ(mesh.deformed(v), mesh.reference(v)) << v;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        EXPECT_EQ(mesh.deformed(v), mesh.reference(v)) << v;
 
     Mesh other = *make_kuhn_cube(2, 0.5);
-    EXPECT_EQ(body->write_deformed(other).reason(), "elasticity: write_deformed: not the mesh of this body");
+    EXPECT_EQ(body->write_deformed(other).reason(),
+              "elasticity: write_deformed: not the mesh of this body");
     EXPECT_TRUE(mesh.validate().ok());
 }
 
@@ -84,20 +87,25 @@ TEST(ElasticitySelector, SelectsWhatItSays) {
     EXPECT_EQ(count("label=0"), 27u);
     EXPECT_EQ(count("label=5"), 0u);
     EXPECT_EQ(count("z>=1&x>0.7&y>0.7"), 1u);
-    EXPECT_EQ(select_vertices(mesh, *parse_vertex_selector("z>=1&x>0.7&y>0.7")), std::vector<VertexId>{26});
+    EXPECT_EQ(select_vertices(mesh, *parse_vertex_selector("z>=1&x>0.7&y>0.7")),
+              std::vector<VertexId>{26});
 }
 
 TEST(ElasticitySelector, RefusesWhatDoesNotParse) {
     const auto bad = parse_vertex_selector("x<0.1&w>2");
     EXPECT_EQ(bad.code(), RefusalCode::bad_argument);
     EXPECT_EQ(bad.reason(),
-              "selector 'x<0.1&w>2': term 'w>2': expected x, y or z compared with a number, label=N or boundary");
+              "selector 'x<0.1&w>2': term 'w>2': expected x, y or z compared with a number, "
+              "label=N or boundary");
     EXPECT_EQ(parse_vertex_selector("y=>1").reason(),
               "selector 'y=>1': term 'y=>1': expected a number after '=', found '>1'");
-    EXPECT_EQ(parse_vertex_selector("z<inf").reason(), "selector 'z<inf': term 'z<inf': expected a number after '<', found 'inf'");
-    EXPECT_EQ(parse_vertex_selector("label 3").reason(), "selector 'label 3': term 'label 3': expected '=' after 'label'");
-    EXPECT_EQ(parse_vertex_selector("").reason(),
-              "selector '': term '': expected x, y or z compared with a number, label=N or boundary");
+    EXPECT_EQ(parse_vertex_selector("z<inf").reason(),
+              "selector 'z<inf': term 'z<inf': expected a number after '<', found 'inf'");
+    EXPECT_EQ(parse_vertex_selector("label 3").reason(),
+              "selector 'label 3': term 'label 3': expected '=' after 'label'");
+    EXPECT_EQ(
+        parse_vertex_selector("").reason(),
+        "selector '': term '': expected x, y or z compared with a number, label=N or boundary");
 }
 
 }  // namespace

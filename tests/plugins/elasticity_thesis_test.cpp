@@ -50,10 +50,13 @@ Measured cantilever(int n, double poisson = 0) {
         if (p[0] == 0) {
             EXPECT_TRUE(body->fix(v).ok());
         }
-        if (std::abs(p[0] - length) < 1e-12) tip.push_back(v);
+        if (std::abs(p[0] - length) < 1e-12)
+            tip.push_back(v);
     }
-    for (const VertexId v : tip) EXPECT_TRUE(body->add_force(v, {0, -load / static_cast<double>(tip.size()), 0}).ok());
-    const auto report = solve_linear_cg(*body, {.tolerance = 1e-8, .stop = StopCriterion::external_force});
+    for (const VertexId v : tip)
+        EXPECT_TRUE(body->add_force(v, {0, -load / static_cast<double>(tip.size()), 0}).ok());
+    const auto report =
+        solve_linear_cg(*body, {.tolerance = 1e-8, .stop = StopCriterion::external_force});
     EXPECT_TRUE(report.ok()) << report.reason();
     Measured m;
     m.maximum_error = -std::numeric_limits<double>::infinity();
@@ -72,18 +75,23 @@ Measured cantilever(int n, double poisson = 0) {
 }
 
 TEST(ElasticityThesisBeam, ReproducesTable31) {
-    constexpr TableRow thesis[] = {
-        {4, 377, 29.0, 29.3}, {6, 561, 15.1, 15.3}, {8, 723, 8.6, 8.8}, {10, 882, 5.2, 5.3}, {12, 1044, 3.2, 3.3}};
-    std::printf("%-12s %6s %8s | %10s %9s %9s | %10s %9s %9s\n", "cells", "nodes", "elements", "iterations",
-                "avg err %", "max err %", "thesis it", "avg err %", "max err %");
+    constexpr TableRow thesis[] = {{4, 377, 29.0, 29.3},
+                                   {6, 561, 15.1, 15.3},
+                                   {8, 723, 8.6, 8.8},
+                                   {10, 882, 5.2, 5.3},
+                                   {12, 1044, 3.2, 3.3}};
+    std::printf("%-12s %6s %8s | %10s %9s %9s | %10s %9s %9s\n", "cells", "nodes", "elements",
+                "iterations", "avg err %", "max err %", "thesis it", "avg err %", "max err %");
     double previous = std::numeric_limits<double>::infinity();
     for (const TableRow& row : thesis) {
         const Measured m = cantilever(row.cells);
-        std::printf("%2dx%2dx%-6d %6zu %8zu | %10zu %9.2f %9.2f | %10d %9.1f %9.1f  (%.2f s)\n", 4 * row.cells, row.cells,
-                    row.cells, m.nodes, m.elements, m.iterations, m.average_error, m.maximum_error, row.iterations,
-                    row.average_error, row.maximum_error, m.seconds);
+        std::printf("%2dx%2dx%-6d %6zu %8zu | %10zu %9.2f %9.2f | %10d %9.1f %9.1f  (%.2f s)\n",
+                    4 * row.cells, row.cells, row.cells, m.nodes, m.elements, m.iterations,
+                    m.average_error, m.maximum_error, row.iterations, row.average_error,
+                    row.maximum_error, m.seconds);
         // the thesis prints 8181 nodes for 48 x 12 x 12, which has 49 * 13 * 13 = 8281
-        EXPECT_EQ(m.nodes, static_cast<std::size_t>((4 * row.cells + 1) * (row.cells + 1) * (row.cells + 1)));
+        EXPECT_EQ(m.nodes, static_cast<std::size_t>((4 * row.cells + 1) * (row.cells + 1) *
+                                                    (row.cells + 1)));
         EXPECT_TRUE(m.converged);
         EXPECT_GT(m.average_error, 0) << row.cells;  // linear tetrahedra are too stiff
         EXPECT_LE(m.average_error, row.average_error) << row.cells;
@@ -99,16 +107,22 @@ TEST(ElasticityThesisBeam, ReproducesTable31) {
 // nu = 1/4. The errors are still smaller than the table's (24.1, 12.3, 7.1, 4.4, 2.9%: within a
 // point on the two finest meshes only). docs/elasticity.md discusses it.
 TEST(ElasticityThesisBeam, IterationCountsMatchTable31WithAQuarterPoissonRatio) {
-    constexpr TableRow thesis[] = {
-        {4, 377, 29.0, 29.3}, {6, 561, 15.1, 15.3}, {8, 723, 8.6, 8.8}, {10, 882, 5.2, 5.3}, {12, 1044, 3.2, 3.3}};
+    constexpr TableRow thesis[] = {{4, 377, 29.0, 29.3},
+                                   {6, 561, 15.1, 15.3},
+                                   {8, 723, 8.6, 8.8},
+                                   {10, 882, 5.2, 5.3},
+                                   {12, 1044, 3.2, 3.3}};
     for (const TableRow& row : thesis) {
         const Measured m = cantilever(row.cells, 0.25);
-        std::printf("nu = 1/4, %2dx%2dx%-2d: %5zu iterations (thesis %4d), average error %5.2f%% (thesis %4.1f%%), "
-                    "maximum %5.2f%% (thesis %4.1f%%)\n",
-                    4 * row.cells, row.cells, row.cells, m.iterations, row.iterations, m.average_error,
-                    row.average_error, m.maximum_error, row.maximum_error);
+        std::printf(
+            "nu = 1/4, %2dx%2dx%-2d: %5zu iterations (thesis %4d), average error %5.2f%% (thesis "
+            "%4.1f%%), "
+            "maximum %5.2f%% (thesis %4.1f%%)\n",
+            4 * row.cells, row.cells, row.cells, m.iterations, row.iterations, m.average_error,
+            row.average_error, m.maximum_error, row.maximum_error);
         EXPECT_TRUE(m.converged);
-        EXPECT_NEAR(static_cast<double>(m.iterations), row.iterations, 0.05 * row.iterations) << row.cells;
+        EXPECT_NEAR(static_cast<double>(m.iterations), row.iterations, 0.05 * row.iterations)
+            << row.cells;
         EXPECT_GT(m.average_error, 0) << row.cells;
         EXPECT_LE(m.average_error, row.average_error) << row.cells;
     }
@@ -131,11 +145,26 @@ TEST(ElasticityThesisCube, SolvesInAtMost300Iterations) {
         Vector3 (*force)(const Point& p);
     };
     const Load loads[] = {
-        {"side x = 1, in-plane radial", true, [](const Point& p) { return Vector3{0, p[1] - 0.5, p[2] - 0.5}; }},
-        {"side x = 1, outward normal", true, [](const Point&) { return Vector3{1, 0, 0}; }},
-        {"front z = 1, in-plane radial", false, [](const Point& p) { return Vector3{p[0] - 0.5, p[1] - 0.5, 0}; }},
-        {"front z = 1, outward normal", false, [](const Point&) { return Vector3{0, 0, 1}; }},
-        {"front z = 1, radial from the centre", false, [](const Point& p) { return Vector3{p[0] - 0.5, p[1] - 0.5, 0.5}; }},
+        {"side x = 1, in-plane radial", true,
+         [](const Point& p) {
+             return Vector3{0, p[1] - 0.5, p[2] - 0.5};
+         }},
+        {"side x = 1, outward normal", true,
+         [](const Point&) {
+             return Vector3{1, 0, 0};
+         }},
+        {"front z = 1, in-plane radial", false,
+         [](const Point& p) {
+             return Vector3{p[0] - 0.5, p[1] - 0.5, 0};
+         }},
+        {"front z = 1, outward normal", false,
+         [](const Point&) {
+             return Vector3{0, 0, 1};
+         }},
+        {"front z = 1, radial from the centre", false,
+         [](const Point& p) {
+             return Vector3{p[0] - 0.5, p[1] - 0.5, 0.5};
+         }},
     };
     for (const Load& load : loads) {
         auto body = ElasticBody::make(*mesh, {.young = 1e4, .poisson = 0.25});
@@ -148,10 +177,12 @@ TEST(ElasticityThesisCube, SolvesInAtMost300Iterations) {
                 ASSERT_TRUE(body->add_force(v, load.force(p)).ok());
             }
         }
-        const auto report = solve_linear_cg(*body, {.tolerance = 1e-3, .stop = StopCriterion::external_force});
+        const auto report =
+            solve_linear_cg(*body, {.tolerance = 1e-3, .stop = StopCriterion::external_force});
         ASSERT_TRUE(report.ok()) << report.reason();
-        std::printf("7986-element cube, %-36s %4zu iterations in %.4f s (%.0f iterations/s)\n", load.name,
-                    report->iterations, report->seconds, static_cast<double>(report->iterations) / report->seconds);
+        std::printf("7986-element cube, %-36s %4zu iterations in %.4f s (%.0f iterations/s)\n",
+                    load.name, report->iterations, report->seconds,
+                    static_cast<double>(report->iterations) / report->seconds);
         EXPECT_TRUE(report->converged) << load.name;
         EXPECT_LE(report->iterations, 300u) << load.name;
     }
@@ -187,17 +218,20 @@ TEST(ElasticityThesisRod, LinearAndNeoHookeanPartUnderLargeSag) {
             }
         }
         EXPECT_TRUE(body->add_body_force({0, -density * g, 0}).ok());
-        const auto report = solve(*body, {.tolerance = 1e-8, .stop = StopCriterion::external_force});
+        const auto report =
+            solve(*body, {.tolerance = 1e-8, .stop = StopCriterion::external_force});
         EXPECT_TRUE(report.ok()) << report.reason();
         r.report = *report;
         r.u = body->displacements();
         int tip = 0;
         for (VertexId v = 0; v < mesh->vertex_count(); ++v)
             if (std::abs(mesh->reference(v)[0] - rod) < 1e-12) {
-                for (std::size_t k = 0; k < 3; ++k) r.tip[k] += body->displacement(v)[k];
+                for (std::size_t k = 0; k < 3; ++k)
+                    r.tip[k] += body->displacement(v)[k];
                 ++tip;
             }
-        for (double& x : r.tip) x /= tip;
+        for (double& x : r.tip)
+            x /= tip;
         return r;
     };
     const Result linear = sag(Model::linear);
@@ -210,12 +244,15 @@ TEST(ElasticityThesisRod, LinearAndNeoHookeanPartUnderLargeSag) {
         largest = std::max(largest, linear.u.segment<3>(v).norm());
         difference = std::max(difference, (linear.u.segment<3>(v) - rubber.u.segment<3>(v)).norm());
     }
-    std::printf("[ figures  ] rod under its weight: tip (x, y) linear (%.4f, %.4f) m in %zu iterations, neo-Hookean "
-                "(%.4f, %.4f) m in %zu iterations (%zu force evaluations); largest difference %.4f m = %.1f%% of the "
-                "largest linear displacement; beam formulas: bending %.4f m, + shear %.4f m\n",
-                linear.tip[0], linear.tip[1], linear.report.iterations, rubber.tip[0], rubber.tip[1],
-                rubber.report.iterations, rubber.report.evaluations, difference, 100 * difference / largest, bending,
-                bending + shear);
+    std::printf(
+        "[ figures  ] rod under its weight: tip (x, y) linear (%.4f, %.4f) m in %zu iterations, "
+        "neo-Hookean "
+        "(%.4f, %.4f) m in %zu iterations (%zu force evaluations); largest difference %.4f m = "
+        "%.1f%% of the "
+        "largest linear displacement; beam formulas: bending %.4f m, + shear %.4f m\n",
+        linear.tip[0], linear.tip[1], linear.report.iterations, rubber.tip[0], rubber.tip[1],
+        rubber.report.iterations, rubber.report.evaluations, difference, 100 * difference / largest,
+        bending, bending + shear);
     EXPECT_TRUE(linear.report.converged);
     EXPECT_TRUE(rubber.report.converged);
     EXPECT_GT(-linear.tip[1], bending);

@@ -11,7 +11,9 @@ namespace sxk::pictures {
 namespace {
 
 std::array<int, 3> pixel(const Image& image, int x, int y) {
-    const std::size_t at = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x));
+    const std::size_t at =
+        3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+             static_cast<std::size_t>(x));
     return {image.rgb[at], image.rgb[at + 1], image.rgb[at + 2]};
 }
 

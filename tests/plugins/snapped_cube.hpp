@@ -18,7 +18,8 @@ inline const degeneracy::Plane thesis_cube_plane{{3.85, 4.0, 3.5}, {1, -0.95, 0.
 // snapped onto it (h the mean edge length).
 inline Mesh snapped_thesis_cube(degeneracy::SnapReport& snap) {
     Mesh mesh = make_kuhn_cube(8).value();
-    snap = degeneracy::snap_to_plane(mesh, thesis_cube_plane, degeneracy::mean_edge_length(mesh) / 3);
+    snap =
+        degeneracy::snap_to_plane(mesh, thesis_cube_plane, degeneracy::mean_edge_length(mesh) / 3);
     return mesh;
 }
 

@@ -38,35 +38,47 @@ el::SolveReport relax(const sxk::Mesh& mesh, std::size_t max_iterations) {
             high = std::max(high, mesh.reference(v)[2]);
         }
     auto body = el::ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3});
-    if (!body) throw std::runtime_error(body.reason());
+    if (!body)
+        throw std::runtime_error(body.reason());
     std::vector<sxk::VertexId> top;
     for (sxk::VertexId v = 0; v < mesh.vertex_count(); ++v) {
-        if (mesh.vertex_element(v) == sxk::invalid_id) continue;
+        if (mesh.vertex_element(v) == sxk::invalid_id)
+            continue;
         const double z = mesh.reference(v)[2];
-        if (z < low + 0.05 * (high - low)) (void)body->fix(v);
-        else if (z > high - 0.05 * (high - low)) top.push_back(v);
+        if (z < low + 0.05 * (high - low))
+            (void)body->fix(v);
+        else if (z > high - 0.05 * (high - low))
+            top.push_back(v);
     }
-    for (const sxk::VertexId v : top) (void)body->add_force(v, {100.0 / static_cast<double>(top.size()), 0, 0});
-    auto report = el::solve_linear_cg(
-        *body, {.tolerance = 1e-3, .max_iterations = max_iterations, .stop = el::StopCriterion::external_force});
-    if (!report) throw std::runtime_error(report.reason());
+    for (const sxk::VertexId v : top)
+        (void)body->add_force(v, {100.0 / static_cast<double>(top.size()), 0, 0});
+    auto report = el::solve_linear_cg(*body, {.tolerance = 1e-3,
+                                              .max_iterations = max_iterations,
+                                              .stop = el::StopCriterion::external_force});
+    if (!report)
+        throw std::runtime_error(report.reason());
     return *report;
 }
 
 double least_aspect_ratio(const sxk::Mesh& mesh) {
     double least = 1;
     for (const sxk::ElementId t : sxk::elements(mesh))
-        least = std::min(least, sxk::aspect_ratio(sxk::element_points(mesh, t, sxk::Positions::reference)));
+        least = std::min(
+            least, sxk::aspect_ratio(sxk::element_points(mesh, t, sxk::Positions::reference)));
     return least;
 }
 
 void line(const std::string& name, const el::SolveReport& ours, const el::SolveReport& peer) {
-    std::printf("{\"name\": \"%s\", \"unit\": \"CG iterations\", \"ours\": %zu, \"peer\": %zu, \"peer_name\": "
-                "\"snapped, degenerates kept%s\", \"ratio\": %.4g, \"better\": \"lower\", \"converged\": %s, "
-                "\"seconds\": %.2f}\n",
-                name.c_str(), ours.iterations, peer.iterations, peer.converged ? "" : " (stopped, not converged)",
-                static_cast<double>(ours.iterations) / static_cast<double>(peer.iterations),
-                ours.converged ? "true" : "false", ours.seconds);
+    std::printf(
+        "{\"name\": \"%s\", \"unit\": \"CG iterations\", \"ours\": %zu, \"peer\": %zu, "
+        "\"peer_name\": "
+        "\"snapped, degenerates kept%s\", \"ratio\": %.4g, \"better\": \"lower\", \"converged\": "
+        "%s, "
+        "\"seconds\": %.2f}\n",
+        name.c_str(), ours.iterations, peer.iterations,
+        peer.converged ? "" : " (stopped, not converged)",
+        static_cast<double>(ours.iterations) / static_cast<double>(peer.iterations),
+        ours.converged ? "true" : "false", ours.seconds);
 }
 
 }  // namespace
@@ -82,21 +94,31 @@ int main(int argc, char** argv) {
     try {
         const sxk::Mesh mesh = sxk::read_mesh(argument.substr(equals + 1));
         const el::SolveReport unsnapped = relax(mesh, 100000);
-        std::fprintf(stderr, "relax: %s as read: %zu iterations, %.1f s, least aspect ratio %.3g\n", name.c_str(),
-                     unsnapped.iterations, unsnapped.seconds, least_aspect_ratio(mesh));
+        std::fprintf(stderr, "relax: %s as read: %zu iterations, %.1f s, least aspect ratio %.3g\n",
+                     name.c_str(), unsnapped.iterations, unsnapped.seconds,
+                     least_aspect_ratio(mesh));
         sxk::Mesh snapped = mesh;
-        const dg::SnapReport snap = dg::snap_to_plane(snapped, dg::plane_through_centre(snapped, {0.3, 1, 0.12}),
-                                                      dg::mean_edge_length(snapped) / 3);
+        const dg::SnapReport snap =
+            dg::snap_to_plane(snapped, dg::plane_through_centre(snapped, {0.3, 1, 0.12}),
+                              dg::mean_edge_length(snapped) / 3);
         const el::SolveReport before = relax(snapped, 2 * unsnapped.iterations);
-        std::fprintf(stderr, "relax: %s snapped (%zu vertices moved): %zu iterations%s, |r| %.3g (needed %.3g), %.1f s, "
+        std::fprintf(stderr,
+                     "relax: %s snapped (%zu vertices moved): %zu iterations%s, |r| %.3g (needed "
+                     "%.3g), %.1f s, "
                      "least aspect ratio %.3g\n",
-                     name.c_str(), snap.moved.size(), before.iterations, before.converged ? "" : " without converging",
-                     before.residual, before.threshold, before.seconds, least_aspect_ratio(snapped));
-        const auto removed = dg::remove_degeneracies(snapped, dg::elements_around(snapped, snap.moved));
-        if (!removed) throw std::runtime_error(removed.reason());
+                     name.c_str(), snap.moved.size(), before.iterations,
+                     before.converged ? "" : " without converging", before.residual,
+                     before.threshold, before.seconds, least_aspect_ratio(snapped));
+        const auto removed =
+            dg::remove_degeneracies(snapped, dg::elements_around(snapped, snap.moved));
+        if (!removed)
+            throw std::runtime_error(removed.reason());
         const el::SolveReport after = relax(snapped, 100000);
-        std::fprintf(stderr, "relax: %s after removing %zu degenerates: %zu iterations, %.1f s, least aspect ratio %.3g\n",
-                     name.c_str(), removed->found, after.iterations, after.seconds, least_aspect_ratio(snapped));
+        std::fprintf(stderr,
+                     "relax: %s after removing %zu degenerates: %zu iterations, %.1f s, least "
+                     "aspect ratio %.3g\n",
+                     name.c_str(), removed->found, after.iterations, after.seconds,
+                     least_aspect_ratio(snapped));
         line("elasticity/relax/" + name + "/unsnapped", unsnapped, before);
         line("elasticity/relax/" + name + "/after_degeneracy_removal", after, before);
         return unsnapped.converged && after.converged ? 0 : 1;
