@@ -13,11 +13,22 @@ Outcome<NonlinearRelaxation> NonlinearRelaxation::start(ElasticBody& body,
     if (auto ready = detail::prepare_solve(body); !ready)
         return ready.refusal();
     NonlinearRelaxation relaxation(body, options);
-    if (!relaxation.residual_at(0, relaxation.m_r))
-        return Refusal{RefusalCode::would_invert,
-                       "elasticity: the starting displacements invert an element, where the "
-                       "neo-Hookean energy is "
-                       "infinite; start from rest (set the displacements to zero)"};
+    if (!relaxation.residual_at(0, relaxation.m_r)) {
+        // prescribed displacements that turn the elements next to them inside out while the
+        // free vertices are still where they were: start from the linear answer, which spreads
+        // them over the body (its passes over the elements are counted as this solve's)
+        auto linear = LinearRelaxation::start(body, options);
+        if (!linear)
+            return linear.refusal();
+        linear->run(options.max_iterations);
+        relaxation.m_report.evaluations += linear->report().evaluations;
+        if (!relaxation.residual_at(0, relaxation.m_r))
+            return Refusal{
+                RefusalCode::would_invert,
+                "elasticity: the prescribed displacements invert an element even in the "
+                "linear answer, where the neo-Hookean energy is infinite; prescribe them in "
+                "smaller steps"};
+    }
     relaxation.m_report.threshold = detail::stop_threshold(body, options, relaxation.m_g);
     relaxation.m_rr = relaxation.m_r.squaredNorm();
     relaxation.m_report.history.push_back(std::sqrt(relaxation.m_rr));

@@ -120,9 +120,10 @@ private:
 // minus f^T u) by nonlinear CG (§2.4.2): Polak-Ribière directions (eq. 2.49) restarted when they
 // stop descending, a secant line search on d . r (the thesis' Newton search without the tangent
 // stiffness; the first step from the stiffness at rest), steps that would invert an element
-// halved. Refuses as solve_linear_cg, and with would_invert when the starting displacements
-// already invert an element. For a linear body it finds what solve_linear_cg finds, in about
-// twice the passes over the elements.
+// halved. When the starting displacements invert an element (a large prescribed displacement
+// next to free vertices still at rest), it starts from the linear CG's answer instead. Refuses
+// as solve_linear_cg, and with would_invert when even that inverts an element. For a linear body it
+// finds what solve_linear_cg finds, in about twice the passes over the elements.
 Outcome<SolveReport> solve_nonlinear_cg(ElasticBody& body, const SolveOptions& options = {});
 
 // The same a few iterations at a time (see LinearRelaxation).

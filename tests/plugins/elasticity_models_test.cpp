@@ -272,5 +272,47 @@ TEST(ElasticityNeoHookean, NonlinearCGSolvesALinearBodyToo) {
               1e-6 * expected.cwiseAbs().maxCoeff());
 }
 
+// A prescribed displacement larger than the elements next to it: at the start (free vertices at
+// rest) the top layer is turned inside out, where the neo-Hookean energy is infinite; the solve
+// starts from the linear answer instead and reaches the neo-Hookean equilibrium. Squashing the
+// cube past its floor inverts elements even in the linear answer: refused.
+TEST(ElasticityNeoHookean, LargePrescribedDisplacementsStartFromTheLinearAnswer) {
+    Mesh mesh = kuhn_cube(3);
+    auto body =
+        ElasticBody::make(mesh, {.young = 1e4, .poisson = 0.3}, {.model = Model::neohookean});
+    ASSERT_TRUE(body.ok()) << body.reason();
+    auto press = [&](double down) {
+        body->displacements().setZero();
+        for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+            if (mesh.reference(v)[2] == 0) {
+                EXPECT_TRUE(body->fix(v).ok());
+            } else if (mesh.reference(v)[2] == 3) {
+                EXPECT_TRUE(body->fix(v, {0, 0, -down}).ok());
+            } else {
+                EXPECT_TRUE(body->free(v).ok());
+            }
+        }
+        return solve_nonlinear_cg(*body,
+                                  {.tolerance = 1e-8, .stop = StopCriterion::with_reactions});
+    };
+    Eigen::VectorXd at_rest = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(body->dof_count()));
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        if (mesh.reference(v)[2] == 3)
+            at_rest[3 * static_cast<Eigen::Index>(v) + 2] = -1.2;
+    Eigen::VectorXd forces;
+    EXPECT_FALSE(body->elastic_forces(at_rest, forces));  // the start the solver was given inverts
+    const auto squeezed = press(1.2);                     // 40% of the height, more than a layer
+    ASSERT_TRUE(squeezed.ok()) << squeezed.reason();
+    EXPECT_TRUE(squeezed->converged);
+    ASSERT_TRUE(body->write_deformed(mesh).ok());
+    const auto flattened = press(3.5);
+    EXPECT_EQ(flattened.code(), RefusalCode::would_invert);
+    EXPECT_EQ(
+        flattened.reason(),
+        "elasticity: the prescribed displacements invert an element even in the linear answer, "
+        "where the neo-Hookean energy is infinite; prescribe them in smaller steps");
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 }  // namespace
 }  // namespace sxk::elasticity
