@@ -72,10 +72,7 @@ void LinearRelaxation::residual() {
 bool LinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
     Eigen::VectorXd& u = m_body->displacements();
-    for (std::size_t i = 0; i < iterations && !m_stalled; ++i) {
-        if (std::sqrt(m_rr) <= m_report.threshold ||
-            m_report.iterations >= m_options.max_iterations)
-            break;
+    for (std::size_t i = 0; i < iterations && may_continue(); ++i) {
         m_body->multiply(m_d, m_q);
         ++m_report.evaluations;
         m_body->project(m_q);  // P K P: d is already in the allowed space

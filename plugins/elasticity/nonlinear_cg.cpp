@@ -94,10 +94,7 @@ double NonlinearRelaxation::line_search() {
 bool NonlinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
     Eigen::VectorXd& u = m_body->displacements();
-    for (std::size_t i = 0; i < iterations && !m_stalled; ++i) {
-        if (std::sqrt(m_rr) <= m_report.threshold ||
-            m_report.iterations >= m_options.max_iterations)
-            break;
+    for (std::size_t i = 0; i < iterations && may_continue(); ++i) {
         if (!(m_d.dot(m_r) > 0))
             m_d = m_r;  // not a descent direction: restart along the residual
         const double alpha = line_search();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -70,6 +71,11 @@ public:
 protected:
     Relaxation(ElasticBody& body, const SolveOptions& options)
         : m_body(&body), m_options(options) {}
+    // Not converged, not stalled, and iterations left: run() takes another step.
+    bool may_continue() const {
+        return !m_stalled && std::sqrt(m_rr) > m_report.threshold &&
+               m_report.iterations < m_options.max_iterations;
+    }
     // The end of a run() that began at `start`: the residual, converged and the time; converged.
     bool finish_run(std::chrono::steady_clock::time_point start);
 
