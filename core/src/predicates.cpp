@@ -47,6 +47,20 @@ Sign normal_alignment(const Point& a, const Point& b, const Point& c, const Poin
     return to_sign(CGAL::sign(n0 * n1));
 }
 
+Sign compare_distances_to_plane(const Point& a, const Point& b, const Point& p, const Point& q,
+                                const Point& r) {
+    // The distances are |det[q-p, r-p, x-p]| over the same |(q-p) x (r-p)|: compare the
+    // determinants' magnitudes. The lazy exact kernel decides in interval arithmetic when the
+    // magnitudes are apart and in exact arithmetic only when they are (nearly) equal.
+    using P = detail::ExactKernel::Point_3;
+    auto exact = [](const Point& x) { return P(x[0], x[1], x[2]); };
+    const P ep = exact(p);
+    const auto normal = CGAL::cross_product(exact(q) - ep, exact(r) - ep);
+    const auto da = CGAL::abs(normal * (exact(a) - ep));
+    const auto db = CGAL::abs(normal * (exact(b) - ep));
+    return to_sign(CGAL::compare(da, db));
+}
+
 Sign simplex_orientation(const Simplex& s, int ambient_dimension, std::span<const Point* const> points) {
     Sign raw;
     if (s.count() == 4) {

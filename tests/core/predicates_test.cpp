@@ -21,7 +21,7 @@ TEST(Predicates, Orientation2DIsExactNearCollinear) {
     const Point b{12, 12, 0}, c{24, 24, 0};
     const double up = std::nextafter(0.5, 1.0), down = std::nextafter(0.5, 0.0);
     EXPECT_EQ(orient2d({0.5, 0.5, 0}, b, c), Sign::zero);
-    EXPECT_EQ(orient2d({up, 0.5, 0}, b, c), Sign::negative);   // right of b->c: clockwise
+    EXPECT_EQ(orient2d({up, 0.5, 0}, b, c), Sign::negative);  // right of b->c: clockwise
     EXPECT_EQ(orient2d({down, 0.5, 0}, b, c), Sign::positive);
     EXPECT_EQ(orient2d({0.5, 0.5, 0}, b, {24, std::nextafter(24.0, 25.0), 0}), Sign::positive);
 }
@@ -47,7 +47,8 @@ TEST(Predicates, InCircleAndInSphere) {
 
 TEST(Predicates, ElementOrientationHonoursTheSimplexSign) {
     Mesh mesh = test::kuhn_cube(1);
-    for (ElementId t : elements(mesh)) EXPECT_EQ(element_orientation(mesh, t), Sign::positive);
+    for (ElementId t : elements(mesh))
+        EXPECT_EQ(element_orientation(mesh, t), Sign::positive);
     // push a vertex through the opposite face: (1,1,1) is in all six tetrahedra
     mesh.set_deformed(7, {-1, -1, -1});
     std::size_t inverted = 0;
@@ -56,6 +57,30 @@ TEST(Predicates, ElementOrientationHonoursTheSimplexSign) {
     EXPECT_EQ(inverted, 6u);
     for (ElementId t : elements(mesh))
         EXPECT_EQ(element_orientation(mesh, t, Positions::reference), Sign::positive);
+}
+
+// compare_distances_to_plane: which end of a cut edge is nearer the sweep (thesis §3.2.1), on the
+// plane x + y + z = 0 (normal (1, 1, 1) exactly), decided exactly down to one unit in the last
+// place; in doubles 0.1 + 0.2 + 0.3 already carries a rounding of 1e-16.
+TEST(Predicates, CompareDistancesToAPlaneIsExact) {
+    const Point p{0, 0, 0}, q{1, -1, 0}, r{1, 0, -1};
+    const Point a{0.1, 0.2, 0.3};
+    const Point mirror{-0.3, -0.2, -0.1};  // exactly as far on the other side
+    EXPECT_EQ(compare_distances_to_plane(a, mirror, p, q, r), Sign::zero);
+    const Point farther{-0.3, -0.2, std::nextafter(-0.1, -1.0)};
+    const Point nearer{-0.3, -0.2, std::nextafter(-0.1, 0.0)};
+    EXPECT_EQ(compare_distances_to_plane(a, farther, p, q, r), Sign::negative);  // a is nearer
+    EXPECT_EQ(compare_distances_to_plane(a, nearer, p, q, r), Sign::positive);
+    EXPECT_EQ(compare_distances_to_plane(farther, a, p, q, r), Sign::positive);  // antisymmetric
+    // a segment crossing z = 0 a quarter of the way from its lower end
+    EXPECT_EQ(compare_distances_to_plane({0, 0, -1}, {5, 2, 3}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}),
+              Sign::negative);
+    // both ends on one side: the nearer to the plane
+    EXPECT_EQ(compare_distances_to_plane({0, 0, 4}, {0, 0, 3}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}),
+              Sign::positive);
+    // a degenerate plane (collinear p, q, r): no distance to compare
+    EXPECT_EQ(compare_distances_to_plane({0, 0, 4}, {0, 0, 3}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}),
+              Sign::zero);
 }
 
 }  // namespace

@@ -32,6 +32,14 @@ SXK_API Sign normal_alignment(const Point& a, const Point& b, const Point& c, co
 
 enum class Positions { reference, deformed };
 
+// Compares the distances of a and b from the plane through p, q, r, exactly: negative when a
+// is nearer, positive when b is, zero when they are equally far (or p, q, r are collinear).
+// For a segment ab that crosses the plane it tells which end is nearer the crossing, measured
+// along the segment (the crossing divides ab in the ratio of the two distances): the node a
+// snap cut marks for a cut edge (thesis §3.2.1), with ties (exact halves) left to the caller.
+SXK_API Sign compare_distances_to_plane(const Point& a, const Point& b, const Point& p, const Point& q,
+                                        const Point& r);
+
 // Exact orientation of element t in the chosen positions, taking the simplex sign into account:
 // positive means the element is correctly oriented (counter-clockwise triangle, positive
 // volume tetrahedron). Only defined when topological == ambient dimension; for triangle
