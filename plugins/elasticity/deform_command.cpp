@@ -113,6 +113,25 @@ std::optional<Options> parse(std::span<const std::string> args, std::ostream& ou
     return o;
 }
 
+// Three numbers "A,B,C" of option `option` given as `text`; nullopt with the message printed
+// ("expected three numbers NAMES, found 2").
+std::optional<Vector3> parse_vector(const std::string& option, const std::string& text,
+                                    std::string_view numbers, const char* names,
+                                    std::ostream& err) {
+    const auto parsed = parse_number_list(numbers);
+    if (const std::string* why = std::get_if<std::string>(&parsed)) {
+        err << "sxk: deform: " << option << " '" << text << "': " << *why << '\n';
+        return std::nullopt;
+    }
+    const auto& list = std::get<std::vector<double>>(parsed);
+    if (list.size() != 3) {
+        err << "sxk: deform: " << option << " '" << text << "': expected three numbers " << names
+            << ", found " << list.size() << '\n';
+        return std::nullopt;
+    }
+    return Vector3{list[0], list[1], list[2]};
+}
+
 // "EXPR" (with_vector false) or "EXPR:X,Y,Z"; nullopt with the message printed.
 std::optional<Selected> parse_selected(const std::string& option, const std::string& text,
                                        bool with_vector, std::ostream& err) {
@@ -125,18 +144,11 @@ std::optional<Selected> parse_selected(const std::string& option, const std::str
             return std::nullopt;
         }
         expression = text.substr(0, colon);
-        const auto numbers = parse_number_list(std::string_view(text).substr(colon + 1));
-        if (const std::string* why = std::get_if<std::string>(&numbers)) {
-            err << "sxk: deform: " << option << " '" << text << "': " << *why << '\n';
+        const std::optional<Vector3> vector = parse_vector(
+            option, text, std::string_view(text).substr(colon + 1), "X,Y,Z after ':'", err);
+        if (!vector)
             return std::nullopt;
-        }
-        const auto& list = std::get<std::vector<double>>(numbers);
-        if (list.size() != 3) {
-            err << "sxk: deform: " << option << " '" << text
-                << "': expected three numbers X,Y,Z after ':', found " << list.size() << '\n';
-            return std::nullopt;
-        }
-        s.vector = {list[0], list[1], list[2]};
+        s.vector = *vector;
     }
     auto selector = parse_vertex_selector(expression);
     if (!selector) {
@@ -182,18 +194,11 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         return 2;
     Vector3 gravity{0, 0, 0};
     if (!o.gravity.empty()) {
-        const auto numbers = parse_number_list(o.gravity);
-        if (const std::string* why = std::get_if<std::string>(&numbers)) {
-            err << "sxk: deform: --gravity '" << o.gravity << "': " << *why << '\n';
+        const std::optional<Vector3> vector =
+            parse_vector("--gravity", o.gravity, o.gravity, "GX,GY,GZ", err);
+        if (!vector)
             return 2;
-        }
-        const auto& list = std::get<std::vector<double>>(numbers);
-        if (list.size() != 3) {
-            err << "sxk: deform: --gravity '" << o.gravity
-                << "': expected three numbers GX,GY,GZ, found " << list.size() << '\n';
-            return 2;
-        }
-        gravity = {list[0], list[1], list[2]};
+        gravity = *vector;
     }
     if (fixes->empty() && displaces->empty()) {
         err << "sxk: deform: nothing holds the body (no --fix or --displace), so it can move "
