@@ -78,7 +78,7 @@ std::vector<std::string_view> split_words(std::string_view name) {
 
 }  // namespace
 
-struct PluginHost::State {
+struct PluginHost::State final : Services {
     struct Entry {
         LoadedPlugin loaded;
         const sxk_plugin_info* info = nullptr;
@@ -96,6 +96,29 @@ struct PluginHost::State {
     std::vector<CommandEntry> commands;
     std::vector<PluginDiagnostic> diagnostics;
     std::set<fs::path> seen_files;
+
+    // PluginHost::find_service, here so that plug-ins keep a lookup that survives moving the host
+    Outcome<void*> find_service(std::string_view service_id, std::uint32_t version,
+                                std::string_view plugin) const override {
+        bool named_found = false;
+        for (const auto& entry : entries) {
+            if (!plugin.empty() && entry.loaded.name != plugin) continue;
+            named_found = true;
+            const ServiceOffer offer = entry.loaded.plugin->offer(service_id);
+            if (offer.version == 0 || offer.object == nullptr) continue;
+            if (offer.version != version)
+                return Refusal{RefusalCode::not_found,
+                               "plug-in " + entry.loaded.name + " offers " + std::string(service_id) +
+                                   " version " + std::to_string(offer.version) + ", not version " +
+                                   std::to_string(version)};
+            return offer.object;
+        }
+        if (!plugin.empty() && !named_found)
+            return Refusal{RefusalCode::not_found, "no plug-in called " + std::string(plugin)};
+        return Refusal{RefusalCode::not_found,
+                       (plugin.empty() ? std::string("no plug-in") : "plug-in " + std::string(plugin)) +
+                           " offers " + std::string(service_id)};
+    }
 
     void refuse(const fs::path& path, std::string reason) {
         diagnostics.push_back({path, std::move(reason)});
@@ -137,6 +160,7 @@ struct PluginHost::State {
             refuse(path, std::string("plug-in '") + info->name + "' failed to initialise");
             return false;
         }
+        plugin->attach(*this);
         Entry entry;
         entry.loaded = {info->name, info->version, info->summary ? info->summary : "", path, plugin};
         entry.info = info;
@@ -307,22 +331,7 @@ Plugin* PluginHost::find(std::string_view name) const {
 
 Outcome<void*> PluginHost::find_service(std::string_view service_id, std::uint32_t version,
                                         std::string_view plugin) const {
-    for (const auto& entry : m_state->entries) {
-        if (!plugin.empty() && entry.loaded.name != plugin) continue;
-        const ServiceOffer offer = entry.loaded.plugin->offer(service_id);
-        if (offer.version == 0 || offer.object == nullptr) continue;
-        if (offer.version != version)
-            return Refusal{RefusalCode::not_found, "plug-in " + entry.loaded.name + " offers " +
-                                                       std::string(service_id) + " version " +
-                                                       std::to_string(offer.version) +
-                                                       ", not version " + std::to_string(version)};
-        return offer.object;
-    }
-    if (!plugin.empty() && find(plugin) == nullptr)
-        return Refusal{RefusalCode::not_found, "no plug-in called " + std::string(plugin)};
-    return Refusal{RefusalCode::not_found,
-                   (plugin.empty() ? std::string("no plug-in") : "plug-in " + std::string(plugin)) +
-                       " offers " + std::string(service_id)};
+    return m_state->find_service(service_id, version, plugin);
 }
 
 FoundCommand PluginHost::find_command(std::span<const std::string> args) const {

@@ -47,6 +47,27 @@ Sign normal_alignment(const Point& a, const Point& b, const Point& c, const Poin
     return to_sign(CGAL::sign(n0 * n1));
 }
 
+bool segment_meets_triangle(const Point& a, const Point& b, const Point& p, const Point& q,
+                            const Point& r) {
+    using K = detail::Kernel;
+    const K::Point_3 x = to_cgal_3(a), y = to_cgal_3(b);
+    const K::Point_3 t0 = to_cgal_3(p), t1 = to_cgal_3(q), t2 = to_cgal_3(r);
+    if (CGAL::collinear(t0, t1, t2)) {
+        // CGAL's triangle tests need a proper triangle: use its longest side (squared lengths
+        // compared in doubles only pick which side; the side covers the others when collinear)
+        K::Point_3 e0 = t0, e1 = t1;
+        const auto d01 = CGAL::squared_distance(t0, t1), d02 = CGAL::squared_distance(t0, t2),
+                   d12 = CGAL::squared_distance(t1, t2);
+        if (d02 >= d01 && d02 >= d12) e1 = t2;
+        else if (d12 >= d01 && d12 >= d02) e0 = t1, e1 = t2;
+        if (e0 == e1) return x == y ? x == e0 : K::Segment_3(x, y).has_on(e0);
+        const K::Segment_3 side(e0, e1);
+        return x == y ? side.has_on(x) : CGAL::do_intersect(side, K::Segment_3(x, y));
+    }
+    const K::Triangle_3 triangle(t0, t1, t2);
+    return x == y ? triangle.has_on(x) : CGAL::do_intersect(triangle, K::Segment_3(x, y));
+}
+
 Sign compare_distances_to_plane(const Point& a, const Point& b, const Point& p, const Point& q,
                                 const Point& r) {
     // The distances are |det[q-p, r-p, x-p]| over the same |(q-p) x (r-p)|: compare the

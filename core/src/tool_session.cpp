@@ -87,6 +87,7 @@ Outcome<Done> ToolSession::undo_step() {
                        "undo_step: the step is part of the application's open step"};
     if (m_kept.back() == Kept::nothing) {
         m_kept.pop_back();
+        step_taken_back();
         return Done{};
     }
     if (m_mesh.revision() != m_revision)
@@ -96,6 +97,7 @@ Outcome<Done> ToolSession::undo_step() {
         return undone.refusal().prefixed("undo_step: ");
     m_kept.pop_back();
     m_revision = m_mesh.revision();
+    step_taken_back();
     return Done{};
 }
 

@@ -48,6 +48,7 @@ void add_dissect_command(CLI::App& app, Context& context);
 void add_delaunay_flip_command(CLI::App& app, Context& context);
 void add_refine_command(CLI::App& app, Context& context);
 void add_locate_command(CLI::App& app, Context& context);
+void add_generate_command(CLI::App& app, Context& context);
 
 // Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
 // context.err, sets context.exit_code to 2 and returns nullopt. What the reader repaired is said

@@ -1,6 +1,6 @@
 // sxk: the simplexkit command-line tool (docs/cli.md).
 //
-// Built-in commands (info, validate, convert, quality, components, dissect, delaunay-flip, refine, locate) never load plug-ins, so a broken plug-in
+// Built-in commands (info, validate, convert, quality, components, dissect, delaunay-flip, refine, locate, generate) never load plug-ins, so a broken plug-in
 // can neither slow them down nor crash them. Everything else loads the plug-ins first, prints
 // what was refused as "sxk: warning: PATH: reason", and dispatches plug-in commands by their
 // name words before CLI11 sees the arguments: a plug-in parses its own options and prints its
@@ -19,9 +19,9 @@
 namespace sxk::cli {
 namespace {
 
-constexpr std::array<std::string_view, 10> builtin_commands = {"info",    "validate",   "convert", "quality",
-                                                                  "plugins", "components", "dissect", "delaunay-flip",
-                                                                  "refine",  "locate"};
+constexpr std::array<std::string_view, 11> builtin_commands = {
+    "info", "validate", "convert", "quality", "plugins", "components", "dissect", "delaunay-flip", "refine", "locate",
+    "generate"};
 
 bool is_builtin(std::string_view word) {
     return std::find(builtin_commands.begin(), builtin_commands.end(), word) != builtin_commands.end();
@@ -95,11 +95,12 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     add_delaunay_flip_command(app, context);
     add_refine_command(app, context);
     add_locate_command(app, context);
+    add_generate_command(app, context);
     // One --strict for every command that reads a mesh (all but plugins): load_mesh reads it.
     // validate judges the file as it is (never splits) and has a --strict of its own: flat
     // elements are invalid.
     for (CLI::App* command : app.get_subcommands({}))
-        if (command->get_name() != "plugins" && command->get_name() != "validate")
+        if (command->get_name() != "plugins" && command->get_name() != "validate" && command->get_name() != "generate")
             command->add_flag("--strict", context.strict, strict_reading_help);
 
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {

@@ -30,9 +30,12 @@
 #include <string>
 #include <string_view>
 
+#include "sxk/outcome.hpp"
+
 // 2: typed services (Plugin::offer with an interface id and version), run_on_mesh for a mesh
 //    the command may edit.
-#define SXK_PLUGIN_ABI_VERSION 2u
+// 3: Plugin::attach: a plug-in reaches the other plug-ins' services through its host.
+#define SXK_PLUGIN_ABI_VERSION 3u
 
 // Entry points must be visible although the project builds with hidden visibility.
 #if defined(_WIN32)
@@ -108,6 +111,26 @@ ServiceOffer offer_of(Interface* object) {
     return ServiceOffer{Interface::service_version, object};
 }
 
+// The services of the plug-ins a host has loaded, as a plug-in sees them (Plugin::attach): the
+// same lookup as PluginHost::service, through an object that stays where it is when the host is
+// moved.
+class Services {
+public:
+    // The first loaded plug-in (or the one called `plugin`) offering Interface; refuses as
+    // PluginHost::service does ("no plug-in offers sxk.degeneracy").
+    template <class Interface>
+    Outcome<Interface*> service(std::string_view plugin = {}) const {
+        auto found = find_service(Interface::service_id, Interface::service_version, plugin);
+        if (!found) return found.refusal();
+        return static_cast<Interface*>(*found);
+    }
+    virtual Outcome<void*> find_service(std::string_view service_id, std::uint32_t version,
+                                        std::string_view plugin = {}) const = 0;
+
+protected:
+    ~Services() = default;
+};
+
 // A loaded plug-in. It owns its commands; they stay valid as long as the plug-in object.
 class Plugin {
 public:
@@ -118,6 +141,13 @@ public:
     // Other services (a tool-session factory, the degeneracy removal, ...) by interface id;
     // {} when not offered. Implement with offer_of; look up with PluginHost::service.
     virtual ServiceOffer offer(std::string_view /*service_id*/) { return {}; }
+
+    // Called once by the host that created the plug-in, before anything else is asked of it,
+    // with the host's services. A plug-in that uses other plug-ins' services (the snap cutter:
+    // the degeneracy removal, the elasticity) keeps the reference and looks them up when it
+    // needs them, so plug-ins loaded after it count too. `services` outlives the plug-in (the
+    // host destroys its plug-ins first).
+    virtual void attach(const Services& /*services*/) {}
 };
 
 }  // namespace sxk

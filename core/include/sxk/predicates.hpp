@@ -40,6 +40,12 @@ enum class Positions { reference, deformed };
 SXK_API Sign compare_distances_to_plane(const Point& a, const Point& b, const Point& p, const Point& q,
                                         const Point& r);
 
+// The closed segment [a, b] meets the closed triangle (p, q, r) in space, exactly: what a snap cut
+// asks of every mesh edge near a sweep triangle (thesis §3.2.1). A degenerate triangle (collinear
+// corners) is the segment between its two farthest corners; a = b is a point.
+SXK_API bool segment_meets_triangle(const Point& a, const Point& b, const Point& p, const Point& q,
+                                    const Point& r);
+
 // Exact orientation of element t in the chosen positions, taking the simplex sign into account:
 // positive means the element is correctly oriented (counter-clockwise triangle, positive
 // volume tetrahedron). Only defined when topological == ambient dimension; for triangle

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -24,6 +25,7 @@ namespace sxk {
 struct ToolSample {
     double time = 0;
     std::array<double, 6> values{};  // the first ToolPath::columns are the sample's
+    std::size_t line = 0;            // where it is in the file (1-based), for the tools' messages
 };
 
 struct ToolPath {

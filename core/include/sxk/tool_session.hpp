@@ -36,9 +36,12 @@ namespace sxk {
 // Where a tool is for one step, in the positions the tool works in (a cutter acts on the
 // deformed positions, thesis §3.2.2): its reference point (a scalpel's tip, a needle's tip) and
 // its axes (unit vectors in mesh coordinates: the tool's x, y and z; a needle points along z).
+// A tool with extent (a scalpel's blade, a needle's shaft) reaches back from `position` along
+// -axes[2] by `length`: the blade runs from its handle end position - length * axes[2] to its tip.
 struct ToolPose {
     Point position{0, 0, 0};
     std::array<Point, 3> axes{Point{1, 0, 0}, Point{0, 1, 0}, Point{0, 0, 1}};
+    double length = 0;
 };
 
 // What one step did, for the application (solver, renderer) and for logs.
@@ -79,6 +82,11 @@ protected:
     // What the tool does at `pose`: any Mesh calls and operations, adding what it did to
     // `report.actions` (step() fills in elements and vertices). A refusal takes it all back.
     virtual Outcome<Done> apply(const ToolPose& pose, StepReport& report) = 0;
+    // Called after undo_step (or cancel) took back a step apply() had completed, newest first:
+    // a tool that keeps state from step to step (a cutter's incomplete cuts, the scalpel's last
+    // pose) restores its state of before that step. A refused apply() restores its own state
+    // before it returns.
+    virtual void step_taken_back() {}
 
 private:
     Mesh& m_mesh;

@@ -42,6 +42,7 @@ ToolPath parse_tool_path(std::string_view text, const std::string& name,
         ToolSample sample;
         const std::string_view time = cursor.need_in_line("a time");
         sample.time = read_time(cursor, time);
+        sample.line = cursor.line();
         int count = 0;
         for (std::string_view token = cursor.next_in_line(); !token.empty();
              token = cursor.next_in_line()) {

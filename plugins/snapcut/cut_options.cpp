@@ -1,0 +1,32 @@
+// The snap cutter's options as words (cut_options.hpp).
+#include "cut_options.hpp"
+
+#include "command_line.hpp"
+
+namespace sxk::snapcut {
+
+void add_cut_options(CLI::App& app, Options& options) {
+    // CLI11 flags write true; these name what is switched off
+    app.add_flag_callback("--no-snap", [&options] { options.snap = false; },
+                          "Dissect the selected faces where they are: no node snapping (jagged incisions)");
+    app.add_flag_callback("--no-degeneracy-removal", [&options] { options.remove_degeneracies = false; },
+                          "Leave the flat elements the snapping makes");
+    app.add_option("--aspect", options.aspect_ratio,
+                   "Aspect ratio threshold A, 0 < A < 1: below it an element is degenerate")
+        ->check(number_in(0, false, 1, false, "(0, 1)"))
+        ->capture_default_str();
+    app.add_option("--angle", options.large_angle,
+                   "Large dihedral angle threshold in radians, pi/2 < x < pi (default 0.99 pi)")
+        ->check(number_in(pi / 2, false, pi, false, "(pi/2, pi)"));
+    app.add_option("--snap-min-aspect", options.min_snap_aspect_ratio,
+                   "Refuse a snap that leaves an element below this aspect ratio, 0 <= A < 1 (0: only "
+                   "inverted and flat elements are refused)")
+        ->check(number_in(0, true, 1, false, "[0, 1)"))
+        ->capture_default_str();
+    app.add_flag("--remove-loose", options.remove_loose_pieces, "Remove the pieces a step cuts loose");
+    app.add_option("--cut-label", options.cut_label, "Face label of the cut surface")
+        ->check(whole_number("LABEL"))
+        ->capture_default_str();
+}
+
+}  // namespace sxk::snapcut

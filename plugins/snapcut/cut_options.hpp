@@ -1,0 +1,22 @@
+// The snap cutter's options as command-line words, for `sxk cut snap` and for the sessions the
+// plug-in's ToolFactory begins (one parser, so the two accept the same words):
+//
+//   --no-snap                  faces are dissected where they are (jagged incisions, Fig. 3.5)
+//   --no-degeneracy-removal    flat elements stay (thesis Fig. 3.14)
+//   --aspect A                 degeneracy threshold, 0 < A < 1 (0.01)
+//   --angle RADIANS            large dihedral angle, pi/2 < x < pi (0.99 pi)
+//   --snap-min-aspect A        refuse a snap leaving an element below A, 0 <= A < 1 (0: off)
+//   --remove-loose             remove the pieces a step cuts loose
+//   --cut-label L              the face label of the cut surface (9999)
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "snap_cut.hpp"
+
+namespace sxk::snapcut {
+
+// Adds the options above to `app`, writing into `options` when parsed.
+void add_cut_options(CLI::App& app, Options& options);
+
+}  // namespace sxk::snapcut

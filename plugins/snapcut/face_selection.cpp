@@ -1,0 +1,132 @@
+// Face selection (face_selection.hpp, thesis §3.2.1).
+#include "face_selection.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "sxk/predicates.hpp"
+
+namespace sxk::snapcut {
+
+std::uint64_t CutMarks::key(VertexId a, VertexId b) {
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t{a} << 32) | b;
+}
+
+std::optional<CutMarks::Mark> CutMarks::mark(VertexId a, VertexId b) const {
+    const auto found = m_marks.find(key(a, b));
+    if (found == m_marks.end()) return std::nullopt;
+    return found->second;
+}
+
+void CutMarks::add_mark(VertexId a, VertexId b, const Mark& mark) {
+    if (m_marks.emplace(key(a, b), mark).second) m_mark_order.push_back(key(a, b));
+}
+
+std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
+    m_sweeps.push_back(sweep);
+    return static_cast<std::uint32_t>(m_sweeps.size() - 1);
+}
+
+void CutMarks::add_snapped(VertexId v) {
+    if (m_snapped.insert(v).second) m_snapped_order.push_back(v);
+}
+
+CutMarks::Checkpoint CutMarks::checkpoint() const {
+    return {m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), m_incomplete};
+}
+
+void CutMarks::restore(const Checkpoint& checkpoint) {
+    while (m_mark_order.size() > checkpoint.marks) {
+        m_marks.erase(m_mark_order.back());
+        m_mark_order.pop_back();
+    }
+    while (m_snapped_order.size() > checkpoint.snapped) {
+        m_snapped.erase(m_snapped_order.back());
+        m_snapped_order.pop_back();
+    }
+    m_sweeps.resize(checkpoint.sweeps);
+    m_incomplete = checkpoint.incomplete;
+}
+
+namespace {
+
+// The end of edge {u, v} nearer where it crosses the sweep's plane; an exact half (or an edge in
+// the plane) gives the lower id.
+VertexId nearer_end(const Mesh& mesh, VertexId u, VertexId v, const Sweep& sweep) {
+    switch (compare_distances_to_plane(mesh.deformed(u), mesh.deformed(v), sweep.a, sweep.b, sweep.c)) {
+    case Sign::negative: return u;
+    case Sign::positive: return v;
+    case Sign::zero: break;
+    }
+    return std::min(u, v);
+}
+
+}  // namespace
+
+Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
+                       std::span<const ElementId> candidates) {
+    const Sweep& sweep = marks.sweeps()[sweep_index];
+    Selection selection;
+    std::unordered_set<std::uint64_t> missed;  // edges this sweep tested and does not cross
+    std::vector<ElementId> incomplete;
+    for (const ElementId t : candidates) {
+        if (!mesh.is_element(t)) continue;
+        ++selection.elements_searched;
+        const Simplex s = mesh.simplex(t);
+        // marked corners of t: which, and the first sweep that marked each
+        std::array<std::uint32_t, 4> first_sweep;
+        first_sweep.fill(UINT32_MAX);
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) {
+                const VertexId u = s.vertex(i), v = s.vertex(j);
+                std::optional<CutMarks::Mark> mark = marks.mark(u, v);
+                if (!mark) {
+                    const std::uint64_t edge = (std::uint64_t{u} << 32) | v;  // u < v: canonical order
+                    if (missed.contains(edge)) continue;
+                    if (!segment_meets_triangle(mesh.deformed(u), mesh.deformed(v), sweep.a, sweep.b, sweep.c)) {
+                        missed.insert(edge);
+                        continue;
+                    }
+                    mark = CutMarks::Mark{nearer_end(mesh, u, v, sweep), sweep_index};
+                    marks.add_mark(u, v, *mark);
+                    ++selection.edges_hit;
+                }
+                const int corner = mark->node == u ? i : j;
+                first_sweep[static_cast<std::size_t>(corner)] =
+                    std::min(first_sweep[static_cast<std::size_t>(corner)], mark->sweep);
+            }
+        const auto marked = static_cast<int>(
+            std::count_if(first_sweep.begin(), first_sweep.end(), [](std::uint32_t w) { return w != UINT32_MAX; }));
+        if (marked == 0) continue;
+        if (marked < 3) {
+            incomplete.push_back(t);
+            continue;
+        }
+        // the unmarked corner, or with four marked the highest vertex id (s is sorted)
+        int left_out = 3;
+        for (int i = 0; i < 4; ++i)
+            if (first_sweep[static_cast<std::size_t>(i)] == UINT32_MAX) left_out = i;
+        if (mesh.mate(mesh.face(t, left_out)) == invalid_id) continue;  // on the boundary already
+        SelectedFace face;
+        std::array<VertexId, 3> corners{};
+        for (int i = 0, k = 0; i < 4; ++i) {
+            if (i == left_out) continue;
+            corners[static_cast<std::size_t>(k)] = s.vertex(i);
+            face.sweep[static_cast<std::size_t>(k++)] = first_sweep[static_cast<std::size_t>(i)];
+        }
+        face.face = Simplex(+1, corners);
+        selection.faces.push_back(face);
+    }
+    // a face is selected from both its tetrahedra: keep one (the first after sorting)
+    std::sort(selection.faces.begin(), selection.faces.end(),
+              [](const SelectedFace& x, const SelectedFace& y) { return x.face < y.face; });
+    selection.faces.erase(std::unique(selection.faces.begin(), selection.faces.end(),
+                                      [](const SelectedFace& x, const SelectedFace& y) { return x.face == y.face; }),
+                          selection.faces.end());
+    std::sort(incomplete.begin(), incomplete.end());
+    marks.set_incomplete(std::move(incomplete));
+    return selection;
+}
+
+}  // namespace sxk::snapcut

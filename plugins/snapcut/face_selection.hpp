@@ -1,0 +1,107 @@
+// Face selection of the snap cut (thesis §3.2.1, Figs. 3.1-3.4).
+//
+// A sweep triangle is tested against the edges of the tetrahedra it meets (exact segment/triangle
+// test, deformed positions). Each edge crossed marks the end nearer the crossing (the exact
+// comparison of the ends' distances to the sweep's plane, which is the comparison along the edge;
+// an exact half marks the lower vertex id, as the thesis does). A tetrahedron's marked ends are a
+// vertex, an edge, a face or all four corners:
+//
+//        one           two: an edge      three: that face      four (all edges halved, or
+//        marked        (incomplete)      is selected           marks of different sweeps): the
+//        (incomplete)                                          face without the highest vertex id
+//
+// Marks are kept from sweep to sweep (CutMarks), so a later sweep completes the tetrahedra an
+// earlier one left incomplete (Fig. 3.4: selected faces lag behind the scalpel), and an edge is
+// marked by the first sweep that crosses it only (an edge crossed twice by sweeps of different
+// orientations would otherwise mark both its ends). Faces on the boundary are never selected:
+// there is nothing to open.
+//
+// Where the sweep is searched. The thesis tests the whole boundary for collisions and walks from
+// those and from the incomplete tetrahedra. Here the candidates are the elements whose closed
+// simplex meets the sweep triangle (SpatialIndex::elements_hit_by_triangle: an R-tree query and
+// an exact test each): every tetrahedron with an edge the sweep crosses is among them, the
+// incomplete ones it completes included (a tetrahedron gains a mark only through an edge the
+// sweep crosses), and nothing else is looked at. The incomplete tetrahedra are those of the last
+// sweep's candidates with one or two marked corners, kept for the report.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "sxk/mesh.hpp"
+
+namespace sxk::snapcut {
+
+// A sweep triangle, in the deformed positions.
+struct Sweep {
+    Point a{}, b{}, c{};
+};
+
+// What the cut keeps between sweeps, with checkpoints to take steps back.
+class CutMarks {
+public:
+    struct Mark {
+        VertexId node = invalid_id;  // the end of the edge nearer the crossing
+        std::uint32_t sweep = 0;     // the sweep that crossed the edge (index into sweeps())
+    };
+
+    // The mark of edge {a, b}, if a sweep crossed it.
+    std::optional<Mark> mark(VertexId a, VertexId b) const;
+    void add_mark(VertexId a, VertexId b, const Mark& mark);
+    std::size_t mark_count() const { return m_marks.size(); }
+
+    const std::vector<Sweep>& sweeps() const { return m_sweeps; }
+    std::uint32_t add_sweep(const Sweep& sweep);
+
+    // The last sweep's candidates with one or two marked corners (sorted).
+    const std::vector<ElementId>& incomplete() const { return m_incomplete; }
+    void set_incomplete(std::vector<ElementId> incomplete) { m_incomplete = std::move(incomplete); }
+
+    // Nodes moved onto the sweep once already: they stay where the cut put them.
+    bool snapped(VertexId v) const { return m_snapped.contains(v); }
+    void add_snapped(VertexId v);
+
+    struct Checkpoint {
+        std::size_t marks = 0, snapped = 0, sweeps = 0;
+        std::vector<ElementId> incomplete;
+    };
+    Checkpoint checkpoint() const;
+    // Forgets everything added since `checkpoint` (which must be older than any later one used).
+    void restore(const Checkpoint& checkpoint);
+
+private:
+    static std::uint64_t key(VertexId a, VertexId b);
+    std::unordered_map<std::uint64_t, Mark> m_marks;
+    std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
+    std::unordered_set<VertexId> m_snapped;
+    std::vector<VertexId> m_snapped_order;
+    std::vector<Sweep> m_sweeps;
+    std::vector<ElementId> m_incomplete;
+};
+
+// A face chosen for the cut, with the nodes to snap and the sweep whose plane each goes to.
+struct SelectedFace {
+    Simplex face;                           // sorted vertices, sign +1
+    std::array<std::uint32_t, 3> sweep{};   // per face vertex (face.vertex(j)): the first sweep
+                                            // that marked it from this tetrahedron's edges
+};
+
+struct Selection {
+    std::vector<SelectedFace> faces;  // interior faces, each once, by face vertices
+    std::size_t edges_hit = 0;        // edges this sweep marked
+    std::size_t elements_searched = 0;
+};
+
+// Processes sweep `sweep_index` of `marks` against the tetrahedra `candidates` (what the sweep
+// meets; dead ids are skipped): marks the edges it crosses, selects the
+// faces completed, and leaves the incomplete tetrahedra in `marks`. Deformed positions.
+Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
+                       std::span<const ElementId> candidates);
+
+}  // namespace sxk::snapcut

@@ -1,0 +1,32 @@
+// Pieces a cut separated from the rest of the mesh, found at the cost of the pieces, not of the
+// mesh (a whole-mesh component count, sxk/components.hpp, is O(n) per step).
+//
+// One breadth-first search per seed element (the elements on both sides of the new cut) runs
+// through face neighbours, the searches taking one element each in turn. Two searches that meet
+// are one; a search that runs out of elements before meeting the others has found a whole
+// component: a loose piece. When a single search is left it is the body the pieces came off, and
+// it stops. So the work is about the loose pieces' size times the number of searches, and a cut
+// that separates nothing costs the few steps the searches need to meet around the cut's rim.
+//
+//        body (search left running: stops)      ======  the new cut faces
+//      ---------------------------------
+//        ======================                 seeds on both sides; the piece below the cut
+//        piece (search ran out: loose)          runs out first
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "sxk/mesh.hpp"
+
+namespace sxk::snapcut {
+
+struct LoosePieces {
+    std::vector<std::vector<ElementId>> pieces;  // each sorted; in the order they were found
+};
+
+// The components of the seeds' elements that are not the last one standing (dead ids skipped).
+// With the seeds all in one component there is no loose piece.
+LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds);
+
+}  // namespace sxk::snapcut

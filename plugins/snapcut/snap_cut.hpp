@@ -1,0 +1,152 @@
+// Snap cutting (thesis chapter 3, §3.2): a scalpel cuts a tetrahedral mesh along existing faces.
+// Each movement of the scalpel is one tool step (sxk/tool_session.hpp), one transaction:
+//
+//   scalpel (h, t) -> (h', t')                 the movement sweeps two triangles (h t t'), (h t' h')
+//        |
+//   1. select faces (§3.2.1)                   every mesh edge the sweep crosses marks its end
+//        |  face_selection.hpp                 nearer the crossing; a tetrahedron whose marked ends
+//        |                                     are three of its corners has that face selected
+//   2. snap nodes (§3.2.2)                     the selected faces' corners move onto the sweep
+//        |  node_snapping.hpp                  (boundary nodes within their boundary faces), in
+//        |                                     the deformed positions, mapped back to the reference
+//   3. dissect (§7.3)                          the selected faces open (sxk/ops/dissect.hpp), each
+//        |                                     carrying the cut label
+//   4. remove degeneracies (§3.2.3)            among the elements around the snapped nodes, by the
+//        |                                     degeneracy plug-in's service when it is loaded
+//   5. loose pieces                            a piece the cut separated is found by a search from
+//           loose_pieces.hpp                   both sides of the new cut faces that stops at the
+//                                              smaller side: its cost is that side's, not the mesh's
+//
+// The sweep meets the deformed shape (the positions a simulation shows); the reference shape is
+// kept consistent through the element that holds each snapped position. Nothing in a step scans
+// the whole mesh: the sweep's elements come from a SpatialIndex over the deformed positions.
+//
+//     SnapCutSession session(mesh, {.degeneracy = service});
+//     session.cut({handle, tip});              // places the scalpel
+//     auto step = session.cut({handle2, tip2}); // a movement: one undoable step
+//     session.last_step();                     // what it did (CutStepReport)
+//     session.undo_step();
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "face_selection.hpp"
+#include "sxk/locate.hpp"
+#include "sxk/quality.hpp"
+#include "sxk/tool_session.hpp"
+
+namespace sxk::degeneracy {
+struct DegeneracyService;
+}
+
+namespace sxk::snapcut {
+
+// The scalpel: a line segment from the handle end to the tip (deformed positions).
+struct Scalpel {
+    Point handle{};
+    Point tip{};
+};
+
+// The pose a ToolFactory user passes for a scalpel: position = tip, axes[2] along the blade
+// (handle to tip), length = the blade's length. (A zero-length blade gives axes[2] = z.)
+ToolPose to_pose(const Scalpel& scalpel);
+Scalpel scalpel_of(const ToolPose& pose);
+
+struct Options {
+    bool snap = true;                  // move the selected faces' corners onto the sweep (§3.2.2)
+    bool remove_degeneracies = true;   // through the degeneracy service, when there is one
+    // Shape thresholds of the degeneracy removal (thesis §3.3: 0.01 and 0.99 pi).
+    double aspect_ratio = 0.01;
+    double large_angle = 0.99 * pi;
+    // A snap is refused (the node stays) when it would make an element of its star inverted or
+    // flat in either position set, or give it an aspect ratio below this (0: only inverted and
+    // flat are refused; degeneracy removal then deals with the thin elements, as in the thesis).
+    double min_snap_aspect_ratio = 0;
+    // The face label of the cut surface (DissectOptions::cut_label).
+    int cut_label = 9999;
+    // Remove the pieces a step cuts loose (they are reported either way). A simulation fixes
+    // them instead (thesis §3.3: every unfixed component is fixed on a face).
+    bool remove_loose_pieces = false;
+};
+
+// What one step did (thesis §3.3's figures, per step).
+struct CutStepReport {
+    std::size_t sweeps = 0;            // sweep triangles processed (0 for the first pose)
+    std::size_t elements_searched = 0; // elements the sweeps met (index) or left incomplete
+    std::size_t edges_hit = 0;         // edges the sweeps crossed for the first time
+    std::size_t faces_selected = 0;    // interior faces selected (§3.2.1)
+    std::size_t faces_dissected = 0;   // of those, faces that opened
+    std::size_t nodes_snapped = 0;
+    std::size_t nodes_refused = 0;     // listed with reasons in `refusals`
+    std::vector<std::pair<VertexId, std::string>> refusals;
+    std::size_t incomplete = 0;        // tetrahedra left with an incomplete cut (1 or 2 marked nodes)
+    // degeneracy removal (all 0 when it did not run)
+    bool degeneracy_removal_ran = false;
+    std::size_t degenerates_found = 0;
+    std::size_t collapses = 0, splits = 0, flips = 0, peeled = 0;
+    std::size_t cut_free = 0;          // elements cut free and removed (cracks)
+    std::size_t degenerates_remaining = 0;
+    // loose pieces the step made: element count of each (sorted, smallest first)
+    std::vector<std::size_t> loose_pieces;
+    std::size_t elements = 0, vertices = 0;  // the mesh's after the step (vertices: in some element)
+    // seconds per phase, and in all
+    double seconds_select = 0, seconds_snap = 0, seconds_dissect = 0, seconds_degeneracy = 0,
+           seconds_pieces = 0, seconds = 0;
+};
+
+// What the session offers besides the kernel: other plug-ins' services (nullptr: not loaded).
+struct CutServices {
+    const degeneracy::DegeneracyService* degeneracy = nullptr;
+};
+
+class SnapCutSession final : public ToolSession {
+public:
+    // Tetrahedral meshes in space only (refused by make otherwise). Builds a SpatialIndex over the
+    // deformed positions (O(n log n), once).
+    static Outcome<std::unique_ptr<SnapCutSession>> make(Mesh& mesh, const Options& options,
+                                                         const CutServices& services = {});
+
+    // One step: the scalpel moves from its last pose to `scalpel` (the first call only places
+    // it). ToolSession::step(pose) does the same with scalpel_of(pose).
+    Outcome<StepReport> cut(const Scalpel& scalpel);
+    // The report of the last step taken (refused steps included: it says how far they got).
+    const CutStepReport& last_step() const { return m_last; }
+    const Options& options() const { return m_options; }
+    bool has_degeneracy_service() const { return m_services.degeneracy != nullptr; }
+    // The scalpel's pose after the last kept step, if placed.
+    const std::optional<Scalpel>& scalpel() const { return m_scalpel; }
+
+    SnapCutSession(Mesh& mesh, const Options& options, const CutServices& services);
+    ~SnapCutSession() override;
+
+protected:
+    Outcome<Done> apply(const ToolPose& pose, StepReport& report) override;
+    void step_taken_back() override;
+
+private:
+    Outcome<Done> cut_sweep(const Sweep& sweep, StepReport& report);
+
+    Options m_options;
+    CutServices m_services;
+    SpatialIndex m_index;  // deformed positions: where the scalpel meets the mesh
+    CutMarks m_marks;
+    std::optional<Scalpel> m_scalpel;
+    std::optional<Scalpel> m_exact;  // cut()'s scalpel, used by apply instead of the pose's
+    // per kept step: what to restore when it is taken back
+    struct Undo {
+        std::optional<Scalpel> scalpel;
+        CutMarks::Checkpoint marks;
+    };
+    std::vector<Undo> m_undo;
+    CutStepReport m_last;
+};
+
+}  // namespace sxk::snapcut

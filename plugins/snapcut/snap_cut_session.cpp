@@ -1,0 +1,257 @@
+// The snap cut's tool session (snap_cut.hpp): a scalpel movement, one transaction.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "degeneracy_service.hpp"
+#include "loose_pieces.hpp"
+#include "node_snapping.hpp"
+#include "snap_cut.hpp"
+#include "sxk/ops/dissect.hpp"
+#include "sxk/predicates.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::snapcut {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double length(const Point& a, const Point& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+// The elements around `vertices` that are still there, sorted, no repeats.
+std::vector<ElementId> elements_around(const Mesh& mesh, std::span<const VertexId> vertices) {
+    std::vector<ElementId> around;
+    for (const VertexId v : vertices)
+        if (v < mesh.vertex_count() && mesh.vertex_element(v) != invalid_id)
+            collect_star(mesh, v, mesh.vertex_element(v), around);
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    return around;
+}
+
+// The interior faces labelled `label` that contain a corner of `faces`, and `faces` themselves,
+// sorted by vertices, each once.
+std::vector<Simplex> labelled_faces_around(const Mesh& mesh, std::span<const Simplex> faces, int label) {
+    std::vector<VertexId> corners;
+    for (const Simplex& face : faces)
+        for (int j = 0; j < face.count(); ++j) corners.push_back(face.vertex(j));
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    std::vector<Simplex> cut(faces.begin(), faces.end());
+    std::vector<ElementId> around;
+    for (const VertexId v : corners) {
+        around.clear();
+        collect_star(mesh, v, mesh.vertex_element(v), around);
+        for (const ElementId t : around)
+            for (int i = 0; i < mesh.element_vertex_count(); ++i) {
+                const FaceId f = mesh.face(t, i);
+                if (mesh.mate(f) == invalid_id) continue;
+                const Simplex face = mesh.face_simplex(f);
+                if (!face.contains(v) || mesh.face_label(face) != label) continue;
+                cut.push_back(Simplex(+1, face.vertices()));
+            }
+    }
+    std::sort(cut.begin(), cut.end());
+    cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
+    return cut;
+}
+
+}  // namespace
+
+ToolPose to_pose(const Scalpel& scalpel) {
+    ToolPose pose;
+    pose.position = scalpel.tip;
+    pose.length = length(scalpel.handle, scalpel.tip);
+    if (pose.length > 0)
+        for (int i = 0; i < 3; ++i)
+            pose.axes[2][static_cast<std::size_t>(i)] =
+                (scalpel.tip[static_cast<std::size_t>(i)] - scalpel.handle[static_cast<std::size_t>(i)]) / pose.length;
+    return pose;
+}
+
+Scalpel scalpel_of(const ToolPose& pose) {
+    Scalpel scalpel{pose.position, pose.position};
+    for (std::size_t i = 0; i < 3; ++i) scalpel.handle[i] -= pose.length * pose.axes[2][i];
+    return scalpel;
+}
+
+Outcome<std::unique_ptr<SnapCutSession>> SnapCutSession::make(Mesh& mesh, const Options& options,
+                                                               const CutServices& services) {
+    if (mesh.topological_dimension() != 3 || mesh.ambient_dimension() != 3)
+        return Refusal{RefusalCode::not_applicable, "snapcut: the snap cutter cuts tetrahedral meshes in space"};
+    if (!(options.aspect_ratio > 0 && options.aspect_ratio < 1))
+        return Refusal{RefusalCode::bad_argument,
+                       "snapcut: aspect ratio threshold must be in (0, 1), not " + std::to_string(options.aspect_ratio)};
+    if (!(options.min_snap_aspect_ratio >= 0 && options.min_snap_aspect_ratio < 1))
+        return Refusal{RefusalCode::bad_argument, "snapcut: the snap's aspect ratio limit must be in [0, 1), not " +
+                                                      std::to_string(options.min_snap_aspect_ratio)};
+    return std::make_unique<SnapCutSession>(mesh, options, services);
+}
+
+SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServices& services)
+    : ToolSession(mesh), m_options(options), m_services(services), m_index(mesh, Positions::deformed) {}
+
+SnapCutSession::~SnapCutSession() = default;
+
+Outcome<StepReport> SnapCutSession::cut(const Scalpel& scalpel) {
+    m_exact = scalpel;
+    auto result = step(to_pose(scalpel));
+    m_exact.reset();
+    return result;
+}
+
+void SnapCutSession::step_taken_back() {
+    if (m_undo.empty()) return;
+    m_marks.restore(m_undo.back().marks);
+    m_scalpel = m_undo.back().scalpel;
+    m_undo.pop_back();
+}
+
+Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
+    const auto start = Clock::now();
+    const Scalpel next = m_exact ? *m_exact : scalpel_of(pose);
+    for (const Point& p : {next.handle, next.tip})
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            return Refusal{RefusalCode::bad_argument, "snapcut: the scalpel's coordinates must be finite"};
+    m_last = {};
+    Undo undo{m_scalpel, m_marks.checkpoint()};
+    if (m_scalpel) {
+        const Scalpel& was = *m_scalpel;
+        // the movement's sweep: (h, t, t') then (h, t', h'); a sweep with collinear corners (the
+        // scalpel stood still, or slid along itself) sweeps no area and is skipped
+        for (const Sweep& sweep : {Sweep{was.handle, was.tip, next.tip}, Sweep{was.handle, next.tip, next.handle}}) {
+            if (collinear(sweep.a, sweep.b, sweep.c)) continue;
+            if (Outcome<Done> done = cut_sweep(sweep, report); !done) {
+                m_marks.restore(undo.marks);
+                m_last.seconds = seconds_since(start);
+                return done.refusal();
+            }
+        }
+    } else {
+        report.actions.push_back("placed the scalpel");
+    }
+    m_scalpel = next;
+    m_undo.push_back(std::move(undo));
+    m_last.elements = mesh().element_count();
+    m_last.vertices = mesh().vertex_count();
+    m_last.incomplete = m_marks.incomplete().size();
+    m_last.seconds = seconds_since(start);
+    return Done{};
+}
+
+Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) {
+    Mesh& mesh = this->mesh();
+    ++m_last.sweeps;
+
+    // 1. select (§3.2.1) among the elements the sweep meets (face_selection.hpp: they include
+    // every incomplete tetrahedron this sweep can complete)
+    auto phase = Clock::now();
+    const std::uint32_t sweep_index = m_marks.add_sweep(sweep);
+    const std::vector<ElementId> candidates =
+        m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c).elements;
+    const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates);
+    m_last.elements_searched += selection.elements_searched;
+    m_last.edges_hit += selection.edges_hit;
+    m_last.faces_selected += selection.faces.size();
+    m_last.seconds_select += seconds_since(phase);
+    if (selection.faces.empty()) return Done{};
+
+    // 2. snap (§3.2.2) the corners not snapped before, each to the plane of the first sweep that
+    // marked it
+    phase = Clock::now();
+    std::vector<NodeToSnap> nodes;
+    std::vector<Simplex> faces;
+    for (const SelectedFace& face : selection.faces) {
+        faces.push_back(face.face);
+        for (int j = 0; j < 3; ++j)
+            if (!m_marks.snapped(face.face.vertex(j)))
+                nodes.push_back({face.face.vertex(j), face.sweep[static_cast<std::size_t>(j)]});
+    }
+    std::sort(nodes.begin(), nodes.end(), [](const NodeToSnap& x, const NodeToSnap& y) {
+        return x.node != y.node ? x.node < y.node : x.sweep < y.sweep;
+    });
+    nodes.erase(std::unique(nodes.begin(), nodes.end(),
+                            [](const NodeToSnap& x, const NodeToSnap& y) { return x.node == y.node; }),
+                nodes.end());
+    std::vector<VertexId> touched;  // whose stars the degeneracy removal looks at
+    if (m_options.snap) {
+        SnapResult snapped = snap_nodes(mesh, nodes, m_marks.sweeps(), m_options.min_snap_aspect_ratio);
+        for (const VertexId v : snapped.snapped) m_marks.add_snapped(v);
+        m_last.nodes_snapped += snapped.snapped.size();
+        m_last.nodes_refused += snapped.refused.size();
+        touched = snapped.snapped;
+        for (auto& refusal : snapped.refused) m_last.refusals.push_back(std::move(refusal));
+        report.actions.push_back("snapped " + std::to_string(snapped.snapped.size()) + " nodes, refused " +
+                                 std::to_string(snapped.refused.size()));
+    }
+    m_last.seconds_snap += seconds_since(phase);
+
+    // 3. dissect (§7.3). A selected face opens only once the faces around its corners separate
+    // their stars (at the rim of the incision they do not yet: the selection lags, Fig. 3.4), so
+    // the selected faces carry the cut label from now on, and each sweep dissects every labelled
+    // interior face around the corners of its own: those it selected, and those earlier sweeps
+    // selected that could not open then.
+    phase = Clock::now();
+    for (const Simplex& face : faces)
+        if (!mesh.face_label(face)) mesh.set_face_label(face, m_options.cut_label);
+    const std::vector<Simplex> cut = labelled_faces_around(mesh, faces, m_options.cut_label);
+    auto dissected = dissect(mesh, cut, DissectOptions{m_options.cut_label});
+    if (!dissected) return dissected.refusal().prefixed("snapcut: ");
+    const std::size_t opened = dissected->opened.size() / 2;
+    m_last.faces_dissected += opened;
+    for (const auto& [original, copy] : dissected->new_vertices) {
+        touched.push_back(original);
+        touched.push_back(copy);
+    }
+    report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
+                             std::to_string(dissected->new_vertices.size()) + " new nodes");
+    m_last.seconds_dissect += seconds_since(phase);
+
+    // 4. degeneracy removal (§3.2.3) among the elements around what moved or split
+    phase = Clock::now();
+    if (m_options.remove_degeneracies && m_services.degeneracy != nullptr && !touched.empty()) {
+        degeneracy::Options removal;
+        removal.aspect_ratio = m_options.aspect_ratio;
+        removal.large_angle = m_options.large_angle;
+        const std::vector<ElementId> around = elements_around(mesh, touched);
+        auto removed = m_services.degeneracy->remove_among(mesh, around, removal);
+        if (!removed) return removed.refusal().prefixed("snapcut: degeneracy removal: ");
+        m_last.degeneracy_removal_ran = true;
+        m_last.degenerates_found += removed->found;
+        m_last.collapses += removed->collapses;
+        m_last.splits += removed->splits;
+        m_last.flips += removed->flips;
+        m_last.peeled += removed->peeled;
+        m_last.cut_free += removed->cut_free;
+        m_last.degenerates_remaining = removed->remaining;
+        report.actions.push_back(std::to_string(removed->found) + " degenerate, " +
+                                 std::to_string(removed->collapses) + " collapses, " +
+                                 std::to_string(removed->cut_free) + " cut free");
+    }
+    m_last.seconds_degeneracy += seconds_since(phase);
+
+    // 5. pieces the cut separated, found from both sides of the cut
+    phase = Clock::now();
+    std::vector<ElementId> seeds = elements_around(mesh, touched);
+    for (const FaceId f : dissected->opened)
+        if (mesh.is_face(f)) seeds.push_back(mesh.face_element(f));
+    LoosePieces pieces = find_loose_pieces(mesh, seeds);
+    for (const auto& piece : pieces.pieces) m_last.loose_pieces.push_back(piece.size());
+    std::sort(m_last.loose_pieces.begin(), m_last.loose_pieces.end());
+    if (m_options.remove_loose_pieces)
+        for (const auto& piece : pieces.pieces) {
+            auto removed = mesh.replace_elements(piece, std::span<const Simplex>{});
+            if (!removed) return removed.refusal().prefixed("snapcut: removing a loose piece: ");
+        }
+    m_last.seconds_pieces += seconds_since(phase);
+    return Done{};
+}
+
+}  // namespace sxk::snapcut

@@ -1,0 +1,226 @@
+// The snapcut plug-in: `sxk cut snap IN PATH OUT` replays a recorded scalpel path through a
+// SnapCutSession (snap_cut.hpp), and the plug-in's ToolFactory offers the session as the tool
+// "snapcut". The degeneracy removal comes from the degeneracy plug-in's service, found through
+// the host (Plugin::attach): no plug-in links another.
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "command_line.hpp"
+#include "cut_options.hpp"
+#include "cut_report.hpp"
+#include "degeneracy_service.hpp"
+#include "snap_cut.hpp"
+#include "sxk/io.hpp"
+#include "sxk/plugin.hpp"
+#include "sxk/tool_path.hpp"
+
+extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_snapcut();
+
+namespace sxk::snapcut {
+
+namespace {
+
+// The host's services (Plugin::attach). A global because ToolFactory::begin is a plain function;
+// a process loads the plug-in once (dlopen shares the module between hosts), and the last host to
+// attach it is the one whose services its sessions use.
+const sxk::Services* plugin_host = nullptr;
+
+// The services the plug-in's sessions use, looked up when a session begins.
+CutServices services_from(const sxk::Services* host) {
+    CutServices services;
+    if (host == nullptr) return services;
+    if (auto degeneracy = host->service<degeneracy::DegeneracyService>()) services.degeneracy = *degeneracy;
+    return services;
+}
+
+struct CommandOptions {
+    std::string input, path, output;
+    Options cut;
+    bool json = false;
+    std::string undo;  // "", a count, or "all"
+    ReadOptions reading;
+};
+
+class CutSnapCommand final : public PluginCommand {
+public:
+    std::string_view name() const override { return "cut snap"; }
+    std::string_view summary() const override {
+        return "cut a tetrahedral mesh along a recorded scalpel path: select, snap, dissect, remove "
+               "degeneracies (thesis 3.2)";
+    }
+
+    int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) override {
+        CommandOptions options;
+        CLI::App app("Cut a tetrahedral mesh along a recorded scalpel path (thesis chapter 3): each "
+                     "movement of the scalpel selects the faces its sweep crosses, snaps their "
+                     "corners onto the sweep, dissects them and removes the flat elements left, as "
+                     "one undoable step.",
+                     "sxk cut snap");
+        app.add_option("IN", options.input, "Tetrahedral mesh")->required();
+        app.add_option("PATH", options.path,
+                       "Scalpel path: one sample per line, 'time hx hy hz tx ty tz' (handle, tip; "
+                       "docs/formats.md)")
+            ->required();
+        app.add_option("OUT", options.output,
+                       "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+            ->required();
+        add_cut_options(app, options.cut);
+        app.add_option("--undo", options.undo,
+                       "After the replay, undo the last N steps (N or 'all': OUT is then IN as "
+                       "the writer writes it)")
+            ->check(CLI::Validator(
+                [](std::string& text) {
+                    if (text == "all") return std::string();
+                    const auto n = parse_finite_number(text);
+                    if (!n || *n < 0 || *n != static_cast<double>(static_cast<long long>(*n)))
+                        return "'" + text + "' is neither a whole number >= 0 nor 'all'";
+                    return std::string();
+                },
+                "N|all"));
+        app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
+        add_read_options(app, options.reading);
+        if (const auto done = parse_command_line(app, args, "cut snap", out, err)) return *done;
+
+        if (!format_from_extension(options.output)) {
+            err << "sxk: " << options.output
+                << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+            return 2;
+        }
+        ToolPath path;
+        try {
+            const std::array<int, 1> columns{6};
+            path = read_tool_path(options.path, columns);
+        } catch (const InputError& error) {
+            err << "sxk: " << error.what() << '\n';
+            return 2;
+        }
+        std::optional<Mesh> mesh = load_mesh_for_command(options.input, err, options.reading);
+        if (!mesh) return 2;
+        if (mesh->topological_dimension() != 3 || mesh->ambient_dimension() != 3) {
+            err << "sxk: " << options.input << ":0: the snap cutter cuts tetrahedral meshes in space\n";
+            return 2;
+        }
+        const CutServices services = services_from(plugin_host);
+        if (options.cut.remove_degeneracies && services.degeneracy == nullptr)
+            err << "sxk: warning: the degeneracy plug-in is not loaded: flat elements stay\n";
+        auto session = SnapCutSession::make(*mesh, options.cut, services);
+        if (!session) {
+            err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
+            return 2;
+        }
+
+        ReplayRecord record;
+        record.elements_before = mesh->element_count();
+        record.vertices_before = vertices_in_elements(*mesh);
+        for (const ToolSample& sample : path.samples) {
+            const Scalpel scalpel{{sample.values[0], sample.values[1], sample.values[2]},
+                                  {sample.values[3], sample.values[4], sample.values[5]}};
+            const auto stepped = (*session)->cut(scalpel);
+            if (!stepped) {
+                err << "sxk: " << options.path << ':' << sample.line << ": the step was refused (the mesh is as "
+                    << "before it): " << stepped.reason() << '\n';
+                return 1;
+            }
+            record.steps.push_back({sample.time, sample.line, (*session)->last_step()});
+        }
+        if (std::none_of(record.steps.begin(), record.steps.end(),
+                         [](const ReplayStep& step) { return step.report.edges_hit > 0; })) {
+            err << "sxk: " << options.path << ':' << path.samples.front().line
+                << ": the scalpel never meets the mesh (no sweep crosses an edge)\n";
+            return 2;
+        }
+        if (!options.undo.empty()) {
+            const std::size_t kept = (*session)->steps();
+            const std::size_t count = options.undo == "all" ? kept : std::stoull(options.undo);
+            if (count > kept) {
+                err << "sxk: cut snap: --undo " << options.undo << ": only " << kept << " steps were taken\n";
+                return 2;
+            }
+            for (std::size_t i = 0; i < count; ++i)
+                if (auto undone = (*session)->undo_step(); !undone) {
+                    err << "sxk: cut snap: " << undone.reason() << '\n';
+                    return 1;
+                }
+            record.undone = count;
+        }
+        (*session)->end();
+        record.elements_after = mesh->element_count();
+        record.vertices_after = vertices_in_elements(*mesh);
+
+        WriteOptions writing;
+        writing.drop_unused_vertices = true;  // collapses leave vertices in no element
+        if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
+        if (options.json) {
+            nlohmann::ordered_json json;
+            json["file"] = options.input;
+            json["path"] = options.path;
+            json["output"] = options.output;
+            json["options"] = to_json(options.cut, services.degeneracy != nullptr);
+            const nlohmann::ordered_json body = to_json(record);  // named: items() is a view
+            for (const auto& [key, value] : body.items()) json[key] = value;
+            out << json.dump(2) << '\n';
+        } else {
+            print_replay(out, record);
+            out << options.input << " -> " << options.output << '\n';
+        }
+        return 0;
+    }
+};
+
+// The plug-in's tool: "snapcut", options as add_cut_options reads them.
+std::span<const std::string_view> snapcut_tools() {
+    static constexpr std::array<std::string_view, 1> tools{"snapcut"};
+    return tools;
+}
+
+Outcome<std::unique_ptr<ToolSession>> begin_snapcut(std::string_view tool, Mesh& mesh,
+                                                    std::span<const std::string> words) {
+    if (tool != "snapcut")
+        return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " in snapcut (it has: snapcut)"};
+    CLI::App app("snapcut session", "snapcut");
+    Options options;
+    add_cut_options(app, options);
+    std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
+    try {
+        app.parse(arguments);
+    } catch (const CLI::ParseError& error) {
+        return Refusal{RefusalCode::bad_argument, std::string("snapcut: ") + error.what()};
+    }
+    auto session = SnapCutSession::make(mesh, options, services_from(plugin_host));
+    if (!session) return session.refusal();
+    return std::unique_ptr<ToolSession>(std::move(*session));
+}
+
+class SnapcutPlugin final : public Plugin {
+public:
+    std::span<PluginCommand* const> commands() override { return m_commands; }
+    ServiceOffer offer(std::string_view service_id) override {
+        if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
+        return {};
+    }
+    void attach(const sxk::Services& services) override {
+        m_attached = &services;
+        plugin_host = &services;
+    }
+    ~SnapcutPlugin() override {
+        if (plugin_host == m_attached) plugin_host = nullptr;
+    }
+
+private:
+    const sxk::Services* m_attached = nullptr;
+    CutSnapCommand m_cut;
+    PluginCommand* m_commands[1] = {&m_cut};
+    ToolFactory m_tools{&snapcut_tools, &begin_snapcut};
+};
+
+}  // namespace
+}  // namespace sxk::snapcut
+
+SXK_PLUGIN(snapcut, sxk::snapcut::SnapcutPlugin, "0.1.0",
+           "snap cutting: a scalpel cuts tetrahedral meshes along faces, snapped and cleaned (thesis 3.2)");

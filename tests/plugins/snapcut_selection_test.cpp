@@ -1,0 +1,152 @@
+// Face selection of the snap cut (plugins/snapcut/face_selection.hpp, thesis §3.2.1), on the
+// 2 x 2 x 2 Kuhn cube: vertex (i,j,k) has id (3k + j) 3 + i, every edge climbs in x, y and z.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "face_selection.hpp"
+#include "sxk/generators.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::test {
+namespace {
+
+using snapcut::CutMarks;
+using snapcut::Selection;
+using snapcut::Sweep;
+
+VertexId id(int i, int j, int k) { return static_cast<VertexId>((3 * k + j) * 3 + i); }
+
+std::vector<ElementId> all_elements(const Mesh& mesh) {
+    std::vector<ElementId> all;
+    for (const ElementId t : elements(mesh)) all.push_back(t);
+    return all;
+}
+
+// A sweep in the plane x = c, large enough to cross the whole cube.
+Sweep plane_x(double c) { return {{c, -1, -1}, {c, 5, -1}, {c, -1, 5}}; }
+
+Selection select_plane(const Mesh& mesh, CutMarks& marks, double c) {
+    const std::uint32_t sweep = marks.add_sweep(plane_x(c));
+    return select_faces(mesh, marks, sweep, all_elements(mesh));
+}
+
+// The faces of the plane x = 1 (all interior): 2 x 2 squares of 2 triangles.
+void expect_the_faces_of_x_equals_1(const Mesh& mesh, const Selection& selection) {
+    ASSERT_EQ(selection.faces.size(), 8u);
+    for (const auto& face : selection.faces)
+        for (int j = 0; j < 3; ++j) EXPECT_EQ(mesh.reference(face.face.vertex(j))[0], 1.0);
+}
+
+TEST(SnapCutSelection, EachCrossedEdgeMarksItsEndNearerTheCrossing) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    const Selection selection = select_plane(mesh, marks, 1.3);
+    // the edges from x = 1 to x = 2: (1,j,k)-(2,j',k') with j' - j, k' - k in {0, 1}
+    EXPECT_EQ(selection.edges_hit, marks.mark_count());
+    EXPECT_GT(selection.edges_hit, 0u);
+    const auto mark = marks.mark(id(1, 0, 0), id(2, 0, 0));
+    ASSERT_TRUE(mark);
+    EXPECT_EQ(mark->node, id(1, 0, 0));
+    EXPECT_EQ(mark->sweep, 0u);
+    EXPECT_FALSE(marks.mark(id(0, 0, 0), id(1, 0, 0)));  // x from 0 to 1 does not reach 1.3
+    expect_the_faces_of_x_equals_1(mesh, selection);
+}
+
+TEST(SnapCutSelection, AnExactHalfMarksTheLowerVertexId) {
+    // x = 1.5 halves every edge from x = 1 to x = 2 exactly; the lower id is the x = 1 end
+    const Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    const Selection selection = select_plane(mesh, marks, 1.5);
+    EXPECT_EQ(marks.mark(id(1, 1, 1), id(2, 2, 2))->node, id(1, 1, 1));
+    expect_the_faces_of_x_equals_1(mesh, selection);
+}
+
+TEST(SnapCutSelection, OnlyTheFirstCrossingOfAnEdgeCounts) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    (void)select_plane(mesh, marks, 1.7);  // marks the x = 2 ends
+    const std::size_t marked = marks.mark_count();
+    const Selection again = select_plane(mesh, marks, 1.3);  // would mark the x = 1 ends
+    EXPECT_EQ(again.edges_hit, 0u);
+    EXPECT_EQ(marks.mark_count(), marked);
+    EXPECT_EQ(marks.mark(id(1, 0, 0), id(2, 0, 0))->node, id(2, 0, 0));
+    EXPECT_EQ(marks.mark(id(1, 0, 0), id(2, 0, 0))->sweep, 0u);
+    // the x = 2 faces are on the boundary: nothing to open, nothing selected
+    EXPECT_TRUE(again.faces.empty());
+}
+
+TEST(SnapCutSelection, FourMarkedCornersSelectTheFaceWithoutTheHighestId) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    // a tetrahedron whose four faces are interior
+    ElementId inner = invalid_id;
+    for (const ElementId t : elements(mesh)) {
+        bool interior = true;
+        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
+        if (interior) {
+            inner = t;
+            break;
+        }
+    }
+    ASSERT_NE(inner, invalid_id);
+    const Simplex s = mesh.simplex(inner);
+    CutMarks marks;
+    const std::uint32_t far = marks.add_sweep({{10, 10, 10}, {11, 10, 10}, {10, 11, 10}});
+    // marks of earlier sweeps on the tetrahedron's edges: each corner marked by some edge
+    marks.add_mark(s.vertex(0), s.vertex(1), {s.vertex(0), far});
+    marks.add_mark(s.vertex(1), s.vertex(2), {s.vertex(1), far});
+    marks.add_mark(s.vertex(2), s.vertex(3), {s.vertex(2), far});
+    marks.add_mark(s.vertex(0), s.vertex(3), {s.vertex(3), far});
+    const std::vector<ElementId> candidates{inner};
+    const Selection selection = select_faces(mesh, marks, far, candidates);
+    ASSERT_EQ(selection.faces.size(), 1u);
+    EXPECT_EQ(selection.faces[0].face, Simplex(+1, {s.vertex(0), s.vertex(1), s.vertex(2)}));
+    EXPECT_EQ(selection.edges_hit, 0u);
+}
+
+TEST(SnapCutSelection, TetrahedraWithOneOrTwoMarkedCornersAreIncomplete) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    // a sweep that stops halfway up: x = 1.3 for z below 1 only
+    const std::uint32_t sweep = marks.add_sweep({{1.3, -1, -1}, {1.3, 5, -1}, {1.3, 2, 1}});
+    const Selection selection = select_faces(mesh, marks, sweep, all_elements(mesh));
+    EXPECT_FALSE(marks.incomplete().empty());
+    for (const ElementId t : marks.incomplete()) {
+        const Simplex s = mesh.simplex(t);
+        int marked = 0;
+        for (int i = 0; i < 4; ++i) {
+            bool is_marked = false;
+            for (int j = 0; j < 4; ++j)
+                if (i != j) {
+                    const auto mark = marks.mark(s.vertex(i), s.vertex(j));
+                    is_marked = is_marked || (mark && mark->node == s.vertex(i));
+                }
+            marked += is_marked;
+        }
+        EXPECT_TRUE(marked == 1 || marked == 2) << "element " << t << ": " << marked;
+    }
+    EXPECT_LT(selection.faces.size(), 8u);
+}
+
+TEST(SnapCutSelection, ACheckpointTakesBackWhatCameAfterIt) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    (void)select_plane(mesh, marks, 1.3);
+    marks.add_snapped(id(1, 1, 1));
+    const CutMarks::Checkpoint checkpoint = marks.checkpoint();
+    const std::size_t marked = marks.mark_count();
+    const std::vector<ElementId> incomplete = marks.incomplete();
+    (void)select_plane(mesh, marks, 0.4);
+    marks.add_snapped(id(0, 1, 1));
+    ASSERT_GT(marks.mark_count(), marked);
+    marks.restore(checkpoint);
+    EXPECT_EQ(marks.mark_count(), marked);
+    EXPECT_EQ(marks.sweeps().size(), 1u);
+    EXPECT_EQ(marks.incomplete(), incomplete);
+    EXPECT_TRUE(marks.snapped(id(1, 1, 1)));
+    EXPECT_FALSE(marks.snapped(id(0, 1, 1)));
+    EXPECT_FALSE(marks.mark(id(0, 0, 0), id(1, 0, 0)));
+}
+
+}  // namespace
+}  // namespace sxk::test
