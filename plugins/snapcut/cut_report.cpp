@@ -15,6 +15,7 @@ std::size_t vertices_in_elements(const Mesh& mesh) {
 nlohmann::ordered_json to_json(const CutStepReport& r) {
     nlohmann::ordered_json json;
     json["sweeps"] = r.sweeps;
+    json["repeats"] = r.repeats;
     json["elements_searched"] = r.elements_searched;
     json["edges_hit"] = r.edges_hit;
     json["faces_selected"] = r.faces_selected;

@@ -6,7 +6,44 @@
 
 #include "sxk/predicates.hpp"
 
+// Boost 1.74's rtree includes headers Boost itself marks deprecated (a #pragma message per
+// translation unit, not a defect of ours): silenced so that the build stays quiet.
+#ifndef BOOST_ALLOW_DEPRECATED_HEADERS
+#define BOOST_ALLOW_DEPRECATED_HEADERS
+#endif
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
 namespace sxk::snapcut {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+struct CutMarks::SnappedTree {
+    using Position = bg::model::point<double, 3, bg::cs::cartesian>;
+    using Value = std::pair<Position, VertexId>;
+    bgi::rtree<Value, bgi::quadratic<16>> tree;
+    static Value value(const Point& p, VertexId v) { return {Position(p[0], p[1], p[2]), v}; }
+};
+
+CutMarks::CutMarks() : m_tree(std::make_unique<SnappedTree>()) {}
+CutMarks::~CutMarks() = default;
+
+std::vector<VertexId> CutMarks::snapped_near(const Sweep& sweep) const {
+    using Position = SnappedTree::Position;
+    Position low(std::min({sweep.a[0], sweep.b[0], sweep.c[0]}) - m_reach,
+                 std::min({sweep.a[1], sweep.b[1], sweep.c[1]}) - m_reach,
+                 std::min({sweep.a[2], sweep.b[2], sweep.c[2]}) - m_reach);
+    Position high(std::max({sweep.a[0], sweep.b[0], sweep.c[0]}) + m_reach,
+                  std::max({sweep.a[1], sweep.b[1], sweep.c[1]}) + m_reach,
+                  std::max({sweep.a[2], sweep.b[2], sweep.c[2]}) + m_reach);
+    std::vector<VertexId> near;
+    for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
+         it != m_tree->tree.qend(); ++it)
+        near.push_back(it->second);
+    std::sort(near.begin(), near.end());
+    return near;
+}
 
 std::uint64_t CutMarks::key(VertexId a, VertexId b) {
     if (a > b) std::swap(a, b);
@@ -28,8 +65,10 @@ std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
     return static_cast<std::uint32_t>(m_sweeps.size() - 1);
 }
 
-void CutMarks::add_snapped(VertexId v) {
-    if (m_snapped.insert(v).second) m_snapped_order.push_back(v);
+void CutMarks::add_snapped(VertexId v, const Point& was) {
+    if (!m_unsnapped.emplace(v, was).second) return;
+    m_snapped_order.push_back(v);
+    m_tree->tree.insert(SnappedTree::value(was, v));
 }
 
 CutMarks::Checkpoint CutMarks::checkpoint() const {
@@ -42,7 +81,9 @@ void CutMarks::restore(const Checkpoint& checkpoint) {
         m_mark_order.pop_back();
     }
     while (m_snapped_order.size() > checkpoint.snapped) {
-        m_snapped.erase(m_snapped_order.back());
+        const auto found = m_unsnapped.find(m_snapped_order.back());
+        m_tree->tree.remove(SnappedTree::value(found->second, found->first));
+        m_unsnapped.erase(found);
         m_snapped_order.pop_back();
     }
     m_sweeps.resize(checkpoint.sweeps);
@@ -53,8 +94,9 @@ namespace {
 
 // The end of edge {u, v} nearer where it crosses the sweep's plane; an exact half (or an edge in
 // the plane) gives the lower id.
-VertexId nearer_end(const Mesh& mesh, VertexId u, VertexId v, const Sweep& sweep) {
-    switch (compare_distances_to_plane(mesh.deformed(u), mesh.deformed(v), sweep.a, sweep.b, sweep.c)) {
+VertexId nearer_end(const Mesh& mesh, const CutMarks& marks, VertexId u, VertexId v, const Sweep& sweep) {
+    switch (compare_distances_to_plane(marks.selection_position(mesh, u), marks.selection_position(mesh, v), sweep.a,
+                                       sweep.b, sweep.c)) {
     case Sign::negative: return u;
     case Sign::positive: return v;
     case Sign::zero: break;
@@ -84,11 +126,12 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
                 if (!mark) {
                     const std::uint64_t edge = (std::uint64_t{u} << 32) | v;  // u < v: canonical order
                     if (missed.contains(edge)) continue;
-                    if (!segment_meets_triangle(mesh.deformed(u), mesh.deformed(v), sweep.a, sweep.b, sweep.c)) {
+                    if (!segment_meets_triangle(marks.selection_position(mesh, u), marks.selection_position(mesh, v),
+                                                sweep.a, sweep.b, sweep.c)) {
                         missed.insert(edge);
                         continue;
                     }
-                    mark = CutMarks::Mark{nearer_end(mesh, u, v, sweep), sweep_index};
+                    mark = CutMarks::Mark{nearer_end(mesh, marks, u, v, sweep), sweep_index};
                     marks.add_mark(u, v, *mark);
                     ++selection.edges_hit;
                 }

@@ -10,6 +10,14 @@
 //        marked        (incomplete)      is selected           marks of different sweeps): the
 //        (incomplete)                                          face without the highest vertex id
 //
+// The selection sees the mesh as it was before the cut snapped anything (CutMarks::
+// selection_position). Snapping a node onto one sweep would otherwise change which end of its
+// edges a later sweep marks (a node on the sweep is always the nearer end), and the tetrahedra
+// selected by the earlier sweep and by the later one would no longer agree on where the surface
+// runs: the incision gets holes (a through cut of the thesis' cube in 2 to 64 steps left the
+// cube in one piece). Seen in the positions before snapping, the selection of consecutive sweeps
+// is the selection of one piecewise flat surface, which closes up.
+//
 // Marks are kept from sweep to sweep (CutMarks), so a later sweep completes the tetrahedra an
 // earlier one left incomplete (Fig. 3.4: selected faces lag behind the scalpel), and an edge is
 // marked by the first sweep that crosses it only (an edge crossed twice by sweeps of different
@@ -26,7 +34,9 @@
 #pragma once
 
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <unordered_map>
@@ -46,6 +56,11 @@ struct Sweep {
 // What the cut keeps between sweeps, with checkpoints to take steps back.
 class CutMarks {
 public:
+    CutMarks();
+    ~CutMarks();
+    CutMarks(const CutMarks&) = delete;
+    CutMarks& operator=(const CutMarks&) = delete;
+
     struct Mark {
         VertexId node = invalid_id;  // the end of the edge nearer the crossing
         std::uint32_t sweep = 0;     // the sweep that crossed the edge (index into sweeps())
@@ -64,8 +79,21 @@ public:
     void set_incomplete(std::vector<ElementId> incomplete) { m_incomplete = std::move(incomplete); }
 
     // Nodes moved onto the sweep once already: they stay where the cut put them.
-    bool snapped(VertexId v) const { return m_snapped.contains(v); }
-    void add_snapped(VertexId v);
+    bool snapped(VertexId v) const { return m_unsnapped.contains(v); }
+    // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
+    // dissection is recorded with its original's).
+    void add_snapped(VertexId v, const Point& was);
+    // The snapped nodes whose positions before snapping are within the reach of the sweep: the
+    // corners, as the selection sees them, of every element with a snapped corner that the
+    // selection sees meeting the sweep (reach: the longest edge of such an element).
+    std::vector<VertexId> snapped_near(const Sweep& sweep) const;
+    // Makes the reach at least `length` (the longest edge around a node about to be snapped).
+    void extend_reach(double length) { m_reach = std::max(m_reach, length); }
+    // Where the selection sees v: where it was before this cut snapped it, else where it is.
+    const Point& selection_position(const Mesh& mesh, VertexId v) const {
+        const auto found = m_unsnapped.find(v);
+        return found == m_unsnapped.end() ? mesh.deformed(v) : found->second;
+    }
 
     struct Checkpoint {
         std::size_t marks = 0, snapped = 0, sweeps = 0;
@@ -79,8 +107,11 @@ private:
     static std::uint64_t key(VertexId a, VertexId b);
     std::unordered_map<std::uint64_t, Mark> m_marks;
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
-    std::unordered_set<VertexId> m_snapped;
+    std::unordered_map<VertexId, Point> m_unsnapped;
     std::vector<VertexId> m_snapped_order;
+    struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)
+    std::unique_ptr<SnappedTree> m_tree;
+    double m_reach = 0;  // only grows: a larger reach finds more candidates, never fewer
     std::vector<Sweep> m_sweeps;
     std::vector<ElementId> m_incomplete;
 };

@@ -157,6 +157,7 @@ SnapResult snap_nodes(Mesh& mesh, std::span<const NodeToSnap> nodes, const std::
         const Point was_reference = mesh.reference(v), was_deformed = mesh.deformed(v);
         if (deformed == was_deformed && *reference == was_reference) {
             result.snapped.push_back(v);  // on the sweep already
+            result.snapped_from.push_back(was_deformed);
             continue;
         }
         Outcome<Done> moved = Done{};
@@ -182,6 +183,7 @@ SnapResult snap_nodes(Mesh& mesh, std::span<const NodeToSnap> nodes, const std::
             continue;
         }
         result.snapped.push_back(v);
+        result.snapped_from.push_back(was_deformed);
     }
     return result;
 }

@@ -37,6 +37,7 @@ struct NodeToSnap {
 
 struct SnapResult {
     std::vector<VertexId> snapped;                         // in the order tried
+    std::vector<Point> snapped_from;                       // their deformed positions before
     std::vector<std::pair<VertexId, std::string>> refused; // node, why
 };
 

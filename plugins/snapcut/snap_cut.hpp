@@ -80,6 +80,7 @@ struct Options {
 // What one step did (thesis §3.3's figures, per step).
 struct CutStepReport {
     std::size_t sweeps = 0;            // sweep triangles processed (0 for the first pose)
+    std::size_t repeats = 0;           // sweeps processed again after the removal edited the mesh
     std::size_t elements_searched = 0; // elements the sweeps met (index) or left incomplete
     std::size_t edges_hit = 0;         // edges the sweeps crossed for the first time
     std::size_t faces_selected = 0;    // interior faces selected (§3.2.1)
@@ -133,6 +134,9 @@ protected:
 
 private:
     Outcome<Done> cut_sweep(const Sweep& sweep, StepReport& report);
+    // One selection, snap, dissection and removal of sweep `sweep_index`; `edited`: the removal
+    // changed the mesh.
+    Outcome<Done> cut_round(std::uint32_t sweep_index, StepReport& report, bool& edited);
 
     Options m_options;
     CutServices m_services;

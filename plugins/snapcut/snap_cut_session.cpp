@@ -63,6 +63,19 @@ std::vector<Simplex> labelled_faces_around(const Mesh& mesh, std::span<const Sim
     return cut;
 }
 
+// The longest edge, as the selection sees it, of the elements around v.
+double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) {
+    double longest = 0;
+    for (const ElementId t : star(mesh, v)) {
+        const Simplex s = mesh.simplex(t);
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j)
+                longest = std::max(longest, length(marks.selection_position(mesh, s.vertex(i)),
+                                                   marks.selection_position(mesh, s.vertex(j))));
+    }
+    return longest;
+}
+
 }  // namespace
 
 ToolPose to_pose(const Scalpel& scalpel) {
@@ -147,15 +160,37 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
 }
 
 Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) {
-    Mesh& mesh = this->mesh();
     ++m_last.sweeps;
+    const std::uint32_t sweep_index = m_marks.add_sweep(sweep);
+    // The degeneracy removal's collapses replace edges, and with them the marks of the sweeps
+    // that crossed them: the tetrahedra at the rim of the incision lose what would connect it to
+    // the next sweep (thesis §3.3, Fig. 3.17: disconnected incisions). As the thesis proposes,
+    // the sweep is then processed again: the new edges it crosses are marked, and what they
+    // complete is cut. Twice more at most; a round that selects nothing ends it.
+    for (int round = 0; round < 3; ++round) {
+        bool edited = false;
+        if (Outcome<Done> done = cut_round(sweep_index, report, edited); !done) return done;
+        if (!edited) break;
+        ++m_last.repeats;
+    }
+    return Done{};
+}
+
+Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& report, bool& edited) {
+    Mesh& mesh = this->mesh();
+    const Sweep sweep = m_marks.sweeps()[sweep_index];
 
     // 1. select (§3.2.1) among the elements the sweep meets (face_selection.hpp: they include
-    // every incomplete tetrahedron this sweep can complete)
+    // every incomplete tetrahedron this sweep can complete). The selection sees snapped nodes
+    // where they were before the cut moved them, the index where they are: an element may meet
+    // the sweep only as the selection sees it, and then it has a snapped corner within reach of
+    // the sweep (CutMarks::snapped_near). So the stars of those are candidates too.
     auto phase = Clock::now();
-    const std::uint32_t sweep_index = m_marks.add_sweep(sweep);
-    const std::vector<ElementId> candidates =
-        m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c).elements;
+    std::vector<ElementId> candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c).elements;
+    const std::vector<ElementId> around = elements_around(mesh, m_marks.snapped_near(sweep));
+    candidates.insert(candidates.end(), around.begin(), around.end());
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates);
     m_last.elements_searched += selection.elements_searched;
     m_last.edges_hit += selection.edges_hit;
@@ -182,8 +217,10 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
                 nodes.end());
     std::vector<VertexId> touched;  // whose stars the degeneracy removal looks at
     if (m_options.snap) {
+        for (const NodeToSnap& node : nodes) m_marks.extend_reach(longest_edge_around(mesh, m_marks, node.node));
         SnapResult snapped = snap_nodes(mesh, nodes, m_marks.sweeps(), m_options.min_snap_aspect_ratio);
-        for (const VertexId v : snapped.snapped) m_marks.add_snapped(v);
+        for (std::size_t i = 0; i < snapped.snapped.size(); ++i)
+            m_marks.add_snapped(snapped.snapped[i], snapped.snapped_from[i]);
         m_last.nodes_snapped += snapped.snapped.size();
         m_last.nodes_refused += snapped.refused.size();
         touched = snapped.snapped;
@@ -209,6 +246,7 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
     for (const auto& [original, copy] : dissected->new_vertices) {
         touched.push_back(original);
         touched.push_back(copy);
+        if (m_marks.snapped(original)) m_marks.add_snapped(copy, m_marks.selection_position(mesh, original));
     }
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
@@ -231,10 +269,15 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
         m_last.peeled += removed->peeled;
         m_last.cut_free += removed->cut_free;
         m_last.degenerates_remaining = removed->remaining;
+        edited = removed->collapses + removed->splits + removed->flips + removed->peeled + removed->cut_free > 0;
         report.actions.push_back(std::to_string(removed->found) + " degenerate, " +
                                  std::to_string(removed->collapses) + " collapses, " +
                                  std::to_string(removed->cut_free) + " cut free");
     }
+    // the removal's collapses may lengthen edges around snapped nodes: the reach follows
+    for (const VertexId v : touched)
+        if (m_marks.snapped(v) && mesh.vertex_element(v) != invalid_id)
+            m_marks.extend_reach(longest_edge_around(mesh, m_marks, v));
     m_last.seconds_degeneracy += seconds_since(phase);
 
     // 5. pieces the cut separated, found from both sides of the cut

@@ -1,35 +1,199 @@
 // The snap cutter's session (plugins/snapcut/snap_cut.hpp): cuts on the thesis' cube, undo,
-// refusals. Every cut ends with validate().
+// refusals, the tool through the host. Every cut ends with validate().
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "core/fixtures.hpp"
 #include "snapcut_fixture.hpp"
 #include "sxk/traversal.hpp"
+
+extern "C" const sxk_plugin_info* sxk_plugin_entry_snapcut();
 
 namespace sxk::test {
 namespace {
 
-std::size_t faces_with_label(const Mesh& mesh, int label) {
+using snapcut::Scalpel;
+using snapcut::SnapCutSession;
+
+constexpr int cut_label = snapcut::Options{}.cut_label;
+
+std::size_t boundary_faces_with_label(const Mesh& mesh, int label) {
     std::size_t count = 0;
-    mesh.for_each_boundary_face([&](FaceId f) {
-        const Simplex s = mesh.face_simplex(f);
-        count += mesh.face_label(s) == label;
-    });
+    mesh.for_each_boundary_face([&](FaceId f) { count += mesh.face_label(mesh.face_simplex(f)) == label; });
     return count;
+}
+
+// The blade stands in the plane x = 3.3 from z = 4 to above the cube and crosses it along y in
+// 10 steps: the cut should open the faces of the grid plane x = 3 above z = 4.
+std::vector<Scalpel> grid_plane_path() { return straight_path({3.3, -1, 0}, {0, 1, 0}, 10, 4, 10, 10); }
+
+void expect_valid(const Mesh& mesh) {
+    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
+    EXPECT_TRUE(valid) << valid.reason();
 }
 
 TEST(SnapCut, APlaneAlongTheGridOpensTheGridFacesItCrosses) {
     Mesh mesh = make_kuhn_cube(8).value();
-    auto session = snapcut::SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
-    // the blade stands in x = 3.3 from z = 4 to above the cube, and crosses it along y
-    for (const snapcut::Scalpel& scalpel : straight_path({3.3, -1, 0}, {0, 1, 0}, 10, 4, 10, 10)) {
+    auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
+    std::size_t dissected = 0, snapped = 0;
+    for (const Scalpel& scalpel : grid_plane_path()) {
         ASSERT_TRUE(session->cut(scalpel));
-        const auto& r = session->last_step();
-        std::printf("edges %zu selected %zu dissected %zu snapped %zu incomplete %zu labelled %zu\n", r.edges_hit,
-                    r.faces_selected, r.faces_dissected, r.nodes_snapped, r.incomplete, faces_with_label(mesh, 9999));
+        dissected += session->last_step().faces_dissected;
+        snapped += session->last_step().nodes_snapped;
+        EXPECT_EQ(session->last_step().nodes_refused, 0u);
     }
-    ASSERT_TRUE(mesh.validate({.orientation = true}));
-    // the faces in x = 3 above z = 4: 8 x 4 squares of 2 triangles, both sides labelled
-    EXPECT_EQ(faces_with_label(mesh, snapcut::Options{}.cut_label), 2u * 64u);
+    expect_valid(mesh);
+    // the faces in x = 3 with z in [4, 8]: 8 x 4 squares of 2 triangles, both sides labelled
+    EXPECT_EQ(dissected, 64u);
+    EXPECT_EQ(boundary_faces_with_label(mesh, cut_label), 128u);
+    // the 9 x 5 grid nodes of that plane from the tip line up snapped onto x = 3.3 ...
+    EXPECT_EQ(snapped, 45u);
+    // ... and those above the tip line split in two: 9 x 4 new vertices
+    EXPECT_EQ(mesh.vertex_count(), 729u + 36u);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        const Point& p = mesh.reference(v);
+        if (std::abs(p[0] - 3.3) < 0.5 && p[2] >= 4) EXPECT_NEAR(p[0], 3.3, 1e-12) << "vertex " << v;
+    }
+    // the two sides share no face: every face with its corners on the cut above the tip is open
+    for (const ElementId t : elements(mesh))
+        for (int i = 0; i < 4; ++i) {
+            const Simplex face = mesh.face_simplex(mesh.face(t, i));
+            bool on_cut = true;
+            for (int j = 0; j < 3; ++j) {
+                const Point& p = mesh.reference(face.vertex(j));
+                on_cut = on_cut && std::abs(p[0] - 3.3) < 1e-9 && p[2] > 4.5;
+            }
+            if (on_cut) EXPECT_EQ(mesh.mate(mesh.face(t, i)), invalid_id) << "element " << t;
+        }
+}
+
+TEST(SnapCut, WithoutSnappingTheGridFacesOpenWhereTheyAre) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    snapcut::Options options;
+    options.snap = false;
+    auto session = SnapCutSession::make(mesh, options, {degeneracy_service()}).value();
+    for (const Scalpel& scalpel : grid_plane_path()) ASSERT_TRUE(session->cut(scalpel));
+    expect_valid(mesh);
+    EXPECT_EQ(boundary_faces_with_label(mesh, cut_label), 128u);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) EXPECT_EQ(mesh.reference(v), mesh.deformed(v));
+}
+
+TEST(SnapCut, UndoingEveryStepRestoresTheMeshExactly) {
+    const Mesh original = make_kuhn_cube(8).value();
+    Mesh mesh = original;
+    auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
+    for (const Scalpel& scalpel : grid_plane_path()) ASSERT_TRUE(session->cut(scalpel));
+    ASSERT_TRUE(session->cancel());
+    expect_same_state(mesh, original);
+    expect_valid(mesh);
+}
+
+TEST(SnapCut, AStepUndoneAndTakenAgainCutsAsBefore) {
+    // the session's marks and scalpel go back with the mesh (ToolSession::step_taken_back)
+    Mesh straight = make_kuhn_cube(8).value();
+    Mesh again = straight;
+    auto one = SnapCutSession::make(straight, {}, {degeneracy_service()}).value();
+    auto two = SnapCutSession::make(again, {}, {degeneracy_service()}).value();
+    const std::vector<Scalpel> path = grid_plane_path();
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        ASSERT_TRUE(one->cut(path[i]));
+        ASSERT_TRUE(two->cut(path[i]));
+        if (i == 4 || i == 5) {
+            ASSERT_TRUE(two->undo_step());
+            ASSERT_TRUE(two->cut(path[i]));
+        }
+    }
+    expect_same_state(again, straight);
+    expect_valid(again);
+}
+
+TEST(SnapCut, ARefusedStepLeavesTheMeshAndTheSessionAsTheyWere) {
+    const Mesh original = make_kuhn_cube(4).value();
+    Mesh mesh = original;
+    auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
+    ASSERT_TRUE(session->cut({{1.3, -1, 6}, {1.3, -1, 2}}));
+    const auto refused = session->cut({{1.3, 2, 6}, {1.3, 2, std::nan("")}});
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
+    EXPECT_EQ(refused.reason(), "snapcut: the scalpel's coordinates must be finite");
+    expect_same_state(mesh, original);
+    EXPECT_EQ(session->steps(), 1u);
+    ASSERT_TRUE(session->scalpel());
+    EXPECT_EQ(session->scalpel()->tip, (Point{1.3, -1, 2}));
+}
+
+TEST(SnapCut, OnlyTetrahedralMeshesInSpaceAreCut) {
+    Mesh planar = planar_grid(3);
+    const auto refused = SnapCutSession::make(planar, {});
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.code(), RefusalCode::not_applicable);
+    EXPECT_EQ(refused.reason(), "snapcut: the snap cutter cuts tetrahedral meshes in space");
+    Mesh cube = make_kuhn_cube(2).value();
+    snapcut::Options options;
+    options.aspect_ratio = 1.5;
+    EXPECT_EQ(SnapCutSession::make(cube, options).reason(),
+              "snapcut: aspect ratio threshold must be in (0, 1), not 1.500000");
+}
+
+TEST(SnapCut, WithoutTheDegeneracyServiceFlatElementsStayAndTheCutStillWorks) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    auto session = SnapCutSession::make(mesh, {}).value();
+    EXPECT_FALSE(session->has_degeneracy_service());
+    for (const Scalpel& scalpel : grid_plane_path()) {
+        ASSERT_TRUE(session->cut(scalpel));
+        EXPECT_FALSE(session->last_step().degeneracy_removal_ran);
+    }
+    expect_valid(mesh);
+    EXPECT_EQ(boundary_faces_with_label(mesh, cut_label), 128u);
+}
+
+TEST(SnapCut, AScalpelThatMissesTheMeshCutsNothing) {
+    const Mesh original = make_kuhn_cube(4).value();
+    Mesh mesh = original;
+    auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
+    for (const Scalpel& scalpel : straight_path({10, -1, 0}, {0, 1, 0}, 6, 1, 3, 3)) {
+        ASSERT_TRUE(session->cut(scalpel));
+        EXPECT_EQ(session->last_step().edges_hit, 0u);
+    }
+    expect_same_state(mesh, original);
+}
+
+TEST(SnapCut, ThePoseOfAToolSessionIsTheScalpel) {
+    const Scalpel scalpel{{1, 2, 9}, {1, 2, 3}};
+    const ToolPose pose = snapcut::to_pose(scalpel);
+    EXPECT_EQ(pose.position, scalpel.tip);
+    EXPECT_EQ(pose.length, 6.0);
+    EXPECT_EQ(pose.axes[2], (Point{0, 0, -1}));
+    EXPECT_EQ(snapcut::scalpel_of(pose).handle, scalpel.handle);
+}
+
+TEST(SnapCut, TheHostOffersTheToolAndItFindsTheDegeneracyRemoval) {
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_snapcut(), "linked-in snapcut"));
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));  // after: looked up late
+    auto factory = host.service<ToolFactory>("snapcut");
+    ASSERT_TRUE(factory) << factory.reason();
+    ASSERT_EQ((*factory)->tools().size(), 1u);
+    EXPECT_EQ((*factory)->tools()[0], "snapcut");
+    Mesh mesh = make_kuhn_cube(8).value();
+    const std::vector<std::string> options{"--aspect", "0.02"};
+    auto session = (*factory)->begin("snapcut", mesh, options);
+    ASSERT_TRUE(session) << session.reason();
+    auto* cutter = dynamic_cast<SnapCutSession*>(session->get());
+    ASSERT_NE(cutter, nullptr);
+    EXPECT_TRUE(cutter->has_degeneracy_service());
+    EXPECT_EQ(cutter->options().aspect_ratio, 0.02);
+    for (const Scalpel& scalpel : grid_plane_path()) ASSERT_TRUE((*session)->step(snapcut::to_pose(scalpel)));
+    expect_valid(mesh);
+    EXPECT_EQ(boundary_faces_with_label(mesh, cut_label), 128u);
+
+    const std::vector<std::string> bad{"--aspect", "2"};
+    const auto refused = (*factory)->begin("snapcut", mesh, bad);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
+    EXPECT_EQ(refused.reason(), "snapcut: --aspect: '2' is not in (0, 1)");
+    EXPECT_EQ((*factory)->begin("scalpel", mesh, {}).reason(), "no tool called scalpel in snapcut (it has: snapcut)");
 }
 
 }  // namespace
