@@ -42,6 +42,7 @@
 #include "sxk/ops/flip_44.hpp"
 #include "sxk/ops/flip_edge.hpp"
 #include "sxk/ops/make_delaunay_by_flips.hpp"
+#include "sxk/ops/remove_elements.hpp"
 #include "sxk/ops/split_edge.hpp"
 #include "sxk/ops/split_element.hpp"
 #include "sxk/ops/split_face.hpp"
@@ -378,7 +379,7 @@ inline std::string at(const char* name, std::initializer_list<std::uint64_t> arg
     return text + ")";
 }
 
-inline constexpr int operation_kinds = 15;
+inline constexpr int operation_kinds = 16;
 
 // Picks one operation with its arguments and runs it; `max_elements` bounds the growth (splits
 // are skipped above it). `check_all` checks orientation of every element; otherwise only the
@@ -524,6 +525,16 @@ inline Step run_step(Mesh& mesh, Choices& choices, std::size_t max_elements) {
             record(refine_around_tetrahedra(mesh, x, h));
 #endif
         }
+        break;
+    }
+    case 14: {
+        // an element (and, half the time, a neighbour): refused when it would pinch a star; not
+        // on small meshes, which removals would empty (the tests write their meshes)
+        if (mesh.element_count() < 12) return step;
+        std::vector<ElementId> doomed{t};
+        if (choices.next() % 2 && mesh.neighbor(t, slot) != invalid_id) doomed.push_back(mesh.neighbor(t, slot));
+        step.operation = at("remove_elements", {t});
+        record(remove_elements(mesh, doomed));
         break;
     }
     default: {

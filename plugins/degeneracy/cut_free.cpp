@@ -3,11 +3,11 @@
 // every face of the elements (thesis §7.3; vertices whose stars fall apart get copies), then
 // remove the elements, now joined to nothing. The faces their neighbours had with them become
 // boundary: the cracks of Fig. 3.16.
-#include <algorithm>
 #include <vector>
 
 #include "removal_steps.hpp"
 #include "sxk/ops/dissect.hpp"
+#include "sxk/ops/remove_elements.hpp"
 
 namespace sxk::degeneracy::detail {
 
@@ -22,21 +22,11 @@ Outcome<Done> cut_free(Mesh& mesh, std::span<const ElementId> elements) {
     }
     // Each element is now alone in the star of each of its vertices (all its faces are cut),
     // so removing it pinches no star. One edit removes them all.
-    std::vector<ElementId> doomed(elements.begin(), elements.end());
-    std::sort(doomed.begin(), doomed.end());
-    doomed.erase(std::unique(doomed.begin(), doomed.end()), doomed.end());
-    std::vector<Simplex> faces_of_doomed;
-    if (!mesh.face_labels().empty())
-        for (const ElementId t : doomed)
-            for (int i = 0; i < mesh.element_vertex_count(); ++i)
-                faces_of_doomed.emplace_back(+1, mesh.simplex(t).subn(i).vertices());
-    const auto removed = mesh.replace_elements(doomed, {});
-    if (!removed) return removed.refusal().prefixed("cut free: ");
-    // Labels of faces that went with the elements (each was theirs alone after the dissection)
-    // would name no face: drop them. A face with the same vertices that still exists is a
-    // neighbour's boundary face now, and keeps the label.
-    for (const Simplex& face : faces_of_doomed)
-        if (element_containing(mesh, face.vertices()) == invalid_id) mesh.erase_face_label(face);  // recorded: a rollback puts it back
+    // Labels of faces that go with the elements (each was theirs alone after the dissection)
+    // are dropped; a face with the same vertices that still exists is a neighbour's boundary
+    // face now, and keeps the label (remove_elements).
+    if (Outcome<Done> removed = remove_elements(mesh, elements); !removed)
+        return removed.refusal().prefixed("cut free: ");
     return Done{};
 }
 

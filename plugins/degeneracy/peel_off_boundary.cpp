@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "sxk/ops/remove_elements.hpp"
 #include "removal_steps.hpp"
 #include "sxk/quality.hpp"
 
@@ -53,12 +54,11 @@ Refused peel_off_boundary(Mesh& mesh, ElementId t, const Options& options) {
             break;
         }
     }
+    // its boundary faces go with it, and their labels (remove_elements); the faces it exposed
+    // carry the boundary's label on (recorded setters: the removal runs inside the plug-in's
+    // EditStep, whose rollback puts them back)
     const std::array<ElementId, 1> doomed{t};
-    const auto removed = mesh.replace_elements(doomed, {});
-    if (!removed) return removed.refusal();
-    // its boundary faces are gone; the faces it exposed carry the boundary's label on (recorded
-    // setters: the removal runs inside the plug-in's EditStep, whose rollback puts them back)
-    for (const Simplex& face : boundary) mesh.erase_face_label(face);
+    if (Outcome<Done> removed = remove_elements(mesh, doomed); !removed) return removed.refusal();
     if (labelled)
         for (const Simplex& face : exposed)
             if (!mesh.face_label(face)) mesh.set_face_label(face, label);

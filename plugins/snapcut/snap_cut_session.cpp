@@ -8,6 +8,7 @@
 #include "node_snapping.hpp"
 #include "snap_cut.hpp"
 #include "sxk/ops/dissect.hpp"
+#include "sxk/ops/remove_elements.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
@@ -290,8 +291,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     std::sort(m_last.loose_pieces.begin(), m_last.loose_pieces.end());
     if (m_options.remove_loose_pieces)
         for (const auto& piece : pieces.pieces) {
-            auto removed = mesh.replace_elements(piece, std::span<const Simplex>{});
-            if (!removed) return removed.refusal().prefixed("snapcut: removing a loose piece: ");
+            if (Outcome<Done> removed = remove_elements(mesh, piece); !removed)
+                return removed.refusal().prefixed("snapcut: removing a loose piece: ");
         }
     m_last.seconds_pieces += seconds_since(phase);
     return Done{};

@@ -6,6 +6,7 @@
 
 #include "core/fixtures.hpp"
 #include "snapcut_fixture.hpp"
+#include "sxk/components.hpp"
 #include "sxk/traversal.hpp"
 
 extern "C" const sxk_plugin_info* sxk_plugin_entry_snapcut();
@@ -67,6 +68,28 @@ TEST(SnapCut, APlaneAlongTheGridOpensTheGridFacesItCrosses) {
             if (on_cut) EXPECT_EQ(mesh.mate(mesh.face(t, i)), invalid_id) << "element " << t;
         }
 }
+
+// Fig. 3.17: in the thesis, an incision made in several steps could come apart (degeneracy
+// removal collapsed the edges whose marks connected one sweep to the next). A cut through the
+// whole cube along a tilted plane must separate it in two, however many steps it takes.
+class SnapCutThrough : public ::testing::TestWithParam<int> {};
+
+TEST_P(SnapCutThrough, ACutThroughTheCubeSeparatesItInAnyNumberOfSteps) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
+    std::size_t loose = 0, dissected = 0;
+    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -12, 30, GetParam())) {
+        ASSERT_TRUE(session->cut(scalpel));
+        loose += session->last_step().loose_pieces.size();
+        dissected += session->last_step().faces_dissected;
+    }
+    expect_valid(mesh);
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    EXPECT_EQ(loose, 1u);
+    EXPECT_GE(dissected, 180u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, SnapCutThrough, ::testing::Values(1, 4, 16, 64, 256));
 
 TEST(SnapCut, WithoutSnappingTheGridFacesOpenWhereTheyAre) {
     Mesh mesh = make_kuhn_cube(8).value();

@@ -1,7 +1,10 @@
-// sxk generate OUT --cells N|NX,NY,NZ [--spacing S|SX,SY,SZ]: a box of Kuhn tetrahedra
-// (make_kuhn_box, sxk/generators.hpp): the thesis' test cube (§3.3: --cells 8 gives its 729
-// nodes and 3072 tetrahedra) and its cantilever beams (Table 3.1), for the experiments, the
-// demos and anyone who wants a conforming tetrahedral mesh without a mesher.
+// sxk generate OUT [--shape box] [--cells N|NX,NY,NZ] [--spacing S|SX,SY,SZ]: a box of Kuhn
+// tetrahedra (make_kuhn_box, sxk/generators.hpp): the thesis' test cube (§3.3: --cells 8 gives
+// its 729 nodes and 3072 tetrahedra) and its cantilever beams (Table 3.1).
+// sxk generate OUT --shape cylinder [--rings R] [--layers L] [--spacing S]: the Delaunay
+// tetrahedralisation of a cylindrical point cloud (make_delaunay of cylinder_cloud), the thesis'
+// other test object (§3.3's pie-like cuts: 891 vertices, 4020 tetrahedra).
+// For the experiments, the demos and anyone who wants a tetrahedral mesh without a mesher.
 #include <array>
 #include <memory>
 #include <variant>
@@ -14,8 +17,11 @@ namespace {
 
 struct GenerateOptions {
     std::string output;
+    std::string shape = "box";
     std::string cells = "8";
     std::string spacing = "1";
+    int rings = 4;
+    int layers = 13;
 };
 
 // One number for all three axes, or three.
@@ -37,6 +43,18 @@ int run_generate(Context& context, const GenerateOptions& options) {
                         << ": " << *problem << '\n';
             return exit_usage;
         }
+    if (options.shape == "cylinder") {
+        const double spacing_value = std::get<std::array<double, 3>>(spacing)[0];
+        auto mesh = make_delaunay(cylinder_cloud(options.rings, options.layers, spacing_value));
+        if (!mesh) {
+            context.err << "sxk: generate: " << mesh.reason() << '\n';
+            return exit_usage;
+        }
+        if (!save_mesh(context, *mesh, options.output)) return exit_refused;
+        context.out << options.output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh)
+                    << '\n';
+        return exit_success;
+    }
     std::array<int, 3> counts{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double n = std::get<std::array<double, 3>>(cells)[i];
@@ -61,11 +79,24 @@ int run_generate(Context& context, const GenerateOptions& options) {
 void add_generate_command(CLI::App& app, Context& context) {
     auto options = std::make_shared<GenerateOptions>();
     CLI::App* command = app.add_subcommand(
-        "generate", "A box of Kuhn tetrahedra (6 per cell): the thesis' test cube is --cells 8 (729 nodes, 3072 tetrahedra)");
+        "generate",
+        "A box of Kuhn tetrahedra (the thesis' test cube: --cells 8) or a Delaunay cylinder (--shape cylinder)");
     command->add_option("OUT", options->output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
         ->required();
-    command->add_option("--cells", options->cells, "Cells per axis: N, or NX,NY,NZ (each 1..1000)")->capture_default_str();
-    command->add_option("--spacing", options->spacing, "Cell size: S, or SX,SY,SZ (positive)")->capture_default_str();
+    command->add_option("--shape", options->shape, "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay")
+        ->check(CLI::IsMember({"box", "cylinder"}))
+        ->capture_default_str();
+    command->add_option("--cells", options->cells, "box: cells per axis, N or NX,NY,NZ (each 1..1000)")
+        ->capture_default_str();
+    command->add_option("--spacing", options->spacing,
+                        "box: cell size, S or SX,SY,SZ; cylinder: ring and disc spacing (positive)")
+        ->capture_default_str();
+    command->add_option("--rings", options->rings, "cylinder: rings around the axis")
+        ->check(whole_number_in(1, 200))
+        ->capture_default_str();
+    command->add_option("--layers", options->layers, "cylinder: discs along the axis, minus one")
+        ->check(whole_number_in(1, 2000))
+        ->capture_default_str();
     command->callback([&context, options] { context.exit_code = run_generate(context, *options); });
 }
 

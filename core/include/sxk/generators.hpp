@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <span>
+#include <vector>
 
 #include "sxk/config.hpp"
 #include "sxk/mesh.hpp"
@@ -39,5 +41,19 @@ SXK_API Outcome<Mesh> make_kuhn_cube(int n, double spacing = 1.0);
 // Refuses a count not in 1..1000 and a spacing that is not positive and finite ("make_kuhn_box:
 // ...").
 SXK_API Outcome<Mesh> make_kuhn_box(std::array<int, 3> cells, std::array<double, 3> spacing);
+
+// The Delaunay tetrahedralisation of `points` (CGAL's Delaunay_triangulation_3, exact predicates):
+// vertex i is points[i] in both position sets (a point given twice is one vertex: the repeat is
+// in no element), every element positive, labels 0. Refuses fewer than 4 points, a coordinate
+// that is not finite, and points that span no tetrahedron ("make_delaunay: the points are
+// coplanar"). O(n log n) expected.
+SXK_API Outcome<Mesh> make_delaunay(std::span<const Point> points);
+
+// A cylindrical point cloud (the thesis' test objects of §3.3 and §4.4 are Delaunay
+// tetrahedralisations of such clouds): `layers` + 1 discs along z, `spacing` apart; each disc the
+// axis point and `rings` concentric rings of radius k * spacing holding round(2 pi k) points,
+// every other disc turned by half a point so that the cloud is not a lattice. With rings 4 and
+// layers 13: 896 points (the thesis' cylinder: 891 vertices, 4020 tetrahedra).
+SXK_API std::vector<Point> cylinder_cloud(int rings, int layers, double spacing = 1.0);
 
 }  // namespace sxk

@@ -4,6 +4,7 @@
 // bisection's plan.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "mesh_checks.hpp"
@@ -70,6 +71,32 @@ inline std::vector<ElementId> elements_with_edge(const Mesh& mesh, VertexId a, V
     SmallVector<ElementId, 64> around;
     edge_elements_into(mesh, a, b, around);
     return {around.begin(), around.end()};
+}
+
+// The number of fans the elements `around` the edge ab fall into: chains of elements, each
+// joined to the next by a face containing a and b. A valid mesh may have several (two
+// tetrahedra touching only along an edge, each vertex star joined through other elements); a
+// split of the edge would then pinch the new vertex's star.
+template <class Elements>
+int edge_fans(const Mesh& mesh, const Elements& around, VertexId a, VertexId b) {
+    SmallVector<ElementId, 64> reached;
+    int fans = 0;
+    for (const ElementId start : around) {
+        if (std::find(reached.begin(), reached.end(), start) != reached.end()) continue;
+        ++fans;
+        reached.push_back(start);
+        for (std::size_t next = reached.size() - 1; next < reached.size(); ++next) {
+            const ElementId t = reached[next];
+            const Simplex& tau = mesh.simplex(t);
+            for (int i = 0; i < tau.count(); ++i) {
+                if (tau.vertex(i) == a || tau.vertex(i) == b) continue;  // that face lacks a or b
+                const ElementId n = mesh.neighbor(t, i);
+                if (n != invalid_id && std::find(reached.begin(), reached.end(), n) == reached.end())
+                    reached.push_back(n);
+            }
+        }
+    }
+    return fans;
 }
 
 }  // namespace sxk::detail

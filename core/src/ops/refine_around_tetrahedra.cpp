@@ -88,6 +88,8 @@ Outcome<std::size_t> refine_stateless(Mesh& mesh, ElementId t, const Point& x, d
     bool did_not_end = false;
     auto planned = detail::plan_refine_around(plan, t, x, h, did_not_end);
     if (!planned.ok()) return planned.refusal().prefixed("refine_around_tetrahedra: ");
+    if (auto refused = detail::refuse_pinched_edges(mesh, plan.splits(), "refine_around_tetrahedra"))
+        return *refused;
     for (const auto& e : plan.splits())
         if (auto split = split_edge(mesh, e[0], e[1], 0.5); !split.ok())
             return Refusal{RefusalCode::internal_error,

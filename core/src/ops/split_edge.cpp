@@ -26,6 +26,11 @@ Outcome<SplitResult> split_edge(Mesh& mesh, VertexId a, VertexId b, double t, co
     if (parents.empty())
         return Refusal{RefusalCode::not_found,
                        "split_edge: " + to_text(Simplex(+1, {a, b})) + " is not an edge"};
+    if (const int fans = detail::edge_fans(mesh, parents, a, b); fans > 1)
+        return Refusal{RefusalCode::pinched_star,
+                       "split_edge: the " + std::string(mesh.topological_dimension() == 3 ? "tetrahedra" : "triangles") +
+                           " around " + to_text(Simplex(+1, {a, b})) + " are " + std::to_string(fans) +
+                           " fans joined only at the edge: the new vertex's star would be pinched"};
 
     const std::array<VertexId, 2> ends{a, b};
     const std::array<double, 2> weights{1 - t, t};

@@ -29,7 +29,10 @@
 //   Transaction: a refusal by replace_elements after m was added (impossible on a valid mesh)
 //   removes m again (Mesh::remove_last_vertex), so no refusal leaves a vertex behind.
 // Refusals (mesh untouched, no vertex added), reasons begin with "split_edge: ":
-//   a or b is not a vertex; a == b; ab is not an edge; t not in the open interval (0,1); a child
+//   a or b is not a vertex; a == b; ab is not an edge; t not in the open interval (0,1); the
+//   elements around ab fall into fans that share only the edge ("the tetrahedra around {a,b}
+//   are 2 fans joined only at the edge: the new vertex's star would be pinched", pinched_star:
+//   a valid mesh may have such an edge, as a mesh pinched at a vertex may not); a child
 //   that would be flat or of the other orientation than its parent in either position set
 //   (possible only by rounding of m for nearly flat parents), except the children of parents
 //   containing all of options.vanishing_with (split_result.hpp), which the caller removes next.
