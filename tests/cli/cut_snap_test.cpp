@@ -1,0 +1,146 @@
+// sxk cut snap IN PATH OUT (the snapcut plug-in, thesis chapter 3) through the binary: the
+// thesis' cube cut along a recorded path, the JSON report, --undo, and the exact errors for bad
+// paths (exit 2) and for a scalpel that never meets the mesh.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_sxk.hpp"
+
+namespace sxk::test {
+namespace {
+
+struct CutFixture {
+    ScratchFolder folder;
+    fs::path cube = folder / "cube.mesh";
+    fs::path out = folder / "out.mesh";
+    CutFixture() { EXPECT_EQ(sxk({"generate", cube.string(), "--cells", "8"}).exit_code, 0); }
+    fs::path path(const char* name, const std::string& text) {
+        const fs::path file = folder / name;
+        write_file(file, text);
+        return file;
+    }
+    ProcessResult cut(const fs::path& path, std::vector<std::string> options = {}) {
+        std::vector<std::string> args{"cut", "snap", cube.string(), path.string(), out.string()};
+        args.insert(args.end(), options.begin(), options.end());
+        return sxk(args);
+    }
+};
+
+// The blade stands in x = 3.3 from z = 4 up and crosses the cube along y in 5 steps.
+const char* grid_plane_path = R"(# time hx hy hz tx ty tz
+0.0  3.3 -1 10  3.3 -1 4
+0.1  3.3  1 10  3.3  1 4
+0.2  3.3  3 10  3.3  3 4
+0.3  3.3  5 10  3.3  5 4
+0.4  3.3  7 10  3.3  7 4
+0.5  3.3  9 10  3.3  9 4
+)";
+
+TEST(SxkCutSnap, CutsTheCubeAlongThePathAndReportsEachStep) {
+    CutFixture f;
+    const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["options"]["degeneracy_removal"], true);
+    ASSERT_EQ(json["steps"].size(), 6u);
+    for (const char* key : {"faces_dissected", "nodes_snapped", "degenerates_found", "cut_free", "elements",
+                            "vertices", "seconds", "edges_hit", "loose_pieces", "phase_seconds"})
+        EXPECT_TRUE(json["steps"][1].contains(key)) << key;
+    EXPECT_EQ(json["steps"][0]["sweeps"], 0);
+    EXPECT_EQ(json["steps"][1]["line"], 3);
+    EXPECT_EQ(json["summary"]["faces_dissected"], 64);
+    EXPECT_EQ(json["summary"]["vertices"]["after"], 729 + 36);
+    EXPECT_EQ(json["summary"]["elements"]["after"], 3072);
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+}
+
+TEST(SxkCutSnap, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
+    CutFixture f;
+    const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--undo", "all"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("6 steps undone"), std::string::npos) << run.out;
+    const fs::path rewritten = f.folder / "rewritten.mesh";
+    ASSERT_EQ(sxk({"convert", f.cube.string(), rewritten.string()}).exit_code, 0);
+    EXPECT_EQ(slurp(f.out), slurp(rewritten));
+    // and two steps undone leave the first four
+    const ProcessResult partly = f.cut(f.path("plane.path", grid_plane_path), {"--undo", "2", "--json"});
+    ASSERT_EQ(partly.exit_code, 0) << partly.err;
+    EXPECT_EQ(nlohmann::json::parse(partly.out)["summary"]["undone"], 2);
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+}
+
+TEST(SxkCutSnap, BadPathsAreRefusedWithTheirLine) {
+    CutFixture f;
+    struct Case {
+        const char* text;
+        std::string message;
+    };
+    const std::vector<Case> cases{
+        {"0 3.3 -1 10 3.3 -1 4\n0.1 3.3 x 10 3.3 1 4\n", ":2: expected a coordinate, found 'x'"},
+        {"0 3.3 -1 10 3.3 -1 4\n0.1 3.3 nan 10 3.3 1 4\n", ":2: coordinate is not finite"},
+        {"# one sample\n0 3.3 -1 10 3.3 -1 4\n", ":0: 1 sample; a path needs at least 2 (a tool moves from one to the next)"},
+        {"0 3.3 -1 10 3.3 -1\n0.1 3.3 1 10 3.3 1\n", ":1: 5 values after the time; expected 6"},
+        {"0 3.3 -1 10 3.3 -1 4\n0.1 3.3 1 10 3.3 1 4 5\n", ":2: more than 6 values after the time"},
+    };
+    for (const Case& c : cases) {
+        const fs::path path = f.path("bad.path", c.text);
+        const ProcessResult run = f.cut(path);
+        EXPECT_EQ(run.exit_code, 2) << c.text;
+        EXPECT_EQ(run.err, "sxk: " + path.string() + c.message + "\n") << c.text;
+        EXPECT_FALSE(fs::exists(f.out));
+    }
+}
+
+TEST(SxkCutSnap, AScalpelThatNeverMeetsTheMeshIsAnInputError) {
+    CutFixture f;
+    const fs::path path = f.path("away.path", "# far away\n0 20 0 5 20 0 1\n1 20 5 5 20 5 1\n");
+    const ProcessResult run = f.cut(path);
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: " + path.string() + ":2: the scalpel never meets the mesh (no sweep crosses an edge)\n");
+    EXPECT_FALSE(fs::exists(f.out));
+}
+
+TEST(SxkCutSnap, UsageErrors) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    EXPECT_EQ(f.cut(path, {"--undo", "7"}).err, "sxk: cut snap: --undo 7: only 6 steps were taken\n");
+    const ProcessResult bad_undo = f.cut(path, {"--undo", "some"});
+    EXPECT_EQ(bad_undo.exit_code, 2);
+    EXPECT_NE(bad_undo.err.find("'some' is neither a whole number >= 0 nor 'all'"), std::string::npos) << bad_undo.err;
+    const ProcessResult bad_aspect = f.cut(path, {"--aspect", "2"});
+    EXPECT_EQ(bad_aspect.exit_code, 2);
+    EXPECT_NE(bad_aspect.err.find("--aspect: '2' is not in (0, 1)"), std::string::npos) << bad_aspect.err;
+    const fs::path square = f.folder / "square.mesh";
+    ASSERT_EQ(sxk({"convert", SXK_TEST_DATA_DIR "/io/square.mesh", square.string()}).exit_code, 0);
+    const ProcessResult planar = sxk({"cut", "snap", square.string(), path.string(), f.out.string()});
+    EXPECT_EQ(planar.exit_code, 2);
+    EXPECT_EQ(planar.err, "sxk: " + square.string() + ":0: the snap cutter cuts tetrahedral meshes in space\n");
+    const ProcessResult help = sxk({"cut", "snap", "--help"});
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.out.find("--no-degeneracy-removal"), std::string::npos);
+}
+
+TEST(SxkGenerate, TheThesisCubeAndTheDelaunayCylinder) {
+    ScratchFolder folder;
+    const ProcessResult cube = sxk({"generate", (folder / "cube.mesh").string(), "--cells", "8"});
+    ASSERT_EQ(cube.exit_code, 0) << cube.err;
+    EXPECT_EQ(cube.out, (folder / "cube.mesh").string() + ": 729 vertices, 3072 tetrahedra\n");
+    const ProcessResult beam = sxk({"generate", (folder / "beam.mesh").string(), "--cells", "16,4,4", "--spacing",
+                                    "0.075,0.05,0.075"});
+    ASSERT_EQ(beam.exit_code, 0) << beam.err;
+    EXPECT_EQ(beam.out, (folder / "beam.mesh").string() + ": 425 vertices, 1536 tetrahedra\n");
+    const ProcessResult cylinder = sxk({"generate", (folder / "cyl.mesh").string(), "--shape", "cylinder"});
+    ASSERT_EQ(cylinder.exit_code, 0) << cylinder.err;
+    EXPECT_EQ(cylinder.out.rfind((folder / "cyl.mesh").string() + ": 896 vertices, ", 0), 0u) << cylinder.out;
+    EXPECT_EQ(sxk({"validate", (folder / "cyl.mesh").string()}).exit_code, 0);
+    const ProcessResult bad = sxk({"generate", (folder / "x.mesh").string(), "--cells", "8,8"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err, "sxk: generate: --cells: expected one number or three (X,Y,Z), found 2 in '8,8'\n");
+    const ProcessResult zero = sxk({"generate", (folder / "x.mesh").string(), "--cells", "0"});
+    EXPECT_EQ(zero.err, "sxk: generate: --cells: '0' is not a whole number in 1..1000 per axis\n");
+}
+
+}  // namespace
+}  // namespace sxk::test
