@@ -24,6 +24,10 @@ void add_cut_options(CLI::App& app, Options& options) {
         ->check(number_in(0, true, 1, false, "[0, 1)"))
         ->capture_default_str();
     app.add_flag("--remove-loose", options.remove_loose_pieces, "Remove the pieces a step cuts loose");
+    app.add_option("--relax-iterations", options.relax_iterations,
+                   "With a simulation (--deform): CG iterations after each step, 1..10^8")
+        ->check(whole_number_in(1, 100000000))
+        ->capture_default_str();
     app.add_option("--cut-label", options.cut_label, "Face label of the cut surface")
         ->check(whole_number("LABEL"))
         ->capture_default_str();

@@ -8,6 +8,7 @@
 //   --snap-min-aspect A        refuse a snap leaving an element below A, 0 <= A < 1 (0: off)
 //   --remove-loose             remove the pieces a step cuts loose
 //   --cut-label L              the face label of the cut surface (9999)
+//   --relax-iterations N       with a simulation: CG iterations after each step (100)
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -2,6 +2,7 @@
 #include "cut_report.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace sxk::snapcut {
@@ -34,12 +35,22 @@ nlohmann::ordered_json to_json(const CutStepReport& r) {
     json["cut_free"] = r.cut_free;
     json["degenerates_remaining"] = r.degenerates_remaining;
     json["loose_pieces"] = r.loose_pieces;
+    if (r.relaxed) {
+        nlohmann::ordered_json relax;
+        relax["iterations"] = r.relax_iterations;
+        relax["converged"] = r.relax_converged;
+        relax["residual"] = r.relax_residual;
+        relax["shown"] = r.relax_shown;
+        relax["pieces_held"] = r.pieces_held;
+        if (!r.relax_refusal.empty()) relax["refusal"] = r.relax_refusal;
+        json["relax"] = relax;
+    }
     json["elements"] = r.elements;
     json["vertices"] = r.vertices;
     json["seconds"] = r.seconds;
     json["phase_seconds"] = {{"select", r.seconds_select},       {"snap", r.seconds_snap},
                              {"dissect", r.seconds_dissect},     {"degeneracy", r.seconds_degeneracy},
-                             {"pieces", r.seconds_pieces}};
+                             {"pieces", r.seconds_pieces},       {"relax", r.seconds_relax}};
     return json;
 }
 
@@ -99,6 +110,11 @@ nlohmann::ordered_json to_json(const ReplayRecord& record) {
         json["steps"].push_back(step);
     }
     const Totals t = totals_of(record);
+    if (record.deformed)
+        json["initial_relax"] = {{"iterations", record.initial_relax.iterations},
+                                 {"converged", record.initial_relax.converged},
+                                 {"residual", record.initial_relax.residual},
+                                 {"seconds", record.initial_relax.seconds}};
     nlohmann::ordered_json summary;
     summary["steps"] = record.steps.size();
     summary["undone"] = record.undone;
@@ -124,14 +140,20 @@ nlohmann::ordered_json to_json(const ReplayRecord& record) {
 void print_replay(std::ostream& out, const ReplayRecord& record) {
     char line[256];
     out << "step    time  edges  selected  dissected  snapped  refused  degenerate  collapses  cut free  pieces"
-           "  elements  vertices      ms\n";
+           "  elements  vertices      ms"
+        << (record.deformed ? "     CG" : "") << '\n';
     for (std::size_t i = 0; i < record.steps.size(); ++i) {
         const CutStepReport& r = record.steps[i].report;
         std::snprintf(line, sizeof line, "%4zu %7.3f %6zu %9zu %10zu %8zu %8zu %11zu %10zu %9zu %7zu %9zu %9zu %7.2f\n",
                       i + 1, record.steps[i].time, r.edges_hit, r.faces_selected, r.faces_dissected,
                       r.nodes_snapped, r.nodes_refused, r.degenerates_found, r.collapses, r.cut_free,
                       r.loose_pieces.size(), r.elements, r.vertices, r.seconds * 1e3);
-        out << line;
+        out << std::string(line, std::strlen(line) - 1);
+        if (record.deformed) {
+            std::snprintf(line, sizeof line, " %6zu", r.relax_iterations);
+            out << line;
+        }
+        out << '\n';
     }
     const Totals t = totals_of(record);
     out << record.steps.size() << " steps: " << t.dissected << " faces dissected, " << t.snapped << " nodes snapped ("
@@ -139,6 +161,8 @@ void print_replay(std::ostream& out, const ReplayRecord& record) {
         << " cut free), " << t.pieces << " loose pieces; " << record.elements_before << " -> "
         << record.elements_after << " elements, " << record.vertices_before << " -> " << record.vertices_after
         << " vertices";
+    if (record.deformed)
+        out << "; CG " << record.initial_relax.iterations << " iterations before the cut, then per step as listed";
     if (record.undone > 0) out << "; " << record.undone << " steps undone";
     out << '\n';
 }

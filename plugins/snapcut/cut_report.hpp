@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "elasticity_service.hpp"
 #include "snap_cut.hpp"
 
 namespace sxk::snapcut {
@@ -27,6 +28,8 @@ struct ReplayStep {
 
 struct ReplayRecord {
     std::vector<ReplayStep> steps;
+    bool deformed = false;                    // --deform: a simulation ran
+    elasticity::RelaxReport initial_relax;    // its solve before the first step
     std::size_t undone = 0;
     std::size_t elements_before = 0, elements_after = 0;
     std::size_t vertices_before = 0, vertices_after = 0;  // vertices in some element

@@ -46,6 +46,9 @@
 namespace sxk::degeneracy {
 struct DegeneracyService;
 }
+namespace sxk::elasticity {
+class Simulation;
+}
 
 namespace sxk::snapcut {
 
@@ -75,6 +78,8 @@ struct Options {
     // Remove the pieces a step cuts loose (they are reported either way). A simulation fixes
     // them instead (thesis §3.3: every unfixed component is fixed on a face).
     bool remove_loose_pieces = false;
+    // With a simulation: CG iterations after each step (a frame's worth; warm started).
+    std::size_t relax_iterations = 100;
 };
 
 // What one step did (thesis §3.3's figures, per step).
@@ -97,15 +102,25 @@ struct CutStepReport {
     std::size_t degenerates_remaining = 0;
     // loose pieces the step made: element count of each (sorted, smallest first)
     std::vector<std::size_t> loose_pieces;
+    // the simulation's relaxation after the step (with CutServices::simulation)
+    bool relaxed = false;
+    std::size_t relax_iterations = 0, pieces_held = 0;
+    bool relax_converged = false, relax_shown = false;
+    double relax_residual = 0;
+    std::string relax_refusal;  // why it could not relax (the cut stands)
     std::size_t elements = 0, vertices = 0;  // the mesh's after the step (vertices: in some element)
     // seconds per phase, and in all
     double seconds_select = 0, seconds_snap = 0, seconds_dissect = 0, seconds_degeneracy = 0,
-           seconds_pieces = 0, seconds = 0;
+           seconds_pieces = 0, seconds_relax = 0, seconds = 0;
 };
 
 // What the session offers besides the kernel: other plug-ins' services (nullptr: not loaded).
 struct CutServices {
     const degeneracy::DegeneracyService* degeneracy = nullptr;
+    // A running simulation of the mesh (the elasticity plug-in's, elasticity_service.hpp), owned
+    // by the caller: after each step the session holds the pieces that came loose and relaxes
+    // it (Options::relax_iterations), so the next sweep meets the new deformed shape.
+    elasticity::Simulation* simulation = nullptr;
 };
 
 class SnapCutSession final : public ToolSession {
@@ -137,6 +152,8 @@ private:
     // One selection, snap, dissection and removal of sweep `sweep_index`; `edited`: the removal
     // changed the mesh.
     Outcome<Done> cut_round(std::uint32_t sweep_index, StepReport& report, bool& edited);
+    // With a simulation: hold the step's loose pieces and relax.
+    void relax(StepReport& report);
 
     Options m_options;
     CutServices m_services;
@@ -151,6 +168,7 @@ private:
     };
     std::vector<Undo> m_undo;
     CutStepReport m_last;
+    std::vector<std::vector<ElementId>> m_loose;  // the step's loose pieces (kept ones)
 };
 
 }  // namespace sxk::snapcut

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "degeneracy_service.hpp"
+#include "elasticity_service.hpp"
 #include "loose_pieces.hpp"
 #include "node_snapping.hpp"
 #include "snap_cut.hpp"
@@ -79,6 +80,34 @@ double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) 
 
 }  // namespace
 
+void SnapCutSession::relax(StepReport& report) {
+    if (m_services.simulation == nullptr) return;
+    const auto start = Clock::now();
+    m_last.relaxed = true;
+    for (const auto& piece : m_loose) {
+        auto held = m_services.simulation->hold_piece(piece);
+        if (!held) {
+            m_last.relax_refusal = held.reason();
+            break;
+        }
+        m_last.pieces_held += *held;
+    }
+    if (m_last.relax_refusal.empty()) {
+        if (auto relaxed = m_services.simulation->relax(m_options.relax_iterations)) {
+            m_last.relax_iterations = relaxed->iterations;
+            m_last.relax_converged = relaxed->converged;
+            m_last.relax_residual = relaxed->residual;
+            m_last.relax_shown = relaxed->shown;
+        } else {
+            m_last.relax_refusal = relaxed.reason();
+        }
+    }
+    report.actions.push_back(m_last.relax_refusal.empty()
+                                 ? "relaxed " + std::to_string(m_last.relax_iterations) + " iterations"
+                                 : "not relaxed: " + m_last.relax_refusal);
+    m_last.seconds_relax = seconds_since(start);
+}
+
 ToolPose to_pose(const Scalpel& scalpel) {
     ToolPose pose;
     pose.position = scalpel.tip;
@@ -135,6 +164,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
             return Refusal{RefusalCode::bad_argument, "snapcut: the scalpel's coordinates must be finite"};
     m_last = {};
+    m_loose.clear();
     Undo undo{m_scalpel, m_marks.checkpoint()};
     if (m_scalpel) {
         const Scalpel& was = *m_scalpel;
@@ -151,6 +181,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     } else {
         report.actions.push_back("placed the scalpel");
     }
+    relax(report);
     m_scalpel = next;
     m_undo.push_back(std::move(undo));
     m_last.elements = mesh().element_count();
@@ -289,11 +320,14 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     LoosePieces pieces = find_loose_pieces(mesh, seeds);
     for (const auto& piece : pieces.pieces) m_last.loose_pieces.push_back(piece.size());
     std::sort(m_last.loose_pieces.begin(), m_last.loose_pieces.end());
-    if (m_options.remove_loose_pieces)
-        for (const auto& piece : pieces.pieces) {
+    for (auto& piece : pieces.pieces) {
+        if (m_options.remove_loose_pieces) {
             if (Outcome<Done> removed = remove_elements(mesh, piece); !removed)
                 return removed.refusal().prefixed("snapcut: removing a loose piece: ");
+        } else {
+            m_loose.push_back(std::move(piece));
         }
+    }
     m_last.seconds_pieces += seconds_since(phase);
     return Done{};
 }

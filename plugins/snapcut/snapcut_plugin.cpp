@@ -4,6 +4,9 @@
 // the host (Plugin::attach): no plug-in links another.
 #include <algorithm>
 #include <array>
+#include <limits>
+#include <memory>
+#include <sstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +18,7 @@
 #include "cut_options.hpp"
 #include "cut_report.hpp"
 #include "degeneracy_service.hpp"
+#include "elasticity_service.hpp"
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
@@ -39,8 +43,16 @@ CutServices services_from(const sxk::Services* host) {
     return services;
 }
 
+// Whitespace-separated words.
+std::vector<std::string> words_of(const std::string& text) {
+    std::vector<std::string> words;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) words.push_back(word);
+    return words;
+}
+
 struct CommandOptions {
-    std::string input, path, output;
+    std::string input, path, output, deform;
     Options cut;
     bool json = false;
     std::string undo;  // "", a count, or "all"
@@ -83,6 +95,10 @@ public:
                     return std::string();
                 },
                 "N|all"));
+        app.add_option("--deform", options.deform,
+                       "Cut a deforming body: `sxk deform`'s options in one word, e.g. \"--fix z<0.001 "
+                       "--force z>7.99:0,0,-50 --E 1e4\" (the elasticity plug-in; the body is solved "
+                       "first and relaxed after every step)");
         app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut snap", out, err)) return *done;
@@ -106,16 +122,44 @@ public:
             err << "sxk: " << options.input << ":0: the snap cutter cuts tetrahedral meshes in space\n";
             return 2;
         }
-        const CutServices services = services_from(plugin_host);
+        CutServices services = services_from(plugin_host);
         if (options.cut.remove_degeneracies && services.degeneracy == nullptr)
             err << "sxk: warning: the degeneracy plug-in is not loaded: flat elements stay\n";
+        ReplayRecord record;
+        std::unique_ptr<elasticity::Simulation> simulation;
+        if (!options.deform.empty()) {
+            auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
+                                          : Outcome<elasticity::ElasticityService*>(
+                                                Refusal{RefusalCode::not_found, "no plug-in host"});
+            if (!elasticity) {
+                err << "sxk: cut snap: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
+                return 2;
+            }
+            auto made = (*elasticity)->simulate(*mesh, words_of(options.deform));
+            if (!made) {
+                err << "sxk: cut snap: --deform: " << made.reason() << '\n';
+                return 2;
+            }
+            simulation = std::move(*made);
+            // the loaded shape before the first cut
+            auto settled = simulation->relax(std::numeric_limits<std::size_t>::max());
+            if (!settled) {
+                err << "sxk: cut snap: --deform: " << settled.reason() << '\n';
+                return 2;
+            }
+            record.initial_relax = *settled;
+            record.deformed = true;
+            if (!settled->converged)
+                err << "sxk: warning: --deform: CG did not converge before the cut (|r| = " << settled->residual
+                    << ", needed " << settled->threshold << ")\n";
+            services.simulation = simulation.get();
+        }
         auto session = SnapCutSession::make(*mesh, options.cut, services);
         if (!session) {
             err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
             return 2;
         }
 
-        ReplayRecord record;
         record.elements_before = mesh->element_count();
         record.vertices_before = vertices_in_elements(*mesh);
         for (const ToolSample& sample : path.samples) {

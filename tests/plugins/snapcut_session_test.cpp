@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/fixtures.hpp"
+#include "simulation.hpp"
 #include "snapcut_fixture.hpp"
 #include "sxk/components.hpp"
 #include "sxk/traversal.hpp"
@@ -180,6 +181,37 @@ TEST(SnapCut, AScalpelThatMissesTheMeshCutsNothing) {
         EXPECT_EQ(session->last_step().edges_hit, 0u);
     }
     expect_same_state(mesh, original);
+}
+
+// Issue item 6: with a simulation the session relaxes after each step, and the next sweep meets the
+// new deformed shape; undoing every step gives back the deformed mesh of before the cut.
+TEST(SnapCut, ADeformingBodyIsRelaxedAfterEveryStepAndTheCutFollowsIt) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    const std::vector<std::string> words{"--fix", "y<0.001", "--force", "y>7.99:0,20000,0", "--E", "1e5"};
+    auto simulation = elasticity::simulate(mesh, words);
+    ASSERT_TRUE(simulation) << simulation.reason();
+    const auto settled = (*simulation)->relax(100000);
+    ASSERT_TRUE(settled && settled->converged && settled->shown);
+    const Mesh loaded = mesh;
+    EXPECT_NE(mesh.deformed(728), mesh.reference(728));  // the far corner moved
+    snapcut::Options options;
+    options.relax_iterations = 50;
+    auto session = SnapCutSession::make(mesh, options, {degeneracy_service(), simulation->get()}).value();
+    std::size_t dissected = 0, relaxed = 0;
+    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -1, 10, 12)) {
+        ASSERT_TRUE(session->cut(scalpel));
+        const auto& r = session->last_step();
+        EXPECT_TRUE(r.relaxed);
+        EXPECT_EQ(r.relax_refusal, "");
+        if (r.faces_dissected > 0) EXPECT_GT(r.relax_iterations, 0u);  // the cut changed the body
+        dissected += r.faces_dissected;
+        relaxed += r.relax_iterations;
+    }
+    expect_valid(mesh);
+    EXPECT_GT(dissected, 50u);
+    EXPECT_EQ((*simulation)->total_iterations(), settled->iterations + relaxed);
+    ASSERT_TRUE(session->cancel());
+    expect_same_state(mesh, loaded);
 }
 
 TEST(SnapCut, ThePoseOfAToolSessionIsTheScalpel) {
