@@ -122,6 +122,27 @@ TEST(SxkCutSnap, UsageErrors) {
     EXPECT_NE(help.out.find("--no-degeneracy-removal"), std::string::npos);
 }
 
+TEST(SxkCutSnap, ListedAsAPluginCommandAndCutsADeformingBody) {
+    const ProcessResult plugins = sxk({"plugins"});
+    EXPECT_NE(plugins.out.find("snapcut 0.1.0  snap cutting: a scalpel cuts tetrahedral meshes along faces, snapped "
+                               "and cleaned (thesis 3.2)\n"),
+              std::string::npos)
+        << plugins.out;
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const ProcessResult run =
+        f.cut(path, {"--json", "--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--relax-iterations", "30"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["initial_relax"]["converged"], true);
+    EXPECT_EQ(json["steps"][3]["relax"]["shown"], true);
+    EXPECT_LE(json["steps"][3]["relax"]["iterations"].get<int>(), 30);
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+    const ProcessResult bad = f.cut(path, {"--deform", "--fix x<-5"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err, "sxk: cut snap: --deform: deform: --fix 'x<-5' selects no vertex of the mesh\n");
+}
+
 TEST(SxkGenerate, TheThesisCubeAndTheDelaunayCylinder) {
     ScratchFolder folder;
     const ProcessResult cube = sxk({"generate", (folder / "cube.mesh").string(), "--cells", "8"});

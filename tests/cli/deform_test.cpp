@@ -43,7 +43,7 @@ TEST(SxkDeform, HelpNamesEveryOption) {
 TEST(SxkDeform, ListedAsAPluginCommand) {
     const ProcessResult run = sxk({"plugins"});
     EXPECT_EQ(run.exit_code, 0);
-    EXPECT_NE(run.out.find("elasticity 0.2.0  linear and neo-Hookean elasticity: matrix-free CG on "
+    EXPECT_NE(run.out.find("elasticity 0.3.0  linear and neo-Hookean elasticity: matrix-free CG on "
                            "tetrahedra and plane-stress triangles; sxk deform\n"),
               std::string::npos)
         << run.out;
