@@ -55,6 +55,11 @@ void add_body_options(CLI::App& app, BodySetup& setup) {
     app.add_option("--max-iterations", setup.max_iterations, "Most CG iterations before giving up")
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
         ->capture_default_str();
+    app.add_option("--stop", setup.stop,
+                   "What --tol is relative to: reactions (the loads and the reactions that hold the fixed "
+                   "vertices, eq. 6.9) or external (the loads only, eq. 6.8: the thesis' chapters 3 and 4)")
+        ->check(CLI::IsMember({"reactions", "external"}))
+        ->capture_default_str();
 }
 
 namespace {

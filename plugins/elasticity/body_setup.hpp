@@ -5,7 +5,7 @@
 //     BodyOptions words:  --fix EXPR  --displace EXPR:DX,DY,DZ  --force EXPR:FX,FY,FZ
 //                         --share equal|area  --gravity GX,GY,GZ  --density RHO
 //                         --material linear|neohookean  --E  --nu  --thickness  --tol
-//                         --max-iterations
+//                         --max-iterations  --stop reactions|external
 //
 // Two stages, as the command checks them: the words alone (parse_body_setup: selectors, vectors,
 // something holds the body), then on the mesh (build_body: the body, its constraints and loads;
@@ -35,6 +35,7 @@ struct BodySetup {
     std::string gravity;
     double density = 1000;
     std::size_t max_iterations = 100000;
+    std::string stop = "reactions";  // or "external" (StopCriterion)
 };
 
 // Adds the options above to `app`.

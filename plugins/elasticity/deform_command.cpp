@@ -95,7 +95,9 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const Model model = built->model;
     const std::size_t loaded = built->loaded;
     const auto report =
-        solve(*body, {.tolerance = o.body.tolerance, .max_iterations = o.body.max_iterations});
+        solve(*body, {.tolerance = o.body.tolerance,
+                      .max_iterations = o.body.max_iterations,
+                      .stop = o.body.stop == "external" ? StopCriterion::external_force : StopCriterion::with_reactions});
     if (!report) {
         err << "sxk: " << o.input << ":0: " << report.reason() << '\n';
         return 2;

@@ -9,7 +9,7 @@
 //     (*simulation)->relax(200);        // per frame: a bounded number of CG iterations, warm start
 //
 // The options are `sxk deform`'s (docs/cli.md): --fix, --displace, --force, --share, --gravity,
-// --density, --material, --E, --nu, --thickness, --tol, --max-iterations. This header carries
+// --density, --material, --E, --nu, --thickness, --tol, --max-iterations, --stop. This header carries
 // only the kernel's types.
 #pragma once
 

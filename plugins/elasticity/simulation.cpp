@@ -101,7 +101,10 @@ Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, std::span<const std::s
     if (!parsed) return refused();
     std::optional<BuiltBody> built = build_body(mesh, "the mesh", setup, *parsed, messages);
     if (!built) return refused();
-    const SolveOptions options{.tolerance = setup.tolerance, .max_iterations = setup.max_iterations};
+    const SolveOptions options{.tolerance = setup.tolerance,
+                               .max_iterations = setup.max_iterations,
+                               .stop = setup.stop == "external" ? StopCriterion::external_force
+                                                                : StopCriterion::with_reactions};
     return std::unique_ptr<Simulation>(std::make_unique<BodySimulation>(mesh, std::move(*built), options));
 }
 

@@ -21,7 +21,9 @@ nlohmann::ordered_json to_json(const CutStepReport& r) {
     json["edges_hit"] = r.edges_hit;
     json["faces_selected"] = r.faces_selected;
     json["faces_dissected"] = r.faces_dissected;
+    json["incision_error"] = r.incision_error;
     json["nodes_snapped"] = r.nodes_snapped;
+    json["nodes_partly_snapped"] = r.nodes_partly_snapped;
     json["nodes_refused"] = r.nodes_refused;
     json["refusals"] = nlohmann::ordered_json::array();
     for (const auto& [node, reason] : r.refusals) json["refusals"].push_back({{"node", node}, {"reason", reason}});

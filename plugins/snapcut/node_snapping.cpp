@@ -120,6 +120,36 @@ std::optional<Point> reference_of(const Mesh& mesh, const Vec& y, const std::vec
     return best;
 }
 
+double lowest_aspect_ratio(const Mesh& mesh, const std::vector<ElementId>& star_v);
+
+// Moves v to (deformed, reference), or refuses and leaves it where it was: an element of the star
+// inverted or flat in either position set, or below `min_aspect_ratio` (0: no such check).
+Outcome<Done> move_checked(Mesh& mesh, VertexId v, const Point& deformed, const Point& reference,
+                           const std::vector<ElementId>& star_v, double min_aspect_ratio) {
+    const MoveCheck check{.refuse_inverted = true, .refuse_flat = true};
+    const Point was_reference = mesh.reference(v), was_deformed = mesh.deformed(v);
+    if (deformed == was_deformed && reference == was_reference) return Done{};  // on the sweep already
+    Outcome<Done> moved = Done{};
+    if (reference == deformed && was_reference == was_deformed) {
+        moved = mesh.move_vertices(std::span(&v, 1), std::span(&deformed, 1), PositionSet::both, check);
+    } else {
+        moved = mesh.move_vertices(std::span(&v, 1), std::span(&deformed, 1), PositionSet::deformed, check);
+        if (moved) {
+            moved = mesh.move_vertices(std::span(&v, 1), std::span(&reference, 1), PositionSet::reference, check);
+            if (!moved)  // back where it was: the deformed move was checked against these positions
+                (void)mesh.move_vertices(std::span(&v, 1), std::span(&was_deformed, 1), PositionSet::deformed);
+        }
+    }
+    if (!moved) return moved;
+    if (min_aspect_ratio > 0 && lowest_aspect_ratio(mesh, star_v) < min_aspect_ratio) {
+        (void)mesh.move_vertices(std::span(&v, 1), std::span(&was_deformed, 1), PositionSet::deformed);
+        (void)mesh.move_vertices(std::span(&v, 1), std::span(&was_reference, 1), PositionSet::reference);
+        return Refusal{RefusalCode::would_flatten,
+                       "an element around it would have an aspect ratio below " + std::to_string(min_aspect_ratio)};
+    }
+    return Done{};
+}
+
 double lowest_aspect_ratio(const Mesh& mesh, const std::vector<ElementId>& star_v) {
     double lowest = 1;
     for (const ElementId t : star_v) {
@@ -138,7 +168,6 @@ double lowest_aspect_ratio(const Mesh& mesh, const std::vector<ElementId>& star_
 SnapResult snap_nodes(Mesh& mesh, std::span<const NodeToSnap> nodes, const std::vector<Sweep>& sweeps,
                       double min_aspect_ratio) {
     SnapResult result;
-    const MoveCheck check{.refuse_inverted = true, .refuse_flat = true};
     for (const NodeToSnap& node : nodes) {
         const VertexId v = node.node;
         const std::vector<ElementId> star_v = star(mesh, v);
@@ -153,34 +182,27 @@ SnapResult snap_nodes(Mesh& mesh, std::span<const NodeToSnap> nodes, const std::
             result.refused.emplace_back(v, "no element around it holds its place on the sweep");
             continue;
         }
-        const Point deformed = point(*y);
-        const Point was_reference = mesh.reference(v), was_deformed = mesh.deformed(v);
-        if (deformed == was_deformed && *reference == was_reference) {
-            result.snapped.push_back(v);  // on the sweep already
-            result.snapped_from.push_back(was_deformed);
-            continue;
-        }
-        Outcome<Done> moved = Done{};
-        if (*reference == deformed && was_reference == was_deformed) {
-            moved = mesh.move_vertices(std::span(&v, 1), std::span(&deformed, 1), PositionSet::both, check);
-        } else {
-            moved = mesh.move_vertices(std::span(&v, 1), std::span(&deformed, 1), PositionSet::deformed, check);
-            if (moved) {
-                moved = mesh.move_vertices(std::span(&v, 1), std::span(&*reference, 1), PositionSet::reference, check);
-                if (!moved)  // back where it was: the deformed move was checked against these positions
-                    (void)mesh.move_vertices(std::span(&v, 1), std::span(&was_deformed, 1), PositionSet::deformed);
-            }
-        }
+        const Point was_deformed = mesh.deformed(v);
+        Outcome<Done> moved = move_checked(mesh, v, point(*y), *reference, star_v, min_aspect_ratio);
         if (!moved) {
-            result.refused.emplace_back(v, moved.reason());
-            continue;
-        }
-        if (min_aspect_ratio > 0 && lowest_aspect_ratio(mesh, star_v) < min_aspect_ratio) {
-            (void)mesh.move_vertices(std::span(&v, 1), std::span(&was_deformed, 1), PositionSet::deformed);
-            (void)mesh.move_vertices(std::span(&v, 1), std::span(&was_reference, 1), PositionSet::reference);
-            result.refused.emplace_back(v, "an element around it would have an aspect ratio below " +
-                                               std::to_string(min_aspect_ratio));
-            continue;
+            // as far toward the sweep as the star allows: the incision follows the scalpel more
+            // closely than a node left where it was (a node is at most half its edge from the
+            // crossing that marked it)
+            const Vec x = vec(was_deformed);
+            bool partly = false;
+            for (const double fraction : {0.875, 0.75, 0.5, 0.25}) {
+                const Vec part = x + fraction * (*y - x);
+                const std::optional<Point> part_reference = reference_of(mesh, part, star_v);
+                if (part_reference && move_checked(mesh, v, point(part), *part_reference, star_v, min_aspect_ratio)) {
+                    partly = true;
+                    break;
+                }
+            }
+            if (!partly) {
+                result.refused.emplace_back(v, moved.reason());
+                continue;
+            }
+            ++result.partly;
         }
         result.snapped.push_back(v);
         result.snapped_from.push_back(was_deformed);

@@ -13,12 +13,15 @@
 //
 // All this in the deformed positions (where the scalpel is). The reference position is the
 // element of v's star that holds w (deformed) mapping w back: the same barycentric weights of its
-// reference corners (its strain, as the thesis says). The move is refused, and v stays, when no
-// element of the star holds w, when it would make an element of the star inverted or flat in
-// either position set (the thesis' §3.4 remedy for the inverted elements snapping made), or when
-// it would leave one below `min_aspect_ratio` (0: no such check).
+// reference corners (its strain, as the thesis says). The move is refused when no element of the
+// star holds w, when it would make an element of the star inverted or flat in either position set
+// (the thesis' §3.4 remedy for the inverted elements snapping made), or when it would leave one
+// below `min_aspect_ratio` (0: no such check). A node refused for its star's shapes goes 7/8, 3/4,
+// 1/2 or 1/4 of the way when that is allowed ("partly" snapped: on the femur this halves the
+// incision's distance from the sweep); otherwise it stays and the refusal is reported.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -38,6 +41,7 @@ struct NodeToSnap {
 struct SnapResult {
     std::vector<VertexId> snapped;                         // in the order tried
     std::vector<Point> snapped_from;                       // their deformed positions before
+    std::size_t partly = 0;  // of the snapped, those moved only part of the way (see above)
     std::vector<std::pair<VertexId, std::string>> refused; // node, why
 };
 

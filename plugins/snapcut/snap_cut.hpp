@@ -90,7 +90,13 @@ struct CutStepReport {
     std::size_t edges_hit = 0;         // edges the sweeps crossed for the first time
     std::size_t faces_selected = 0;    // interior faces selected (§3.2.1)
     std::size_t faces_dissected = 0;   // of those, faces that opened
+    // The farthest corner of a face the step opened from the sweeps of the last 8 steps (a face
+    // opens once the faces around its corners close up, which may take a few steps after the
+    // sweep that selected it), in the deformed positions right after the dissection: how
+    // closely the incision follows the scalpel.
+    double incision_error = 0;
     std::size_t nodes_snapped = 0;
+    std::size_t nodes_partly_snapped = 0;  // of the snapped, moved only part of the way to the sweep
     std::size_t nodes_refused = 0;     // listed with reasons in `refusals`
     std::vector<std::pair<VertexId, std::string>> refusals;
     std::size_t incomplete = 0;        // tetrahedra left with an incomplete cut (1 or 2 marked nodes)
@@ -152,6 +158,9 @@ private:
     // One selection, snap, dissection and removal of sweep `sweep_index`; `edited`: the removal
     // changed the mesh.
     Outcome<Done> cut_round(std::uint32_t sweep_index, StepReport& report, bool& edited);
+    // The distance from p to the nearest of the sweeps sweep_index - 15 .. sweep_index (the last
+    // 8 steps').
+    double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const;
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "degeneracy_service.hpp"
 #include "elasticity_service.hpp"
@@ -79,6 +80,19 @@ double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) 
 }
 
 }  // namespace
+
+double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const {
+    double nearest = std::numeric_limits<double>::infinity();
+    const std::uint32_t first = sweep_index >= 15 ? sweep_index - 15 : 0;
+    for (std::uint32_t i = first; i <= sweep_index; ++i) {
+        const Sweep& s = m_marks.sweeps()[i];
+        const auto w = nearest_on_triangle(s.a, s.b, s.c, p);
+        Point q{};
+        for (std::size_t k = 0; k < 3; ++k) q[k] = w[0] * s.a[k] + w[1] * s.b[k] + w[2] * s.c[k];
+        nearest = std::min(nearest, length(p, q));
+    }
+    return nearest;
+}
 
 void SnapCutSession::relax(StepReport& report) {
     if (m_services.simulation == nullptr) return;
@@ -254,6 +268,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         for (std::size_t i = 0; i < snapped.snapped.size(); ++i)
             m_marks.add_snapped(snapped.snapped[i], snapped.snapped_from[i]);
         m_last.nodes_snapped += snapped.snapped.size();
+        m_last.nodes_partly_snapped += snapped.partly;
         m_last.nodes_refused += snapped.refused.size();
         touched = snapped.snapped;
         for (auto& refusal : snapped.refused) m_last.refusals.push_back(std::move(refusal));
@@ -280,6 +295,9 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         touched.push_back(copy);
         if (m_marks.snapped(original)) m_marks.add_snapped(copy, m_marks.selection_position(mesh, original));
     }
+    for (const FaceId f : dissected->opened)
+        for (const VertexId v : mesh.face_simplex(f).vertices())
+            m_last.incision_error = std::max(m_last.incision_error, distance_to_recent_sweeps(mesh.deformed(v), sweep_index));
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
     m_last.seconds_dissect += seconds_since(phase);

@@ -1,14 +1,16 @@
-// The snap cutter's step latency on real meshes (issue 15): a 20-sample curved cut through the
-// femur's shaft, the same path relative to the bounding box on each mesh, every step one
-// SnapCutSession::cut (select, snap, dissect, remove degeneracies, loose pieces). Not a Google
+// The snap cutter's step latency on real meshes (issue 15): the 20-sample curved cut through the
+// femur's shaft of tests/data/paths/femur-shaft.path, on each mesh (the femur at several
+// resolutions: the same shape), every step one SnapCutSession::cut (select, snap, dissect, remove
+// degeneracies, loose pieces). Not a Google
 // Benchmark: the figures are the distribution of the steps (median, p99, per phase) over
 // several runs of the cut on fresh copies, and their ratio between the meshes - the peer is the
 // small femur, as a step must cost the same on a mesh 6 times larger.
 //
-//   snapcut_latency NAME=MESH.ele [NAME=MESH.ele ...]     the first is the peer of the others
+//   snapcut_latency PATH NAME=MESH.ele [NAME=MESH.ele ...]     the first mesh is the peer of the others
 //
 // stdout: JSON lines (CONTRIBUTING.md "Benchmarks"); stderr: a table per mesh.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +21,7 @@
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin_host.hpp"
+#include "sxk/tool_path.hpp"
 
 namespace {
 
@@ -37,42 +40,6 @@ const sxk::degeneracy::DegeneracyService* degeneracy() {
     return host.service<sxk::degeneracy::DegeneracyService>().value();
 }
 
-struct Box {
-    Point low{}, high{};
-};
-
-Box box_of(const Mesh& mesh) {
-    Box box{mesh.reference(0), mesh.reference(0)};
-    for (sxk::VertexId v = 0; v < mesh.vertex_count(); ++v)
-        for (std::size_t k = 0; k < 3; ++k) {
-            box.low[k] = std::min(box.low[k], mesh.reference(v)[k]);
-            box.high[k] = std::max(box.high[k], mesh.reference(v)[k]);
-        }
-    return box;
-}
-
-// The femur stands along z. The blade lies across the shaft (along y, longer than the bone is
-// wide) a little above mid-height, and sweeps through it along x in 19 movements, rising and
-// turning a little as it goes: a curved cut through the whole shaft.
-std::vector<Scalpel> shaft_cut(const Box& box) {
-    const Point size{box.high[0] - box.low[0], box.high[1] - box.low[1], box.high[2] - box.low[2]};
-    const Point centre{(box.low[0] + box.high[0]) / 2, (box.low[1] + box.high[1]) / 2,
-                       (box.low[2] + box.high[2]) / 2};
-    std::vector<Scalpel> path;
-    for (int i = 0; i < 20; ++i) {
-        const double s = i / 19.0;
-        const double x = centre[0] + (s - 0.5) * 1.4 * size[0];
-        const double z = centre[2] + 0.02 * size[2] + 0.03 * size[2] * std::sin(3.0 * s);
-        const double turn = 0.2 * (s - 0.5);  // radians, about z
-        const double half = 0.8 * size[1];
-        Scalpel scalpel;
-        scalpel.tip = {x - half * std::sin(turn), centre[1] - half * std::cos(turn), z - 0.01 * size[2]};
-        scalpel.handle = {x + half * std::sin(turn), centre[1] + half * std::cos(turn), z + 0.01 * size[2]};
-        path.push_back(scalpel);
-    }
-    return path;
-}
-
 double percentile(std::vector<double> values, double p) {
     std::sort(values.begin(), values.end());
     const auto index = static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size()))) - 1;
@@ -84,16 +51,17 @@ struct Figures {
     std::size_t elements = 0;
     double median = 0, p99 = 0, max = 0;
     double select = 0, snap = 0, dissect = 0, degeneracy = 0, pieces = 0;  // medians, ms
+    double select99 = 0, snap99 = 0, dissect99 = 0, degeneracy99 = 0, pieces99 = 0;  // p99, ms
+    std::size_t cutting_steps = 0;
     double index_build = 0;  // s
     std::size_t dissected = 0;
     long long new_elements = 0;
 };
 
-Figures measure(const std::string& name, const Mesh& original) {
+Figures measure(const std::string& name, const Mesh& original, const std::vector<Scalpel>& path) {
     Figures f;
     f.name = name;
     f.elements = original.element_count();
-    const std::vector<Scalpel> path = shaft_cut(box_of(original));
     std::vector<double> step, select, snap, dissect, degeneracy_ms, pieces;
     for (int run = 0; run < runs; ++run) {
         Mesh mesh = original;
@@ -105,7 +73,7 @@ Figures measure(const std::string& name, const Mesh& original) {
             if (auto stepped = session->cut(scalpel); !stepped) throw std::runtime_error(stepped.reason());
             const auto& r = session->last_step();
             dissected += r.faces_dissected;
-            if (r.sweeps == 0) continue;  // the first pose only places the scalpel
+            if (r.edges_hit == 0) continue;  // steps that cut: the others only move the scalpel
             step.push_back(r.seconds * 1e3);
             select.push_back(r.seconds_select * 1e3);
             snap.push_back(r.seconds_snap * 1e3);
@@ -125,11 +93,19 @@ Figures measure(const std::string& name, const Mesh& original) {
     f.dissect = percentile(dissect, 0.5);
     f.degeneracy = percentile(degeneracy_ms, 0.5);
     f.pieces = percentile(pieces, 0.5);
+    f.select99 = percentile(select, 0.99);
+    f.snap99 = percentile(snap, 0.99);
+    f.dissect99 = percentile(dissect, 0.99);
+    f.degeneracy99 = percentile(degeneracy_ms, 0.99);
+    f.pieces99 = percentile(pieces, 0.99);
+    f.cutting_steps = step.size() / runs;
     std::fprintf(stderr,
-                 "%s (%zu tets): step median %.3f ms, p99 %.3f, max %.3f; phases (medians) select %.3f, snap %.3f, "
-                 "dissect %.3f, degeneracy %.3f, pieces %.3f; %zu faces dissected, %+lld elements; index %.2f s\n",
-                 name.c_str(), f.elements, f.median, f.p99, f.max, f.select, f.snap, f.dissect, f.degeneracy,
-                 f.pieces, f.dissected, f.new_elements, f.index_build);
+                 "%s (%zu tets): %zu cutting steps, median %.3f ms, p99 %.3f, max %.3f; phases median/p99: select "
+                 "%.3f/%.3f, snap %.3f/%.3f, dissect %.3f/%.3f, degeneracy %.3f/%.3f, pieces %.3f/%.3f; %zu faces "
+                 "dissected, %+lld elements; index %.2f s\n",
+                 name.c_str(), f.elements, f.cutting_steps, f.median, f.p99, f.max, f.select, f.select99, f.snap,
+                 f.snap99, f.dissect, f.dissect99, f.degeneracy, f.degeneracy99, f.pieces, f.pieces99, f.dissected,
+                 f.new_elements, f.index_build);
     return f;
 }
 
@@ -143,19 +119,25 @@ void line(const std::string& name, const char* unit, double ours, double peer, c
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: snapcut_latency NAME=MESH.ele [NAME=MESH.ele ...]\n");
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: snapcut_latency PATH NAME=MESH.ele [NAME=MESH.ele ...]\n");
         return 2;
     }
     try {
+        const std::array<int, 1> columns{6};
+        std::vector<Scalpel> path;
+        for (const sxk::ToolSample& sample : sxk::read_tool_path(argv[1], columns).samples) {
+            const auto& v = sample.values;
+            path.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+        }
         std::vector<Figures> all;
-        for (int i = 1; i < argc; ++i) {
+        for (int i = 2; i < argc; ++i) {
             const std::string arg = argv[i];
             const auto equals = arg.find('=');
             const std::string name = arg.substr(0, equals), file = arg.substr(equals + 1);
             std::fprintf(stderr, "snapcut_latency: reading %s\n", file.c_str());
             const Mesh mesh = sxk::read_mesh(file);
-            all.push_back(measure(name, mesh));
+            all.push_back(measure(name, mesh, path));
         }
         const Figures& peer = all.front();
         for (const Figures& f : all) {
@@ -167,6 +149,8 @@ int main(int argc, char** argv) {
             line(what + ": dissect (median)", "ms", f.dissect, peer.dissect, peer.name);
             line(what + ": degeneracy removal (median)", "ms", f.degeneracy, peer.degeneracy, peer.name);
             line(what + ": loose pieces (median)", "ms", f.pieces, peer.pieces, peer.name);
+            line(what + ": loose pieces (p99)", "ms", f.pieces99, peer.pieces99, peer.name);
+            line(what + ": degeneracy removal (p99)", "ms", f.degeneracy99, peer.degeneracy99, peer.name);
             line("snap cut on " + f.name + ": new elements per dissected face", "elements",
                  f.dissected ? double(f.new_elements) / double(f.dissected) : 0, 17, "state-machine subdivision (up to)");
         }

@@ -32,9 +32,11 @@
 #include "degeneracy_plugin.hpp"
 #include "simulation.hpp"
 #include "snap_cut.hpp"
+#include "sxk/components.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin_host.hpp"
+#include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
 
 namespace {
@@ -159,12 +161,14 @@ std::size_t incision_pieces(const Mesh& mesh, int label) {
     return roots.size();
 }
 
-const std::vector<std::string> cube_loads{"--fix", "y<0.001", "--force", "y>7.999:0,2000,0",
-                                          "--E",   "1e6",     "--nu",    "0.25", "--tol", "1e-3"};
+const std::vector<std::string> cube_loads{"--fix", "y<0.001", "--force", "y>7.999:0,2000,0", "--E", "1e6",
+                                          "--nu",  "0.25",    "--tol",   "1e-3", "--stop", "external"};
 
 // The CG iterations to bring the body back to rest after the cut: the simulation settled before
-// the cut, the cut made without relaxing, then one relaxation from the pre-cut displacements (the
-// thesis' "iterations needed to compute the deformation caused by the cut").
+// the cut, the cut made without relaxing, the pieces it cut loose held on a face (as the thesis
+// fixes "all unfixed components"; a free piece makes the problem singular), then one relaxation
+// from the pre-cut displacements (the thesis' "iterations needed to compute the deformation caused
+// by the cut").
 std::size_t iterations_after_cut(bool remove_degeneracies, Mesh* keep) {
     Mesh mesh = sxk::make_kuhn_cube(8).value();
     auto simulation = sxk::elasticity::simulate(mesh, cube_loads).value();
@@ -172,6 +176,10 @@ std::size_t iterations_after_cut(bool remove_degeneracies, Mesh* keep) {
     sxk::snapcut::Options options;
     options.remove_degeneracies = remove_degeneracies;
     (void)cut(mesh, diagonal_cut(16), options, {degeneracy(), nullptr});
+    const sxk::Components components = sxk::connected_components(mesh);
+    std::vector<std::vector<sxk::ElementId>> pieces(components.count);
+    for (const sxk::ElementId t : sxk::elements(mesh)) pieces[components.element_component[t]].push_back(t);
+    for (const auto& piece : pieces) (void)simulation->hold_piece(piece).value();  // held ones are left alone
     const auto relaxed = simulation->relax(20000).value();
     if (keep) *keep = mesh;
     return relaxed.converged ? relaxed.iterations : 20000;

