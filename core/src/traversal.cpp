@@ -46,4 +46,10 @@ std::vector<ElementId> star(const Mesh& mesh, VertexId v) {
     return out;
 }
 
+std::size_t vertices_in_elements(const Mesh& mesh) {
+    std::size_t count = 0;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) count += mesh.vertex_element(v) != invalid_id;
+    return count;
+}
+
 }  // namespace sxk

@@ -27,12 +27,6 @@ void sort_unique(std::vector<ElementId>& ids) {
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
 
-std::size_t vertices_in_elements(const Mesh& mesh) {
-    std::size_t n = 0;
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) n += mesh.vertex_element(v) != invalid_id;
-    return n;
-}
-
 std::optional<Refusal> check(const Mesh& mesh, const Options& options) {
     if (!(options.aspect_ratio > 0 && options.aspect_ratio < 1))
         return Refusal{RefusalCode::bad_argument,

@@ -7,12 +7,6 @@
 
 namespace sxk::snapcut {
 
-std::size_t vertices_in_elements(const Mesh& mesh) {
-    std::size_t count = 0;
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) count += mesh.vertex_element(v) != invalid_id;
-    return count;
-}
-
 nlohmann::ordered_json to_json(const CutStepReport& r) {
     nlohmann::ordered_json json;
     json["sweeps"] = r.sweeps;

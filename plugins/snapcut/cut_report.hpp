@@ -35,9 +35,6 @@ struct ReplayRecord {
     std::size_t vertices_before = 0, vertices_after = 0;  // vertices in some element
 };
 
-// Vertices in some element (O(n): for reports, not for a step).
-std::size_t vertices_in_elements(const Mesh& mesh);
-
 nlohmann::ordered_json to_json(const CutStepReport& report);
 nlohmann::ordered_json to_json(const Options& options, bool degeneracy_service);
 nlohmann::ordered_json to_json(const ReplayRecord& record);

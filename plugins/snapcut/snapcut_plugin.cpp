@@ -23,6 +23,7 @@
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
 #include "sxk/tool_path.hpp"
+#include "sxk/traversal.hpp"
 
 extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_snapcut();
 

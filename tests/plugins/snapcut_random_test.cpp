@@ -2,7 +2,7 @@
 // tilts as it goes) on the thesis' cube, a Delaunay mesh of random points and the Delaunay
 // cylinder; after every step the mesh is valid, with no element inverted or flat in either
 // position set, and undoing every step gives back the input exactly. SXK_SEED replays a run.
-// About 10^4 steps in all (the real meshes' test, tests/real, adds the femur).
+// 10,980 steps in all (80 + 50 + 50 paths of 61 samples). The femur is cut in tests/real.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,18 +89,18 @@ void check_random_cuts(const char* name, const Mesh& original, int paths, int st
     EXPECT_GT(dissected, 0u);
 }
 
-TEST(SnapCutRandom, ThesisCube) { check_random_cuts("SnapCutRandom.ThesisCube", make_kuhn_cube(8).value(), 60, 60); }
+TEST(SnapCutRandom, ThesisCube) { check_random_cuts("SnapCutRandom.ThesisCube", make_kuhn_cube(8).value(), 80, 60); }
 
 TEST(SnapCutRandom, DelaunayOfRandomPoints) {
     std::mt19937_64 random(seed_for("SnapCutRandom.DelaunayOfRandomPoints/points"));
     std::uniform_real_distribution<double> coordinate(0, 1);
     std::vector<Point> points;
     for (int i = 0; i < 600; ++i) points.push_back({coordinate(random), coordinate(random), coordinate(random)});
-    check_random_cuts("SnapCutRandom.DelaunayOfRandomPoints", make_delaunay(points).value(), 40, 60);
+    check_random_cuts("SnapCutRandom.DelaunayOfRandomPoints", make_delaunay(points).value(), 50, 60);
 }
 
 TEST(SnapCutRandom, DelaunayCylinder) {
-    check_random_cuts("SnapCutRandom.DelaunayCylinder", make_delaunay(cylinder_cloud(4, 13)).value(), 40, 60);
+    check_random_cuts("SnapCutRandom.DelaunayCylinder", make_delaunay(cylinder_cloud(4, 13)).value(), 50, 60);
 }
 
 }  // namespace

@@ -16,7 +16,8 @@
 //             them.
 //
 //   snapcut_thesis OUTDIR     writes OUTDIR/{cube,cube-cut,cube-cut-raw,cylinder-cut}.mesh for
-//                             pictures (tools/bench/run renders them)
+//                             pictures (tools/bench/run renders them; the cut cubes pulled open
+//                             by a thousand times the load)
 //
 // stdout: one JSON line per figure (CONTRIBUTING.md "Benchmarks"), peer = the thesis' figure.
 #include <array>
@@ -116,12 +117,6 @@ Totals cut(Mesh& mesh, const std::vector<Scalpel>& path, const sxk::snapcut::Opt
     return totals;
 }
 
-std::size_t vertices_in_elements(const Mesh& mesh) {
-    std::size_t count = 0;
-    for (sxk::VertexId v = 0; v < mesh.vertex_count(); ++v) count += mesh.vertex_element(v) != sxk::invalid_id;
-    return count;
-}
-
 // Elements whose aspect ratio is below the thesis' threshold 0.01, in the reference positions.
 std::size_t degenerates(const Mesh& mesh) {
     std::size_t count = 0;
@@ -185,6 +180,21 @@ std::size_t iterations_after_cut(bool remove_degeneracies, Mesh* keep) {
     return relaxed.converged ? relaxed.iterations : 20000;
 }
 
+// The cut mesh pulled open for the pictures: the same loads a thousand times larger (a 3% stretch,
+// linear elasticity still), relaxed, written with its deformed positions.
+void write_opened(const Mesh& cut_mesh, const std::filesystem::path& file) {
+    Mesh mesh = cut_mesh;
+    std::vector<std::string> loads = cube_loads;
+    loads[3] = "y>7.999:0,2000000,0";
+    auto simulation = sxk::elasticity::simulate(mesh, loads).value();
+    const sxk::Components components = sxk::connected_components(mesh);
+    std::vector<std::vector<sxk::ElementId>> pieces(components.count);
+    for (const sxk::ElementId t : sxk::elements(mesh)) pieces[components.element_component[t]].push_back(t);
+    for (const auto& piece : pieces) (void)simulation->hold_piece(piece).value();
+    (void)simulation->relax(20000).value();
+    sxk::write_mesh(mesh, file, {.drop_unused_vertices = true});
+}
+
 void cube_experiment(const std::filesystem::path& out) {
     Mesh cube = sxk::make_kuhn_cube(8).value();
     sxk::write_mesh(cube, out / "cube.mesh");
@@ -192,17 +202,17 @@ void cube_experiment(const std::filesystem::path& out) {
     sxk::snapcut::Options no_removal;
     no_removal.remove_degeneracies = false;
     const Totals snapped = cut(raw, diagonal_cut(16), no_removal, {degeneracy(), nullptr});
-    sxk::write_mesh(raw, out / "cube-cut-raw.mesh", {.drop_unused_vertices = true});
+    write_opened(raw, out / "cube-cut-raw.mesh");
     Mesh mesh = cube;
     const Totals t = cut(mesh, diagonal_cut(16), {}, {degeneracy(), nullptr});
-    sxk::write_mesh(mesh, out / "cube-cut.mesh", {.drop_unused_vertices = true});
+    write_opened(mesh, out / "cube-cut.mesh");
     line("cube: faces dissected", "faces", double(t.dissected), 108, "none");
     line("cube: degenerates made by snapping (aspect < 0.01)", "elements", double(degenerates(raw)), 143, "lower");
     line("cube: degenerates found by the removal", "elements", double(t.degenerate), 143, "lower");
     line("cube: collapses", "collapses", double(t.collapses), 99, "lower");
     line("cube: elements cut free (cracks)", "elements", double(t.cut_free), 13, "lower");
     line("cube: final tetrahedra", "elements", double(mesh.element_count()), 3034, "none");
-    line("cube: final nodes", "vertices", double(vertices_in_elements(mesh)), 823, "none");
+    line("cube: final nodes", "vertices", double(sxk::vertices_in_elements(mesh)), 823, "none");
     line("cube: nodes snapped", "vertices", double(t.snapped), 0, "none");
     line("cube: snaps refused (would invert or flatten)", "vertices", double(t.refused), 0, "lower");
     line("cube: cut time, all 16 steps", "ms", t.seconds * 1e3, 0, "lower");

@@ -25,4 +25,8 @@ SXK_API std::vector<ElementId> star(const Mesh& mesh, VertexId v);
 SXK_API void collect_star(const Mesh& mesh, VertexId v, ElementId start,
                           std::vector<ElementId>& out);
 
+// The vertices in some element (vertex ids the edits left in none, as collapses leave theirs, are
+// not counted). O(vertices): for reports, not for a tool's step.
+SXK_API std::size_t vertices_in_elements(const Mesh& mesh);
+
 }  // namespace sxk
