@@ -84,5 +84,24 @@ TEST(MakeKuhnCube, RefusesBadSizes) {
     EXPECT_FALSE(make_kuhn_cube(2, std::numeric_limits<double>::infinity()).ok());
 }
 
+
+TEST(MakeDelaunay, TetrahedralisesACloudAndRefusesWhatSpansNoTetrahedron) {
+    const std::vector<Point> cloud = cylinder_cloud(4, 13);
+    ASSERT_EQ(cloud.size(), 896u);  // 14 discs of 1 + 6 + 13 + 19 + 25 points
+    const Mesh mesh = make_delaunay(cloud).value();
+    EXPECT_EQ(mesh.vertex_count(), 896u);
+    EXPECT_GT(mesh.element_count(), 3000u);
+    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
+    EXPECT_TRUE(valid) << valid.reason();
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) EXPECT_NE(mesh.vertex_element(v), invalid_id);
+
+    const std::vector<Point> three{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    EXPECT_EQ(make_delaunay(three).reason(), "make_delaunay: 3 points; a tetrahedron needs 4");
+    const std::vector<Point> flat{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.2, 0}};
+    EXPECT_EQ(make_delaunay(flat).reason(), "make_delaunay: the points are coplanar");
+    const std::vector<Point> nan{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, std::nan("")}};
+    EXPECT_EQ(make_delaunay(nan).reason(), "make_delaunay: point 3 is not finite");
+}
+
 }  // namespace
 }  // namespace sxk

@@ -83,5 +83,22 @@ TEST(Predicates, CompareDistancesToAPlaneIsExact) {
               Sign::zero);
 }
 
+
+TEST(Predicates, SegmentMeetsTriangleExactlyOnItsClosure) {
+    const Point p{0, 0, 0}, q{1, 0, 0}, r{0, 1, 0};
+    EXPECT_TRUE(segment_meets_triangle({0.2, 0.2, -1}, {0.2, 0.2, 1}, p, q, r));   // through the inside
+    EXPECT_TRUE(segment_meets_triangle({0, 0, -1}, {0, 0, 1}, p, q, r));           // through a corner
+    EXPECT_TRUE(segment_meets_triangle({0.5, 0.5, -1}, {0.5, 0.5, 1}, p, q, r));   // through the hypotenuse
+    EXPECT_FALSE(segment_meets_triangle({0.5, 0.5 + 1e-16, -1}, {0.5, 0.5 + 1e-16, 1}, p, q, r));
+    EXPECT_TRUE(segment_meets_triangle({0.2, 0.2, 0}, {0.2, 0.2, 1}, p, q, r));    // ends on it
+    EXPECT_FALSE(segment_meets_triangle({0.2, 0.2, 1e-300}, {0.2, 0.2, 1}, p, q, r));
+    EXPECT_TRUE(segment_meets_triangle({-1, 0.5, 0}, {2, 0.5, 0}, p, q, r));       // in its plane
+    EXPECT_TRUE(segment_meets_triangle({0.1, 0.1, 0}, {0.1, 0.1, 0}, p, q, r));    // a point on it
+    // collinear corners: the segment between the two farthest
+    const Point a{0, 0, 0}, b{2, 0, 0}, c{1, 0, 0};
+    EXPECT_TRUE(segment_meets_triangle({1.5, -1, 0}, {1.5, 1, 0}, a, c, b));
+    EXPECT_FALSE(segment_meets_triangle({2.5, -1, 0}, {2.5, 1, 0}, a, c, b));
+}
+
 }  // namespace
 }  // namespace sxk
