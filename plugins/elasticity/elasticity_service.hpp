@@ -39,7 +39,8 @@ struct RelaxReport {
 class Simulation {
 public:
     virtual ~Simulation() = default;
-    // At most `iterations` more CG iterations from the current displacements (a warm start), then
+    // At most `iterations` more CG iterations (and at most the options' --max-iterations) from the
+    // current displacements (a warm start), then
     // the deformed positions reference + u written into the mesh (one move_vertices: watchers and
     // an open EditJournal step see it) unless they would invert or flatten an element. Refuses
     // when the body cannot be brought in step with the mesh (an element flat at rest: remove

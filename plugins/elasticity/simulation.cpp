@@ -1,5 +1,6 @@
 // The elasticity service's simulation (elasticity_service.hpp): a body from `sxk deform`'s
 // options, attached to its mesh, relaxed a bounded number of CG iterations per call.
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -25,8 +26,10 @@ public:
 
     Outcome<RelaxReport> relax(std::size_t iterations) override {
         const auto start = std::chrono::steady_clock::now();
+        // at most `iterations`, and never more than the options' --max-iterations
         SolveOptions options = m_options;
-        options.max_iterations = iterations;
+        options.max_iterations = std::min(iterations, m_options.max_iterations);
+        iterations = options.max_iterations;
         // a fresh relaxation each call: its residual starts from the current displacements (the
         // warm start), and the body has heard the edits since the last call (refresh)
         RelaxReport result;
