@@ -46,6 +46,16 @@ std::vector<ElementId> star(const Mesh& mesh, VertexId v) {
     return out;
 }
 
+std::vector<ElementId> stars_of(const Mesh& mesh, std::span<const VertexId> vertices) {
+    std::vector<ElementId> found;
+    for (const VertexId v : vertices)
+        if (v < mesh.vertex_count() && mesh.vertex_element(v) != invalid_id)
+            collect_star(mesh, v, mesh.vertex_element(v), found);
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+}
+
 std::size_t vertices_in_elements(const Mesh& mesh) {
     std::size_t count = 0;
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) count += mesh.vertex_element(v) != invalid_id;

@@ -158,15 +158,7 @@ SnapReport snap_to_plane(Mesh& mesh, const Plane& plane, double max_distance) {
 }
 
 std::vector<ElementId> elements_around(const Mesh& mesh, const std::vector<VertexId>& vertices) {
-    std::vector<ElementId> found;
-    for (const VertexId v : vertices) {
-        if (v >= mesh.vertex_count() || mesh.vertex_element(v) == invalid_id)
-            continue;
-        collect_star(mesh, v, mesh.vertex_element(v), found);
-    }
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
-    return found;
+    return stars_of(mesh, vertices);
 }
 
 }  // namespace sxk::degeneracy

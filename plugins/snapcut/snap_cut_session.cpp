@@ -28,17 +28,6 @@ double length(const Point& a, const Point& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
-// The elements around `vertices` that are still there, sorted, no repeats.
-std::vector<ElementId> elements_around(const Mesh& mesh, std::span<const VertexId> vertices) {
-    std::vector<ElementId> around;
-    for (const VertexId v : vertices)
-        if (v < mesh.vertex_count() && mesh.vertex_element(v) != invalid_id)
-            collect_star(mesh, v, mesh.vertex_element(v), around);
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
-    return around;
-}
-
 // The interior faces labelled `label` that contain a corner of `faces`, and `faces` themselves,
 // sorted by vertices, each once.
 std::vector<Simplex> labelled_faces_around(const Mesh& mesh, std::span<const Simplex> faces, int label) {
@@ -233,7 +222,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     // the sweep (CutMarks::snapped_near). So the stars of those are candidates too.
     auto phase = Clock::now();
     std::vector<ElementId> candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c).elements;
-    const std::vector<ElementId> around = elements_around(mesh, m_marks.snapped_near(sweep));
+    const std::vector<ElementId> around = stars_of(mesh, m_marks.snapped_near(sweep));
     candidates.insert(candidates.end(), around.begin(), around.end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
@@ -308,7 +297,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         degeneracy::Options removal;
         removal.aspect_ratio = m_options.aspect_ratio;
         removal.large_angle = m_options.large_angle;
-        const std::vector<ElementId> around = elements_around(mesh, touched);
+        const std::vector<ElementId> around = stars_of(mesh, touched);
         auto removed = m_services.degeneracy->remove_among(mesh, around, removal);
         if (!removed) return removed.refusal().prefixed("snapcut: degeneracy removal: ");
         m_last.degeneracy_removal_ran = true;
@@ -332,7 +321,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
 
     // 5. pieces the cut separated, found from both sides of the cut
     phase = Clock::now();
-    std::vector<ElementId> seeds = elements_around(mesh, touched);
+    std::vector<ElementId> seeds = stars_of(mesh, touched);
     for (const FaceId f : dissected->opened)
         if (mesh.is_face(f)) seeds.push_back(mesh.face_element(f));
     LoosePieces pieces = find_loose_pieces(mesh, seeds);

@@ -156,6 +156,15 @@ std::size_t incision_pieces(const Mesh& mesh, int label) {
     return roots.size();
 }
 
+// Every component not held yet is held on a face (hold_piece leaves held ones alone): a free
+// piece makes the problem singular.
+void hold_every_piece(const Mesh& mesh, sxk::elasticity::Simulation& simulation) {
+    const sxk::Components components = sxk::connected_components(mesh);
+    std::vector<std::vector<sxk::ElementId>> pieces(components.count);
+    for (const sxk::ElementId t : sxk::elements(mesh)) pieces[components.element_component[t]].push_back(t);
+    for (const auto& piece : pieces) (void)simulation.hold_piece(piece).value();
+}
+
 const std::vector<std::string> cube_loads{"--fix", "y<0.001", "--force", "y>7.999:0,2000,0", "--E", "1e6",
                                           "--nu",  "0.25",    "--tol",   "1e-3", "--stop", "external"};
 
@@ -171,10 +180,7 @@ std::size_t iterations_after_cut(bool remove_degeneracies, Mesh* keep) {
     sxk::snapcut::Options options;
     options.remove_degeneracies = remove_degeneracies;
     (void)cut(mesh, diagonal_cut(16), options, {degeneracy(), nullptr});
-    const sxk::Components components = sxk::connected_components(mesh);
-    std::vector<std::vector<sxk::ElementId>> pieces(components.count);
-    for (const sxk::ElementId t : sxk::elements(mesh)) pieces[components.element_component[t]].push_back(t);
-    for (const auto& piece : pieces) (void)simulation->hold_piece(piece).value();  // held ones are left alone
+    hold_every_piece(mesh, *simulation);
     const auto relaxed = simulation->relax(20000).value();
     if (keep) *keep = mesh;
     return relaxed.converged ? relaxed.iterations : 20000;
@@ -187,10 +193,7 @@ void write_opened(const Mesh& cut_mesh, const std::filesystem::path& file) {
     std::vector<std::string> loads = cube_loads;
     loads[3] = "y>7.999:0,2000000,0";
     auto simulation = sxk::elasticity::simulate(mesh, loads).value();
-    const sxk::Components components = sxk::connected_components(mesh);
-    std::vector<std::vector<sxk::ElementId>> pieces(components.count);
-    for (const sxk::ElementId t : sxk::elements(mesh)) pieces[components.element_component[t]].push_back(t);
-    for (const auto& piece : pieces) (void)simulation->hold_piece(piece).value();
+    hold_every_piece(mesh, *simulation);
     (void)simulation->relax(20000).value();
     sxk::write_mesh(mesh, file, {.drop_unused_vertices = true});
 }

@@ -1,6 +1,7 @@
 // Traversal of the connectivity (thesis §7.2).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "sxk/config.hpp"
@@ -24,6 +25,10 @@ SXK_API std::vector<ElementId> star(const Mesh& mesh, VertexId v);
 // other elements: only the walk's own are listed once each).
 SXK_API void collect_star(const Mesh& mesh, VertexId v, ElementId start,
                           std::vector<ElementId>& out);
+
+// The elements of the stars of `vertices` (vertices in no element or out of range skipped),
+// sorted, each once: what an edit that moved or split those vertices touched.
+SXK_API std::vector<ElementId> stars_of(const Mesh& mesh, std::span<const VertexId> vertices);
 
 // The vertices in some element (vertex ids the edits left in none, as collapses leave theirs, are
 // not counted). O(vertices): for reports, not for a tool's step.
