@@ -341,11 +341,13 @@ Outcome<Done> Mesh::assign_elements(std::span<const Simplex> simplexes,
         m_faces.clear();
         m_boundary.clear();
         std::fill(m_vertex_element.begin(), m_vertex_element.end(), invalid_id);
+        m_vertices_in_elements = 0;
         m_free_element = invalid_id;
         m_free_face = invalid_id;
         m_element_count = 0;
         throw;
     }
+    recount_anchors();
     m_free_element = invalid_id;
     m_free_face = invalid_id;
     m_element_count = n;
@@ -407,6 +409,7 @@ Outcome<Done> Mesh::assign_elements_unchecked(std::span<const Simplex> simplexes
         }
         link_neighbors(t);
     }
+    recount_anchors();
     for (Watcher* w : m_watchers) w->init(*this);
     return Done{};
 }

@@ -238,10 +238,18 @@ struct BoxTree {
         clear();
         std::uint32_t largest = 0;
         for (const Value& v : values) largest = std::max(largest, v.second);
+        // room for the first edits' new ids and entries: growing an exactly sized array copies
+        // all of it into fresh pages (40 MB of entries at 1.2M elements), and a cutting session's
+        // first steps paid that, 0.2 s per session on the 1.2M femur (docs/performance.md
+        // "snapcut")
+        const auto headroom = [](std::size_t n) { return n + n / 8 + 64; };
         if (!values.empty()) {
+            entry_of.reserve(headroom(static_cast<std::size_t>(largest) + 1));
+            next_member.reserve(headroom(static_cast<std::size_t>(largest) + 1));
             entry_of.assign(static_cast<std::size_t>(largest) + 1, none);
             next_member.assign(static_cast<std::size_t>(largest) + 1, none);
         }
+        entries.reserve(headroom(values.size()));
         entries.resize(values.size());
         for (std::uint32_t key = 0; key < values.size(); ++key) {
             const std::uint32_t id = values[key].second;

@@ -27,6 +27,7 @@ Mesh::Mesh(const Mesh& other)
       m_reference(other.m_reference),
       m_deformed(other.m_deformed),
       m_vertex_element(other.m_vertex_element),
+      m_vertices_in_elements(other.m_vertices_in_elements),
       m_elements(other.m_elements),
       m_faces(other.m_faces),
       m_free_element(other.m_free_element),
@@ -49,6 +50,11 @@ Mesh& Mesh::operator=(const Mesh& other) {
         for (Watcher* w : m_watchers) w->init(*this);
     }
     return *this;
+}
+
+void Mesh::recount_anchors() {
+    m_vertices_in_elements = static_cast<std::size_t>(
+        std::count_if(m_vertex_element.begin(), m_vertex_element.end(), [](ElementId a) { return a != invalid_id; }));
 }
 
 Mesh::Mesh(Mesh&& other) noexcept = default;

@@ -56,10 +56,4 @@ std::vector<ElementId> stars_of(const Mesh& mesh, std::span<const VertexId> vert
     return found;
 }
 
-std::size_t vertices_in_elements(const Mesh& mesh) {
-    std::size_t count = 0;
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) count += mesh.vertex_element(v) != invalid_id;
-    return count;
-}
-
 }  // namespace sxk

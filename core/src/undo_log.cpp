@@ -131,6 +131,7 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
                     mesh.m_faces[entry.id] = entry.record;
                 } else if constexpr (std::is_same_v<E, AnchorWas>) {
                     if (inverse) inverse->anchor(mesh, entry.vertex);
+                    mesh.count_anchor(mesh.m_vertex_element[entry.vertex], entry.anchor);
                     mesh.m_vertex_element[entry.vertex] = entry.anchor;
                 } else if constexpr (std::is_same_v<E, PoolsWere>) {
                     if (inverse) inverse->pools(mesh);
@@ -171,6 +172,7 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
                     if (inverse) inverse->vertex_removed(mesh);
                     mesh.m_reference.pop_back();
                     mesh.m_deformed.pop_back();
+                    mesh.count_anchor(mesh.m_vertex_element.back(), invalid_id);
                     mesh.m_vertex_element.pop_back();
                     for (detail::AttributeColumn& a : mesh.m_attributes)
                         a.values.resize(a.values.size() - static_cast<std::size_t>(a.components));
@@ -179,6 +181,7 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
                     mesh.m_reference.push_back(entry.reference);
                     mesh.m_deformed.push_back(entry.deformed);
                     mesh.m_vertex_element.push_back(entry.anchor);
+                    mesh.count_anchor(invalid_id, entry.anchor);
                     // a vertex back at an id a watcher may have seen another vertex at (one the
                     // step added and a rollback took away): its position is news, told as a move
                     if (tell) moved.push_back(static_cast<VertexId>(mesh.m_reference.size() - 1));

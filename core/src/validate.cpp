@@ -274,6 +274,13 @@ Outcome<Done> Mesh::validate(const ValidateOptions& options) const {
                                " elements are reachable from element " + std::to_string(a) +
                                "; the mesh is pinched at this vertex)"};
     }
+    // every anchor checked above names an element exactly when its vertex is in one
+    const auto in_elements = static_cast<std::size_t>(
+        std::count_if(incidence.begin(), incidence.end(), [](auto count) { return count != 0; }));
+    if (m_vertices_in_elements != in_elements)
+        return Refusal{RefusalCode::invalid_mesh, "vertex count: " + std::to_string(m_vertices_in_elements) +
+                                                      " vertices counted in elements, " +
+                                                      std::to_string(in_elements) + " are"};
     if (options.orientation && m_dimension == m_ambient)
         return check_orientation(*this, options.flat_is_invalid);
     return Done{};

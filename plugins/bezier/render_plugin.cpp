@@ -12,6 +12,7 @@
 #include <functional>
 #include <new>
 #include <optional>
+#include <sstream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -29,6 +30,7 @@
 #include "mesh_surface.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
+#include "render_service.hpp"
 #include "sxk/io.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "triangular_patch.hpp"
@@ -627,11 +629,44 @@ public:
     }
 };
 
+// The command's last message line without its "sxk: " (and CLI11's "Run ... --help" line).
+std::string message_of(const std::string& err) {
+    std::string text = err.substr(0, err.find('\n'));
+    if (text.starts_with("sxk: ")) text = text.substr(5);
+    return text.empty() ? "render: no picture" : text;
+}
+
+// RenderService::draw_mesh: the command's own path for a mesh in memory (run_on_mesh).
+Outcome<Done> draw_mesh(const Mesh& mesh, const std::filesystem::path& output,
+                        std::span<const std::string> words) {
+    std::vector<std::string> args{output.string()};
+    args.insert(args.end(), words.begin(), words.end());
+    std::ostringstream out, err;
+    int code = 0;
+    std::optional<CommandOptions> options = parse(args, false, out, err, code);
+    if (!options) return Refusal{RefusalCode::bad_argument, message_of(err.str())};
+    options->input = "mesh";
+    if (refuse_options_for(*options, false, err) || !check_output(options->output, err))
+        return Refusal{RefusalCode::bad_argument, message_of(err.str())};
+    try {
+        if (render_mesh(mesh, *options, std::chrono::steady_clock::now(), out, err) != 0)
+            return Refusal{RefusalCode::not_applicable, message_of(err.str())};
+    } catch (const std::exception& error) {
+        return Refusal{RefusalCode::not_applicable, std::string("render: ") + error.what()};
+    }
+    return Done{};
+}
+
 class BezierPlugin final : public Plugin {
 public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
+    ServiceOffer offer(std::string_view service_id) override {
+        if (service_id == RenderService::service_id) return offer_of(&m_service);
+        return {};
+    }
 
 private:
+    RenderService m_service{&draw_mesh};
     RenderCommand m_render;
     PluginCommand* m_commands[1] = {&m_render};
 };

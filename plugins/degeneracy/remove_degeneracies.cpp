@@ -65,7 +65,7 @@ public:
         const ScopedWatcher watching(m_mesh, m_log);
         Report report;
         report.elements_before = m_mesh.element_count();
-        report.vertices_before = vertices_in_elements(m_mesh);
+        report.vertices_before = m_mesh.vertices_in_elements();
         std::vector<ElementId> list;
         if (m_whole_mesh) {
             list = degenerates_among(candidates);
@@ -139,7 +139,7 @@ public:
             report.remaining_codes.push_back(why.code);
         }
         report.elements_after = m_mesh.element_count();
-        report.vertices_after = vertices_in_elements(m_mesh);
+        report.vertices_after = m_mesh.vertices_in_elements();
         (void)run_step.commit();
         return report;
     }
@@ -259,7 +259,7 @@ private:
         report.cut_free += p.cut_free;
         report.peeled += p.peeled;
         p.elements_after = m_mesh.element_count();
-        p.vertices_after = vertices_in_elements(m_mesh);
+        p.vertices_after = m_mesh.vertices_in_elements();
         measure(p);
         report.passes.push_back(p);
         return next;

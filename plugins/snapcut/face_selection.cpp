@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 
+#include "sxk/locate.hpp"
 #include "sxk/predicates.hpp"
 
 // Boost 1.74's rtree includes headers Boost itself marks deprecated (a #pragma message per
@@ -37,10 +38,22 @@ std::vector<VertexId> CutMarks::snapped_near(const Sweep& sweep) const {
     Position high(std::max({sweep.a[0], sweep.b[0], sweep.c[0]}) + m_reach,
                   std::max({sweep.a[1], sweep.b[1], sweep.c[1]}) + m_reach,
                   std::max({sweep.a[2], sweep.b[2], sweep.c[2]}) + m_reach);
+    // The box around the sweep holds the snapped nodes of a slab as tall as the blade is tilted
+    // (the whole incision's rim on the femur, docs/performance.md "snapcut"); the distance to the
+    // triangle keeps those within reach, with a margin for its rounding.
+    const double reach = m_reach * (1 + 1e-9) + 1e-300;
     std::vector<VertexId> near;
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
-         it != m_tree->tree.qend(); ++it)
-        near.push_back(it->second);
+         it != m_tree->tree.qend(); ++it) {
+        const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
+        const auto w = nearest_on_triangle(sweep.a, sweep.b, sweep.c, p);
+        double d2 = 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double q = w[0] * sweep.a[k] + w[1] * sweep.b[k] + w[2] * sweep.c[k];
+            d2 += (p[k] - q) * (p[k] - q);
+        }
+        if (d2 <= reach * reach) near.push_back(it->second);
+    }
     std::sort(near.begin(), near.end());
     return near;
 }

@@ -1,12 +1,15 @@
 // Pieces a cut separated from the rest of the mesh, found at the cost of the pieces, not of the
 // mesh (a whole-mesh component count, sxk/components.hpp, is O(n) per step).
 //
-// One breadth-first search per seed element (the elements on both sides of the new cut) runs
-// through face neighbours, the searches taking one element each in turn. Two searches that meet
-// are one; a search that runs out of elements before meeting the others has found a whole
-// component: a loose piece. When a single search is left it is the body the pieces came off, and
-// it stops. So the work is about the loose pieces' size times the number of searches, and a cut
-// that separates nothing costs the few steps the searches need to meet around the cut's rim.
+// The seeds (the elements on both sides of the new cut) are first put in groups known connected
+// by their own neighbourhood: face neighbours, and the fans around the edges of their boundary
+// faces; at the rim of a cut both sides lie in one fan. With one group nothing came loose and no
+// search runs. Otherwise one breadth-first search per group runs through face neighbours, the
+// searches taking one element each in turn. Two searches that meet are one; a search that runs
+// out of elements before meeting the others has found a whole component: a loose piece. When a
+// single search is left it is the body the pieces came off, and it stops. So the work is about
+// the seeds' number when nothing comes loose, and the loose pieces' size times the number of
+// searches when something may have.
 //
 //        body (search left running: stops)      ======  the new cut faces
 //      ---------------------------------

@@ -139,6 +139,10 @@ public:
     // One step: the scalpel moves from its last pose to `scalpel` (the first call only places
     // it). ToolSession::step(pose) does the same with scalpel_of(pose).
     Outcome<StepReport> cut(const Scalpel& scalpel);
+    // One step that sweeps exactly the triangle (a, b, c), as a scalpel turning about its handle
+    // a from tip b to tip c would (a path given as swept triangles, docs/formats.md); the scalpel
+    // is at (a, c) afterwards, wherever it was before.
+    Outcome<StepReport> sweep(const Point& a, const Point& b, const Point& c);
     // The report of the last step taken (refused steps included: it says how far they got).
     const CutStepReport& last_step() const { return m_last; }
     const Options& options() const { return m_options; }
@@ -170,6 +174,7 @@ private:
     CutMarks m_marks;
     std::optional<Scalpel> m_scalpel;
     std::optional<Scalpel> m_exact;  // cut()'s scalpel, used by apply instead of the pose's
+    std::optional<Sweep> m_swept;    // sweep()'s triangle, swept by apply instead of a movement
     // per kept step: what to restore when it is taken back
     struct Undo {
         std::optional<Scalpel> scalpel;

@@ -153,6 +153,15 @@ Outcome<StepReport> SnapCutSession::cut(const Scalpel& scalpel) {
     return result;
 }
 
+Outcome<StepReport> SnapCutSession::sweep(const Point& a, const Point& b, const Point& c) {
+    m_swept = Sweep{a, b, c};
+    m_exact = Scalpel{a, c};
+    auto result = step(to_pose(*m_exact));
+    m_exact.reset();
+    m_swept.reset();
+    return result;
+}
+
 void SnapCutSession::step_taken_back() {
     if (m_undo.empty()) return;
     m_marks.restore(m_undo.back().marks);
@@ -163,17 +172,24 @@ void SnapCutSession::step_taken_back() {
 Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     const auto start = Clock::now();
     const Scalpel next = m_exact ? *m_exact : scalpel_of(pose);
-    for (const Point& p : {next.handle, next.tip})
+    for (const Point& p : {next.handle, next.tip, m_swept ? m_swept->b : next.tip})
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
             return Refusal{RefusalCode::bad_argument, "snapcut: the scalpel's coordinates must be finite"};
     m_last = {};
     m_loose.clear();
     Undo undo{m_scalpel, m_marks.checkpoint()};
-    if (m_scalpel) {
-        const Scalpel& was = *m_scalpel;
-        // the movement's sweep: (h, t, t') then (h, t', h'); a sweep with collinear corners (the
-        // scalpel stood still, or slid along itself) sweeps no area and is skipped
-        for (const Sweep& sweep : {Sweep{was.handle, was.tip, next.tip}, Sweep{was.handle, next.tip, next.handle}}) {
+    if (m_scalpel || m_swept) {
+        // the movement's sweep: (h, t, t') then (h, t', h'), or sweep()'s triangle alone; a
+        // sweep with collinear corners (the scalpel stood still, or slid along itself) sweeps no
+        // area and is skipped
+        std::vector<Sweep> sweeps;
+        if (m_swept) {
+            sweeps.push_back(*m_swept);
+        } else {
+            const Scalpel& was = *m_scalpel;
+            sweeps = {Sweep{was.handle, was.tip, next.tip}, Sweep{was.handle, next.tip, next.handle}};
+        }
+        for (const Sweep& sweep : sweeps) {
             if (collinear(sweep.a, sweep.b, sweep.c)) continue;
             if (Outcome<Done> done = cut_sweep(sweep, report); !done) {
                 m_marks.restore(undo.marks);

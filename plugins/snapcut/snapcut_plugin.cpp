@@ -4,7 +4,11 @@
 // the host (Plugin::attach): no plug-in links another.
 #include <algorithm>
 #include <array>
+#include <filesystem>
+#include <cmath>
+#include <cstdio>
 #include <limits>
+#include <numbers>
 #include <memory>
 #include <sstream>
 #include <optional>
@@ -19,6 +23,7 @@
 #include "cut_report.hpp"
 #include "degeneracy_service.hpp"
 #include "elasticity_service.hpp"
+#include "render_service.hpp"
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
@@ -52,8 +57,39 @@ std::vector<std::string> words_of(const std::string& text) {
     return words;
 }
 
+// The camera of --frames, as `sxk render --camera` takes it: the body's deformed bounding box seen
+// from `sxk render`'s default direction (1, -2, 1.2), its circumscribed sphere filling the
+// default 40 degree field of view.
+std::string camera_for(const Mesh& mesh) {
+    Point low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+              std::numeric_limits<double>::infinity()};
+    Point high{-low[0], -low[1], -low[2]};
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        if (mesh.vertex_element(v) != invalid_id)
+            for (std::size_t k = 0; k < 3; ++k) {
+                low[k] = std::min(low[k], mesh.deformed(v)[k]);
+                high[k] = std::max(high[k], mesh.deformed(v)[k]);
+            }
+    const Point from{1, -2, 1.2};
+    const double from_length = std::sqrt(from[0] * from[0] + from[1] * from[1] + from[2] * from[2]);
+    double diagonal = 0;
+    for (std::size_t k = 0; k < 3; ++k) diagonal += (high[k] - low[k]) * (high[k] - low[k]);
+    const double distance = std::max(std::sqrt(diagonal) / 2, 1e-300) / std::sin(20 * std::numbers::pi / 180);
+    std::string text;
+    char number[32];
+    for (std::size_t k = 0; k < 3; ++k) {
+        std::snprintf(number, sizeof number, "%.17g,", (low[k] + high[k]) / 2 + distance * from[k] / from_length);
+        text += number;
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+        std::snprintf(number, sizeof number, "%.17g,", (low[k] + high[k]) / 2);
+        text += number;
+    }
+    return text + "0,0,1";
+}
+
 struct CommandOptions {
-    std::string input, path, output, deform;
+    std::string input, path, output, deform, frames;
     Options cut;
     bool json = false;
     std::string undo;  // "", a count, or "all"
@@ -77,8 +113,8 @@ public:
                      "sxk cut snap");
         app.add_option("IN", options.input, "Tetrahedral mesh")->required();
         app.add_option("PATH", options.path,
-                       "Scalpel path: one sample per line, 'time hx hy hz tx ty tz' (handle, tip; "
-                       "docs/formats.md)")
+                       "Scalpel path: one sample per line, 'time hx hy hz tx ty tz' (handle, tip), or "
+                       "an .obj of the triangles it sweeps, in order, one step each (docs/formats.md)")
             ->required();
         app.add_option("OUT", options.output,
                        "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
@@ -100,6 +136,11 @@ public:
                        "Cut a deforming body: `sxk deform`'s options in one word, e.g. \"--fix z<0.001 "
                        "--force z>7.99:0,0,-50 --E 1e4\" (the elasticity plug-in; the body is solved "
                        "first and relaxed after every step)");
+        app.add_option("--frames", options.frames,
+                       "Write a picture of the mesh per step into folder DIR (made if missing): "
+                       "step-0000.png before the first step, then one per step, cut faces in magenta, "
+                       "one camera for all (the bezier plug-in's renderer)")
+            ->type_name("DIR");
         app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut snap", out, err)) return *done;
@@ -109,10 +150,27 @@ public:
                 << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
             return 2;
         }
-        ToolPath path;
+        // the path's steps: scalpel samples, or swept triangles (an .obj)
+        struct Move {
+            double time = 0;  // a sample's time; a triangle's number (1, 2, ...)
+            std::size_t line = 0;
+            Scalpel scalpel;               // samples
+            std::optional<Sweep> triangle;  // .obj
+        };
+        std::vector<Move> path;
         try {
-            const std::array<int, 1> columns{6};
-            path = read_tool_path(options.path, columns);
+            if (std::filesystem::path(options.path).extension() == ".obj") {
+                for (const SweptTriangle& t : read_swept_triangles(options.path))
+                    path.push_back({double(path.size() + 1), t.line, {t.corners[0], t.corners[2]},
+                                    Sweep{t.corners[0], t.corners[1], t.corners[2]}});
+            } else {
+                const std::array<int, 1> columns{6};
+                for (const ToolSample& sample : read_tool_path(options.path, columns).samples)
+                    path.push_back({sample.time, sample.line,
+                                    {{sample.values[0], sample.values[1], sample.values[2]},
+                                     {sample.values[3], sample.values[4], sample.values[5]}},
+                                    std::nullopt});
+            }
         } catch (const InputError& error) {
             err << "sxk: " << error.what() << '\n';
             return 2;
@@ -160,23 +218,57 @@ public:
             err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
             return 2;
         }
+        // --frames: one camera, framing the body as the cut starts, for every picture
+        std::vector<std::string> frame_words;
+        const bezier::RenderService* renderer = nullptr;
+        if (!options.frames.empty()) {
+            auto found = plugin_host ? plugin_host->service<bezier::RenderService>()
+                                     : Outcome<bezier::RenderService*>(Refusal{RefusalCode::not_found, "no plug-in host"});
+            if (!found) {
+                err << "sxk: cut snap: --frames: " << found.reason() << " (the bezier plug-in)\n";
+                return 2;
+            }
+            renderer = *found;
+            std::error_code error;
+            std::filesystem::create_directories(options.frames, error);
+            if (error || !std::filesystem::is_directory(options.frames)) {
+                err << "sxk: cut snap: --frames: cannot make folder " << options.frames
+                    << (error ? ": " + error.message() : std::string()) << '\n';
+                return 2;
+            }
+            frame_words = {"--colour", "plain", "--camera", camera_for(*mesh), "--cut-label",
+                           std::to_string(options.cut.cut_label)};
+        }
+        auto frame = [&](std::size_t index) {
+            if (renderer == nullptr) return true;
+            char name[32];
+            std::snprintf(name, sizeof name, "step-%04zu.png", index);
+            if (auto drawn = renderer->draw_mesh(*mesh, std::filesystem::path(options.frames) / name, frame_words);
+                !drawn) {
+                err << "sxk: cut snap: --frames: " << drawn.reason() << '\n';
+                return false;
+            }
+            return true;
+        };
+        if (!frame(0)) return 1;
 
         record.elements_before = mesh->element_count();
-        record.vertices_before = vertices_in_elements(*mesh);
-        for (const ToolSample& sample : path.samples) {
-            const Scalpel scalpel{{sample.values[0], sample.values[1], sample.values[2]},
-                                  {sample.values[3], sample.values[4], sample.values[5]}};
-            const auto stepped = (*session)->cut(scalpel);
+        record.vertices_before = mesh->vertices_in_elements();
+        for (const Move& move : path) {
+            const auto stepped = move.triangle
+                                     ? (*session)->sweep(move.triangle->a, move.triangle->b, move.triangle->c)
+                                     : (*session)->cut(move.scalpel);
             if (!stepped) {
-                err << "sxk: " << options.path << ':' << sample.line << ": the step was refused (the mesh is as "
+                err << "sxk: " << options.path << ':' << move.line << ": the step was refused (the mesh is as "
                     << "before it): " << stepped.reason() << '\n';
                 return 1;
             }
-            record.steps.push_back({sample.time, sample.line, (*session)->last_step()});
+            record.steps.push_back({move.time, move.line, (*session)->last_step()});
+            if (!frame(record.steps.size())) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) { return step.report.edges_hit > 0; })) {
-            err << "sxk: " << options.path << ':' << path.samples.front().line
+            err << "sxk: " << options.path << ':' << path.front().line
                 << ": the scalpel never meets the mesh (no sweep crosses an edge)\n";
             return 2;
         }
@@ -196,7 +288,7 @@ public:
         }
         (*session)->end();
         record.elements_after = mesh->element_count();
-        record.vertices_after = vertices_in_elements(*mesh);
+        record.vertices_after = mesh->vertices_in_elements();
 
         WriteOptions writing;
         writing.drop_unused_vertices = true;  // collapses leave vertices in no element
@@ -206,6 +298,7 @@ public:
             json["file"] = options.input;
             json["path"] = options.path;
             json["output"] = options.output;
+            if (!options.frames.empty()) json["frames"] = options.frames;
             json["options"] = to_json(options.cut, services.degeneracy != nullptr);
             const nlohmann::ordered_json body = to_json(record);  // named: items() is a view
             for (const auto& [key, value] : body.items()) json[key] = value;

@@ -1,6 +1,8 @@
 // sxk cut snap IN PATH OUT (the snapcut plug-in, thesis chapter 3) through the binary: the
 // thesis' cube cut along a recorded path, the JSON report, --undo, and the exact errors for bad
 // paths (exit 2) and for a scalpel that never meets the mesh.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -93,6 +95,66 @@ TEST(SxkCutSnap, BadPathsAreRefusedWithTheirLine) {
     }
 }
 
+// The same cut given as the triangles the blade sweeps (an .obj, one step each): the movement
+// from (h, t) to (h', t') sweeps (h, t, t') and (h, t', h'), so the mesh written is the same.
+TEST(SxkCutSnap, APathOfSweptTrianglesCutsAsTheScalpelPath) {
+    CutFixture f;
+    ASSERT_EQ(f.cut(f.path("plane.path", grid_plane_path)).exit_code, 0);
+    const std::string by_samples = slurp(f.out);
+    std::string obj = "# the blade of grid_plane_path: handles 1-6, tips 7-12\n";
+    for (int end = 0; end < 2; ++end)
+        for (int i = 0; i < 6; ++i) obj += "v 3.3 " + std::to_string(2 * i - 1) + (end == 0 ? " 10\n" : " 4\n");
+    for (int i = 1; i < 6; ++i) {
+        const std::string h = std::to_string(i), t = std::to_string(i + 6), t1 = std::to_string(i + 7),
+                          h1 = std::to_string(i + 1);
+        obj += "f " + h + " " + t + " " + t1 + "\nf " + h + " " + t1 + " " + h1 + "\n";
+    }
+    const ProcessResult run = f.cut(f.path("plane.obj", obj), {"--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    ASSERT_EQ(json["steps"].size(), 10u);
+    EXPECT_EQ(json["steps"][0]["line"], 14);  // the first "f"
+    EXPECT_EQ(json["summary"]["faces_dissected"], 64);
+    EXPECT_EQ(slurp(f.out), by_samples);
+    // bad triangle files: the OBJ reader's messages, and a file without faces
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"v 0 0 0\nv 1 0 0\nf 1 2\n", ":3: face has 2 vertices: a face needs 3"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", ":4: vertex index 4 out of range (1..3)"},
+        {"v 0 0 0\n", ":0: no face: a swept path is a list of triangles ('f a b c')"},
+    };
+    for (const auto& [text, message] : cases) {
+        fs::remove(f.out);
+        const fs::path path = f.path("bad.obj", text);
+        const ProcessResult bad = f.cut(path);
+        EXPECT_EQ(bad.exit_code, 2) << text;
+        EXPECT_EQ(bad.err, "sxk: " + path.string() + message + "\n") << text;
+        EXPECT_FALSE(fs::exists(f.out));
+    }
+}
+
+// --frames: a picture before the cut and one per step, through the bezier plug-in's renderer.
+TEST(SxkCutSnap, FramesArePicturesOfEachStep) {
+    CutFixture f;
+    const fs::path frames = f.folder / "frames" / "cube";  // made, parents too
+    const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--frames", frames.string(), "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["frames"], frames.string());
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(frames)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"step-0000.png", "step-0001.png", "step-0002.png", "step-0003.png",
+                                               "step-0004.png", "step-0005.png", "step-0006.png"}));
+    for (const std::string& name : names)
+        EXPECT_EQ(slurp(frames / name).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << name;
+    // (without a load the cut stays closed and the pictures alike: the deforming cut below differs)
+    // a folder that cannot be made
+    write_file(f.folder / "file", "x");
+    const ProcessResult bad = f.cut(f.path("plane.path", grid_plane_path), {"--frames", (f.folder / "file").string()});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err.rfind("sxk: cut snap: --frames: cannot make folder " + (f.folder / "file").string(), 0), 0u)
+        << bad.err;
+}
+
 TEST(SxkCutSnap, AScalpelThatNeverMeetsTheMeshIsAnInputError) {
     CutFixture f;
     const fs::path path = f.path("away.path", "# far away\n0 20 0 5 20 0 1\n1 20 5 5 20 5 1\n");
@@ -131,8 +193,10 @@ TEST(SxkCutSnap, ListedAsAPluginCommandAndCutsADeformingBody) {
     CutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const ProcessResult run =
-        f.cut(path, {"--json", "--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--relax-iterations", "30"});
+        f.cut(path, {"--json", "--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--relax-iterations", "30",
+                     "--frames", (f.folder / "frames").string()});
     ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(slurp(f.folder / "frames" / "step-0000.png"), slurp(f.folder / "frames" / "step-0006.png"));
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["initial_relax"]["converged"], true);
     EXPECT_EQ(json["steps"][3]["relax"]["shown"], true);

@@ -262,6 +262,41 @@ TEST(SpatialIndex, AgreesWithAScanOnAGridACubeAndASurface) {
     }
 }
 
+// Large triangles oblique to the axes (a scalpel's sweep) are gathered from the boxes of their
+// pieces where one box would hold too many elements (locate_triangle_sweep.cpp): on a cube of
+// 16,464 tetrahedra, slivers and broad triangles in every direction meet what a scan finds.
+TEST(SpatialIndex, LongObliqueTrianglesMeetWhatAScanFinds) {
+    const std::uint64_t seed = test::seed_for("SpatialIndex.LongObliqueTrianglesMeetWhatAScanFinds");
+    std::mt19937_64 rng(seed);
+    Mesh mesh = test::kuhn_cube(14);
+    const SpatialIndex index(mesh);
+    Point low{1e300, 1e300, 1e300}, high{-1e300, -1e300, -1e300};
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        for (std::size_t k = 0; k < 3; ++k) {
+            low[k] = std::min(low[k], mesh.reference(v)[k]);
+            high[k] = std::max(high[k], mesh.reference(v)[k]);
+        }
+    std::uniform_real_distribution<double> unit(-0.2, 1.2);
+    auto anywhere = [&] {
+        Point x{};
+        for (std::size_t k = 0; k < 3; ++k) x[k] = low[k] + unit(rng) * (high[k] - low[k]);
+        return x;
+    };
+    for (int i = 0; i < 60; ++i) {
+        const Point a = anywhere(), b = anywhere();
+        Point c = anywhere();
+        if (i % 2 == 0)  // a sliver: c a little off a
+            for (std::size_t k = 0; k < 3; ++k) c[k] = a[k] + (c[k] - a[k]) * 1e-3;
+        const TriangleHits hits = index.elements_hit_by_triangle(a, b, c);
+        const TriangleHits scanned = test::scan_triangle(mesh, a, b, c, Positions::deformed);
+        EXPECT_EQ(hits.elements, scanned.elements) << "triangle " << i;
+        std::vector<FaceId> faces = scanned.boundary_faces;
+        std::sort(faces.begin(), faces.end());
+        EXPECT_EQ(hits.boundary_faces, faces) << "triangle " << i;
+    }
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 // Moving vertices re-boxes their stars in the index of the set that moved, and only there.
 TEST(SpatialIndex, FollowsMovesInItsOwnPositionSet) {
     const std::uint64_t seed = test::seed_for("SpatialIndex.FollowsMovesInItsOwnPositionSet");

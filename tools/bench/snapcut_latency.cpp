@@ -56,6 +56,7 @@ struct Figures {
     double index_build = 0;  // s
     std::size_t dissected = 0;
     long long new_elements = 0;
+    double searched = 0, hit = 0;  // elements searched, edges hit: means over the cutting steps
 };
 
 Figures measure(const std::string& name, const Mesh& original, const std::vector<Scalpel>& path) {
@@ -74,6 +75,8 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
             const auto& r = session->last_step();
             dissected += r.faces_dissected;
             if (r.edges_hit == 0) continue;  // steps that cut: the others only move the scalpel
+            f.searched += double(r.elements_searched);
+            f.hit += double(r.edges_hit);
             step.push_back(r.seconds * 1e3);
             select.push_back(r.seconds_select * 1e3);
             snap.push_back(r.seconds_snap * 1e3);
@@ -99,13 +102,15 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     f.degeneracy99 = percentile(degeneracy_ms, 0.99);
     f.pieces99 = percentile(pieces, 0.99);
     f.cutting_steps = step.size() / runs;
+    f.searched /= double(step.size());
+    f.hit /= double(step.size());
     std::fprintf(stderr,
                  "%s (%zu tets): %zu cutting steps, median %.3f ms, p99 %.3f, max %.3f; phases median/p99: select "
                  "%.3f/%.3f, snap %.3f/%.3f, dissect %.3f/%.3f, degeneracy %.3f/%.3f, pieces %.3f/%.3f; %zu faces "
-                 "dissected, %+lld elements; index %.2f s\n",
+                 "dissected, %+lld elements; per step %.0f elements searched, %.0f edges hit; index %.2f s\n",
                  name.c_str(), f.elements, f.cutting_steps, f.median, f.p99, f.max, f.select, f.select99, f.snap,
                  f.snap99, f.dissect, f.dissect99, f.degeneracy, f.degeneracy99, f.pieces, f.pieces99, f.dissected,
-                 f.new_elements, f.index_build);
+                 f.new_elements, f.searched, f.hit, f.index_build);
     return f;
 }
 

@@ -215,7 +215,7 @@ void cube_experiment(const std::filesystem::path& out) {
     line("cube: collapses", "collapses", double(t.collapses), 99, "lower");
     line("cube: elements cut free (cracks)", "elements", double(t.cut_free), 13, "lower");
     line("cube: final tetrahedra", "elements", double(mesh.element_count()), 3034, "none");
-    line("cube: final nodes", "vertices", double(sxk::vertices_in_elements(mesh)), 823, "none");
+    line("cube: final nodes", "vertices", double(mesh.vertices_in_elements()), 823, "none");
     line("cube: nodes snapped", "vertices", double(t.snapped), 0, "none");
     line("cube: snaps refused (would invert or flatten)", "vertices", double(t.refused), 0, "lower");
     line("cube: cut time, all 16 steps", "ms", t.seconds * 1e3, 0, "lower");

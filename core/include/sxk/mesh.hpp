@@ -155,6 +155,9 @@ public:
     std::span<const Point> deformed_positions() const { return m_deformed; }
     // Some element containing v, or invalid_id for a vertex in no element.
     ElementId vertex_element(VertexId v) const { return m_vertex_element[v]; }
+    // The vertices in some element (vertex ids the edits left in none, as collapses leave theirs,
+    // are not counted). O(1): kept with the anchors, so a tool's step may report it.
+    std::size_t vertices_in_elements() const { return m_vertices_in_elements; }
     // sum weights[i] * position(vertices[i]) in both position sets, summed in input order (the
     // first term is weights[0] * p[0], so one vertex with weight 1 is copied bit for bit).
     // Sizes must match and every vertex exist; the splits use this to place their new vertex.
@@ -515,8 +518,15 @@ private:
     }
     void set_anchor(VertexId v, ElementId t) {
         if (m_undo != nullptr) note_anchor(v);
+        count_anchor(m_vertex_element[v], t);
         m_vertex_element[v] = t;
     }
+    // Keeps vertices_in_elements() as a vertex's anchor goes from `was` to `now`.
+    void count_anchor(ElementId was, ElementId now) {
+        m_vertices_in_elements += std::size_t{now != invalid_id} - std::size_t{was != invalid_id};
+    }
+    // Recounts it after the anchors were set in bulk. O(vertices).
+    void recount_anchors();
 
     int m_dimension;
     int m_ambient;
@@ -524,6 +534,7 @@ private:
     detail::LargeVector<Point> m_reference;
     detail::LargeVector<Point> m_deformed;
     detail::LargeVector<ElementId> m_vertex_element;
+    std::size_t m_vertices_in_elements = 0;  // anchors that name an element
     detail::LargeVector<ElementRecord> m_elements;
     detail::LargeVector<FaceRecord> m_faces;
     ElementId m_free_element = invalid_id;

@@ -18,6 +18,8 @@
 #include <string_view>
 #include <vector>
 
+#include "sxk/mesh.hpp"
+
 #include "sxk/config.hpp"
 
 namespace sxk {
@@ -43,5 +45,17 @@ SXK_API ToolPath parse_tool_path(std::string_view text, const std::string& name,
                                  std::span<const int> columns);
 // read_text_file, then parse_tool_path with the file's name.
 SXK_API ToolPath read_tool_path(const std::filesystem::path& path, std::span<const int> columns);
+
+// A tool's path given by the triangles it sweeps, in order: an OBJ file's faces as listed (the
+// OBJ reader's syntax, docs/formats.md), with none of a mesh's checks, since sweeps overlap,
+// repeat and fan around shared edges. Throws InputError as the OBJ reader does, and for a file
+// with no face (line 0).
+struct SweptTriangle {
+    std::array<Point, 3> corners;
+    std::size_t line = 0;  // of its "f" statement (1-based)
+};
+SXK_API std::vector<SweptTriangle> parse_swept_triangles(std::string_view text, const std::string& name);
+// read_text_file, then parse_swept_triangles with the file's name.
+SXK_API std::vector<SweptTriangle> read_swept_triangles(const std::filesystem::path& path);
 
 }  // namespace sxk

@@ -30,8 +30,4 @@ SXK_API void collect_star(const Mesh& mesh, VertexId v, ElementId start,
 // sorted, each once: what an edit that moved or split those vertices touched.
 SXK_API std::vector<ElementId> stars_of(const Mesh& mesh, std::span<const VertexId> vertices);
 
-// The vertices in some element (vertex ids the edits left in none, as collapses leave theirs, are
-// not counted). O(vertices): for reports, not for a tool's step.
-SXK_API std::size_t vertices_in_elements(const Mesh& mesh);
-
 }  // namespace sxk

@@ -23,6 +23,9 @@ Mesh read_off(std::string_view text, const std::string& name, const ReadOptions&
               ReadReport* report);
 Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions& options,
               ReadReport* report);
+// read_obj's parsing alone: the vertices and triangles as listed, none of build_mesh's checks.
+struct RawMesh;
+RawMesh parse_obj(std::string_view text, const std::string& name);
 
 // TetGen: .node and .ele, and optionally the labelled faces (.face for tetrahedra, .edge for
 // triangles; face_text == nullptr when there is no such file).

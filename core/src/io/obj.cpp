@@ -26,8 +26,7 @@ constexpr std::array<std::string_view, 9> ignored_statements{"vt", "vn",     "vp
 
 }  // namespace
 
-Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions& options,
-              ReadReport* report) {
+RawMesh parse_obj(std::string_view text, const std::string& name) {
     Cursor in(text, name, '#');
     RawMesh raw;
     raw.vertex_file = raw.triangles.file = name;
@@ -117,6 +116,12 @@ Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions&
                                                " out of range (1.." + std::to_string(count) + ")");
         cells.vertices.push_back(static_cast<VertexId>(indices[i] - 1));
     }
+    return raw;
+}
+
+Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions& options,
+              ReadReport* report) {
+    RawMesh raw = parse_obj(text, name);
     return build_mesh(raw, name, options, report);
 }
 

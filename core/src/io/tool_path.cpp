@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "formats.hpp"
+#include "raw_mesh.hpp"
 #include "sxk/io.hpp"
 #include "text.hpp"
 
@@ -81,6 +83,22 @@ ToolPath parse_tool_path(std::string_view text, const std::string& name,
 
 ToolPath read_tool_path(const std::filesystem::path& path, std::span<const int> columns) {
     return parse_tool_path(read_text_file(path), path.string(), columns);
+}
+
+std::vector<SweptTriangle> parse_swept_triangles(std::string_view text, const std::string& name) {
+    const io::RawMesh raw = io::parse_obj(text, name);
+    const io::CellList& cells = raw.triangles;
+    if (cells.count() == 0) throw InputError(name, 0, "no face: a swept path is a list of triangles ('f a b c')");
+    std::vector<SweptTriangle> triangles(cells.count());
+    for (std::size_t i = 0; i < cells.count(); ++i) {
+        for (std::size_t j = 0; j < 3; ++j) triangles[i].corners[j] = raw.points[cells.vertices[3 * i + j]];
+        triangles[i].line = cells.lines[i];
+    }
+    return triangles;
+}
+
+std::vector<SweptTriangle> read_swept_triangles(const std::filesystem::path& path) {
+    return parse_swept_triangles(read_text_file(path), path.string());
 }
 
 }  // namespace sxk

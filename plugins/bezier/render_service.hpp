@@ -1,0 +1,34 @@
+// The bezier plug-in's service: pictures of meshes for other plug-ins (the snap cutter's
+// `--frames`, one picture per step) and for applications that load bezier.so at run time:
+//
+//     auto renderer = host.service<sxk::bezier::RenderService>();
+//     (*renderer)->draw_mesh(mesh, "step-0001.png", {"--colour", "plain", "--camera", "..."});
+//
+// The options are `sxk render`'s for a mesh (docs/cli.md): --size, --camera, --fov, --colour,
+// --cut-label. This header carries only the kernel's types.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk::bezier {
+
+struct RenderService {
+    static constexpr std::string_view service_id = "sxk.render";
+    static constexpr std::uint32_t service_version = 1;
+
+    // Draws the boundary of `mesh` (its deformed positions) to the PNG `output` as `sxk render
+    // MESH OUTPUT OPTIONS...` would, faces on a cut in magenta. Refuses with the command's
+    // message (without its "sxk: "): bad options or output name (bad_argument), a mesh without
+    // elements or a picture that cannot be written (not_applicable).
+    Outcome<Done> (*draw_mesh)(const Mesh& mesh, const std::filesystem::path& output,
+                               std::span<const std::string> options);
+};
+
+}  // namespace sxk::bezier
