@@ -6,7 +6,12 @@
 // several runs of the cut on fresh copies, and their ratio between the meshes - the peer is the
 // small femur, as a step must cost the same on a mesh 6 times larger.
 //
-//   snapcut_latency PATH NAME=MESH.ele [NAME=MESH.ele ...]     the first mesh is the peer of the others
+//   snapcut_latency PATH [--substeps N] NAME=MESH.ele [NAME=MESH.ele ...]
+//
+// The first mesh is the peer of the others. --substeps N replays each movement of the path as N
+// movements (handle and tip interpolated linearly): the same cut at a haptic device's rate, where
+// a step moves the blade a fraction of an element; the work of a step then follows the faces it
+// crosses, and "per dissected face" compares the meshes at equal work.
 //
 // stdout: JSON lines (CONTRIBUTING.md "Benchmarks"); stderr: a table per mesh.
 #include <algorithm>
@@ -14,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -57,19 +63,21 @@ struct Figures {
     std::size_t dissected = 0;
     long long new_elements = 0;
     double searched = 0, hit = 0;  // elements searched, edges hit: means over the cutting steps
+    double per_face = 0;  // ms of cutting steps per dissected face
 };
 
 Figures measure(const std::string& name, const Mesh& original, const std::vector<Scalpel>& path) {
     Figures f;
     f.name = name;
     f.elements = original.element_count();
-    std::vector<double> step, select, snap, dissect, degeneracy_ms, pieces;
+    std::vector<double> step, select, snap, dissect, degeneracy_ms, pieces, per_face;
     for (int run = 0; run < runs; ++run) {
         Mesh mesh = original;
         const auto start = std::chrono::steady_clock::now();
         auto session = sxk::snapcut::SnapCutSession::make(mesh, {}, {degeneracy(), nullptr}).value();
         f.index_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::size_t dissected = 0;
+        const std::size_t first = step.size();
         for (const Scalpel& scalpel : path) {
             if (auto stepped = session->cut(scalpel); !stepped) throw std::runtime_error(stepped.reason());
             const auto& r = session->last_step();
@@ -85,9 +93,13 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
             pieces.push_back(r.seconds_pieces * 1e3);
         }
         f.dissected = dissected;
+        double total = 0;
+        for (std::size_t i = first; i < step.size(); ++i) total += step[i];
+        per_face.push_back(dissected ? total / double(dissected) : 0);
         f.new_elements = static_cast<long long>(mesh.element_count()) - static_cast<long long>(original.element_count());
         if (auto valid = mesh.validate({.orientation = true}); !valid) throw std::runtime_error(valid.reason());
     }
+    f.per_face = percentile(per_face, 0.5);
     f.median = percentile(step, 0.5);
     f.p99 = percentile(step, 0.99);
     f.max = percentile(step, 1.0);
@@ -107,10 +119,11 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     std::fprintf(stderr,
                  "%s (%zu tets): %zu cutting steps, median %.3f ms, p99 %.3f, max %.3f; phases median/p99: select "
                  "%.3f/%.3f, snap %.3f/%.3f, dissect %.3f/%.3f, degeneracy %.3f/%.3f, pieces %.3f/%.3f; %zu faces "
-                 "dissected, %+lld elements; per step %.0f elements searched, %.0f edges hit; index %.2f s\n",
+                 "dissected, %+lld elements, %.3f ms per dissected face; per step %.0f elements searched, %.0f edges hit; "
+                 "index %.2f s\n",
                  name.c_str(), f.elements, f.cutting_steps, f.median, f.p99, f.max, f.select, f.select99, f.snap,
                  f.snap99, f.dissect, f.dissect99, f.degeneracy, f.degeneracy99, f.pieces, f.pieces99, f.dissected,
-                 f.new_elements, f.searched, f.hit, f.index_build);
+                 f.new_elements, f.per_face, f.searched, f.hit, f.index_build);
     return f;
 }
 
@@ -124,19 +137,38 @@ void line(const std::string& name, const char* unit, double ours, double peer, c
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 3) {
-        std::fprintf(stderr, "usage: snapcut_latency PATH NAME=MESH.ele [NAME=MESH.ele ...]\n");
+    int first_mesh = 2;
+    int substeps = 1;
+    if (argc > 3 && std::string(argv[2]) == "--substeps") {
+        substeps = std::atoi(argv[3]);
+        first_mesh = 4;
+    }
+    if (argc <= first_mesh || substeps < 1) {
+        std::fprintf(stderr, "usage: snapcut_latency PATH [--substeps N] NAME=MESH.ele [NAME=MESH.ele ...]\n");
         return 2;
     }
     try {
         const std::array<int, 1> columns{6};
-        std::vector<Scalpel> path;
+        std::vector<Scalpel> samples;
         for (const sxk::ToolSample& sample : sxk::read_tool_path(argv[1], columns).samples) {
             const auto& v = sample.values;
-            path.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+            samples.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
         }
+        std::vector<Scalpel> path{samples.front()};
+        for (std::size_t i = 1; i < samples.size(); ++i)
+            for (int j = 1; j <= substeps; ++j) {
+                const double s = double(j) / substeps;
+                Scalpel between;
+                for (std::size_t k = 0; k < 3; ++k) {
+                    between.handle[k] = samples[i - 1].handle[k] + s * (samples[i].handle[k] - samples[i - 1].handle[k]);
+                    between.tip[k] = samples[i - 1].tip[k] + s * (samples[i].tip[k] - samples[i - 1].tip[k]);
+                }
+                if (j == substeps) between = samples[i];  // the sample itself, not a rounding of it
+                path.push_back(between);
+            }
+        const std::string how = substeps == 1 ? "" : " (" + std::to_string(substeps) + " substeps)";
         std::vector<Figures> all;
-        for (int i = 2; i < argc; ++i) {
+        for (int i = first_mesh; i < argc; ++i) {
             const std::string arg = argv[i];
             const auto equals = arg.find('=');
             const std::string name = arg.substr(0, equals), file = arg.substr(equals + 1);
@@ -146,7 +178,7 @@ int main(int argc, char** argv) {
         }
         const Figures& peer = all.front();
         for (const Figures& f : all) {
-            const std::string what = "snap cut step on " + f.name;
+            const std::string what = "snap cut step on " + f.name + how;
             line(what + ": median", "ms", f.median, peer.median, peer.name);
             line(what + ": p99", "ms", f.p99, peer.p99, peer.name);
             line(what + ": select (median)", "ms", f.select, peer.select, peer.name);
@@ -156,7 +188,9 @@ int main(int argc, char** argv) {
             line(what + ": loose pieces (median)", "ms", f.pieces, peer.pieces, peer.name);
             line(what + ": loose pieces (p99)", "ms", f.pieces99, peer.pieces99, peer.name);
             line(what + ": degeneracy removal (p99)", "ms", f.degeneracy99, peer.degeneracy99, peer.name);
-            line("snap cut on " + f.name + ": new elements per dissected face", "elements",
+            line("snap cut on " + f.name + how + ": cutting time per dissected face", "ms", f.per_face, peer.per_face,
+                 peer.name);
+            line("snap cut on " + f.name + how + ": new elements per dissected face", "elements",
                  f.dissected ? double(f.new_elements) / double(f.dissected) : 0, 17, "state-machine subdivision (up to)");
         }
     } catch (const std::exception& error) {
