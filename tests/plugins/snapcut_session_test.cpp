@@ -55,7 +55,9 @@ TEST(SnapCut, APlaneAlongTheGridOpensTheGridFacesItCrosses) {
     EXPECT_EQ(mesh.vertex_count(), 729u + 36u);
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
         const Point& p = mesh.reference(v);
-        if (std::abs(p[0] - 3.3) < 0.5 && p[2] >= 4) EXPECT_NEAR(p[0], 3.3, 1e-12) << "vertex " << v;
+        if (std::abs(p[0] - 3.3) < 0.5 && p[2] >= 4) {
+            EXPECT_NEAR(p[0], 3.3, 1e-12) << "vertex " << v;
+        }
     }
     // the two sides share no face: every face with its corners on the cut above the tip is open
     for (const ElementId t : elements(mesh))
@@ -66,7 +68,9 @@ TEST(SnapCut, APlaneAlongTheGridOpensTheGridFacesItCrosses) {
                 const Point& p = mesh.reference(face.vertex(j));
                 on_cut = on_cut && std::abs(p[0] - 3.3) < 1e-9 && p[2] > 4.5;
             }
-            if (on_cut) EXPECT_EQ(mesh.mate(mesh.face(t, i)), invalid_id) << "element " << t;
+            if (on_cut) {
+                EXPECT_EQ(mesh.mate(mesh.face(t, i)), invalid_id) << "element " << t;
+            }
         }
 }
 
@@ -203,7 +207,9 @@ TEST(SnapCut, ADeformingBodyIsRelaxedAfterEveryStepAndTheCutFollowsIt) {
         const auto& r = session->last_step();
         EXPECT_TRUE(r.relaxed);
         EXPECT_EQ(r.relax_refusal, "");
-        if (r.faces_dissected > 0) EXPECT_GT(r.relax_iterations, 0u);  // the cut changed the body
+        if (r.faces_dissected > 0) {
+            EXPECT_GT(r.relax_iterations, 0u);  // the cut changed the body
+        }
         dissected += r.faces_dissected;
         relaxed += r.relax_iterations;
     }
