@@ -90,20 +90,24 @@ inline Box bounding_box(const Mesh& mesh) {
     return box;
 }
 
-// A random curved path: the tip starts outside or inside the box, moves in small steps whose
-// direction turns a little each time; the blade (length about the box's size) tilts as it goes.
+// A random curved path: the tip starts outside or inside the box (each axis by its own extent),
+// moves across in xy in small steps whose direction turns a little each time; the blade (about
+// the box's height, z) tilts as it goes. On a cube every extent is the size; on the femur (long
+// in z) the blade stands along the bone and the steps are fractions of its width.
 inline std::vector<snapcut::Scalpel> random_path(const Box& box, int steps, std::mt19937_64& random) {
     std::uniform_real_distribution<double> unit(0, 1), turn(-0.4, 0.4);
     double size = 0;
-    Point centre;
+    Point centre, extent;
     for (std::size_t k = 0; k < 3; ++k) {
-        size = std::max(size, box.high[k] - box.low[k]);
+        extent[k] = box.high[k] - box.low[k];
+        size = std::max(size, extent[k]);
         centre[k] = (box.low[k] + box.high[k]) / 2;
     }
+    const double across = std::max(extent[0], extent[1]);
     Point tip;
-    for (std::size_t k = 0; k < 3; ++k) tip[k] = centre[k] + (unit(random) - 0.5) * 1.4 * size;
+    for (std::size_t k = 0; k < 3; ++k) tip[k] = centre[k] + (unit(random) - 0.5) * 1.4 * extent[k];
     double heading = 2 * std::numbers::pi * unit(random), tilt = 0.6 * (unit(random) - 0.5);
-    const double step = size * (0.01 + 0.09 * unit(random));
+    const double step = across * (0.01 + 0.09 * unit(random));
     const double blade = size * (0.3 + 0.9 * unit(random));
     std::vector<snapcut::Scalpel> path;
     for (int i = 0; i <= steps; ++i) {
@@ -114,7 +118,7 @@ inline std::vector<snapcut::Scalpel> random_path(const Box& box, int steps, std:
         path.push_back(scalpel);
         tip[0] += step * std::cos(heading);
         tip[1] += step * std::sin(heading);
-        tip[2] += step * 0.3 * turn(random);
+        tip[2] += step * 0.3 * turn(random) * extent[2] / across;
         heading += turn(random);
         tilt += 0.2 * turn(random);
     }
