@@ -239,9 +239,8 @@ struct BoxTree {
         std::uint32_t largest = 0;
         for (const Value& v : values) largest = std::max(largest, v.second);
         // room for the first edits' new ids and entries: growing an exactly sized array copies
-        // all of it into fresh pages (40 MB of entries at 1.2M elements), and a cutting session's
-        // first steps paid that, 0.2 s per session on the 1.2M femur (docs/performance.md
-        // "snapcut")
+        // all of it into fresh pages (40 MB of entries at 1.2M elements): in a profile of the
+        // snap cutter on the 1.2M femur, about 0.2 s of each session's first steps
         const auto headroom = [](std::size_t n) { return n + n / 8 + 64; };
         if (!values.empty()) {
             entry_of.reserve(headroom(static_cast<std::size_t>(largest) + 1));

@@ -18,9 +18,8 @@
 #include <string_view>
 #include <vector>
 
-#include "sxk/mesh.hpp"
-
 #include "sxk/config.hpp"
+#include "sxk/mesh.hpp"
 
 namespace sxk {
 
