@@ -20,7 +20,6 @@
 #include "snap_cut.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/io.hpp"
-#include "sxk/plugin_host.hpp"
 #include "sxk/tool_path.hpp"
 
 namespace {
@@ -28,15 +27,6 @@ namespace {
 [[noreturn]] void finding(const std::string& what) {
     std::fprintf(stderr, "fuzz_snapcut: %s\n", what.c_str());
     std::abort();
-}
-
-const sxk::degeneracy::DegeneracyService* degeneracy() {
-    static sxk::PluginHost host = [] {
-        sxk::PluginHost h;
-        h.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy");
-        return h;
-    }();
-    return host.service<sxk::degeneracy::DegeneracyService>().value();
 }
 
 void check(const sxk::Mesh& mesh, std::size_t step, const char* after) {
@@ -61,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     const sxk::Mesh original = sxk::make_kuhn_cube(4).value();
     sxk::Mesh mesh = original;
-    auto made = sxk::snapcut::SnapCutSession::make(mesh, {}, {degeneracy(), nullptr});
+    auto made = sxk::snapcut::SnapCutSession::make(mesh, {}, {sxk::degeneracy::linked_in_service(), nullptr});
     if (!made) finding("make: " + made.reason());
     auto& session = **made;
     std::size_t step = 0;

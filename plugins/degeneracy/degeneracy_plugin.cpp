@@ -16,6 +16,7 @@
 #include "command_line.hpp"
 #include "degeneracy_brush.hpp"
 #include "sxk/io.hpp"
+#include "sxk/plugin_host.hpp"
 
 namespace sxk::degeneracy {
 
@@ -51,6 +52,15 @@ std::string plural(std::size_t count, const char* one, const char* many) {
 }
 
 }  // namespace
+
+const DegeneracyService* linked_in_service() {
+    static PluginHost host = [] {
+        PluginHost h;
+        h.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy");
+        return h;
+    }();
+    return host.service<DegeneracyService>().value();
+}
 
 std::size_t removed(const Report& report) {
     return report.found >= report.remaining ? report.found - report.remaining : 0;

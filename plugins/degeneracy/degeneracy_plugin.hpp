@@ -28,6 +28,11 @@ extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_degeneracy(
 
 namespace sxk::degeneracy {
 
+// The service of a host with this plug-in linked in, made on first use and kept for the program's
+// life: for programs that link sxk_plugin_degeneracy_static and use the service the way a
+// plug-in finds it (the snap cutter's tests, benchmarks and fuzz target).
+const DegeneracyService* linked_in_service();
+
 // Degenerates removed: those found on the first list minus those remaining at the end (0 when
 // the removal created more than it removed).
 std::size_t removed(const Report& report);

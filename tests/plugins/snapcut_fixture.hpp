@@ -15,19 +15,11 @@
 #include "degeneracy_plugin.hpp"
 #include "snap_cut.hpp"
 #include "sxk/generators.hpp"
-#include "sxk/plugin_host.hpp"
 
 namespace sxk::test {
 
 // The degeneracy service of a host that links the plug-in in (one per test program).
-inline const degeneracy::DegeneracyService* degeneracy_service() {
-    static PluginHost host = [] {
-        PluginHost h;
-        h.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy");
-        return h;
-    }();
-    return host.service<degeneracy::DegeneracyService>().value();
-}
+inline const degeneracy::DegeneracyService* degeneracy_service() { return degeneracy::linked_in_service(); }
 
 // A blade from `handle_height` down to `tip_height` (z), standing in the plane through (x0, y0)
 // with direction (dx, dy), moved in `steps` equal steps from parameter s0 to s1.

@@ -8,6 +8,7 @@
 #include "simulation.hpp"
 #include "snapcut_fixture.hpp"
 #include "sxk/components.hpp"
+#include "sxk/plugin_host.hpp"
 #include "sxk/traversal.hpp"
 
 extern "C" const sxk_plugin_info* sxk_plugin_entry_snapcut();

@@ -26,7 +26,6 @@
 #include "degeneracy_plugin.hpp"
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
-#include "sxk/plugin_host.hpp"
 #include "sxk/tool_path.hpp"
 
 namespace {
@@ -36,15 +35,6 @@ using sxk::Point;
 using sxk::snapcut::Scalpel;
 
 constexpr int runs = 5;
-
-const sxk::degeneracy::DegeneracyService* degeneracy() {
-    static sxk::PluginHost host = [] {
-        sxk::PluginHost h;
-        h.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy");
-        return h;
-    }();
-    return host.service<sxk::degeneracy::DegeneracyService>().value();
-}
 
 double percentile(std::vector<double> values, double p) {
     std::sort(values.begin(), values.end());
@@ -74,7 +64,7 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     for (int run = 0; run < runs; ++run) {
         Mesh mesh = original;
         const auto start = std::chrono::steady_clock::now();
-        auto session = sxk::snapcut::SnapCutSession::make(mesh, {}, {degeneracy(), nullptr}).value();
+        auto session = sxk::snapcut::SnapCutSession::make(mesh, {}, {sxk::degeneracy::linked_in_service(), nullptr}).value();
         f.index_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::size_t dissected = 0;
         const std::size_t first = step.size();

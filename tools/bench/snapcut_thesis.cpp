@@ -36,7 +36,6 @@
 #include "sxk/components.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/io.hpp"
-#include "sxk/plugin_host.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
 
@@ -45,15 +44,6 @@ namespace {
 using sxk::Mesh;
 using sxk::Point;
 using sxk::snapcut::Scalpel;
-
-const sxk::degeneracy::DegeneracyService* degeneracy() {
-    static sxk::PluginHost host = [] {
-        sxk::PluginHost h;
-        h.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy");
-        return h;
-    }();
-    return host.service<sxk::degeneracy::DegeneracyService>().value();
-}
 
 void line(const std::string& name, const char* unit, double ours, double thesis, const char* better) {
     std::printf("{\"name\":\"%s\",\"unit\":\"%s\",\"ours\":%.6g,\"peer\":%.6g,\"peer_name\":\"thesis\",\"ratio\":%.4g,"
@@ -179,7 +169,7 @@ std::size_t iterations_after_cut(bool remove_degeneracies, Mesh* keep) {
     (void)simulation->relax(100000).value();
     sxk::snapcut::Options options;
     options.remove_degeneracies = remove_degeneracies;
-    (void)cut(mesh, diagonal_cut(16), options, {degeneracy(), nullptr});
+    (void)cut(mesh, diagonal_cut(16), options, {sxk::degeneracy::linked_in_service(), nullptr});
     hold_every_piece(mesh, *simulation);
     const auto relaxed = simulation->relax(20000).value();
     if (keep) *keep = mesh;
@@ -204,10 +194,10 @@ void cube_experiment(const std::filesystem::path& out) {
     Mesh raw = cube;
     sxk::snapcut::Options no_removal;
     no_removal.remove_degeneracies = false;
-    const Totals snapped = cut(raw, diagonal_cut(16), no_removal, {degeneracy(), nullptr});
+    const Totals snapped = cut(raw, diagonal_cut(16), no_removal, {sxk::degeneracy::linked_in_service(), nullptr});
     write_opened(raw, out / "cube-cut-raw.mesh");
     Mesh mesh = cube;
-    const Totals t = cut(mesh, diagonal_cut(16), {}, {degeneracy(), nullptr});
+    const Totals t = cut(mesh, diagonal_cut(16), {}, {sxk::degeneracy::linked_in_service(), nullptr});
     write_opened(mesh, out / "cube-cut.mesh");
     line("cube: faces dissected", "faces", double(t.dissected), 108, "none");
     line("cube: degenerates made by snapping (aspect < 0.01)", "elements", double(degenerates(raw)), 143, "lower");
@@ -229,7 +219,7 @@ void cube_experiment(const std::filesystem::path& out) {
 void steps_experiment() {
     for (const int steps : {1, 4, 16, 64}) {
         Mesh mesh = sxk::make_kuhn_cube(8).value();
-        const Totals t = cut(mesh, diagonal_cut(steps), {}, {degeneracy(), nullptr});
+        const Totals t = cut(mesh, diagonal_cut(steps), {}, {sxk::degeneracy::linked_in_service(), nullptr});
         const std::string name = "cube in " + std::to_string(steps) + " steps: ";
         line(name + "faces dissected", "faces", double(t.dissected), 108, "none");
         line(name + "pieces of the incision", "pieces", double(incision_pieces(mesh, sxk::snapcut::Options{}.cut_label)),
@@ -255,7 +245,7 @@ void cylinder_experiment(const std::filesystem::path& out) {
     line("cylinder: vertices", "vertices", double(mesh.vertex_count()), 891, "none");
     Totals all;
     for (const double angle : {0.3, 0.3 + 2 * std::numbers::pi / 3, 0.3 + 4 * std::numbers::pi / 3}) {
-        const Totals t = cut(mesh, pie_cut(angle), {}, {degeneracy(), nullptr});
+        const Totals t = cut(mesh, pie_cut(angle), {}, {sxk::degeneracy::linked_in_service(), nullptr});
         all.dissected += t.dissected;
         all.collapses += t.collapses;
         all.cut_free += t.cut_free;
