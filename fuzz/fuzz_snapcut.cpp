@@ -1,11 +1,11 @@
 // libFuzzer target for the snap cutter (issue 15): the input is a scalpel path's text (the
 // format of docs/formats.md, "Tool paths"). The reader must parse it or throw InputError; a path
-// that parses is replayed on the thesis' cube (4^3 cubes of 6 tetrahedra, edge 1) through
+// that parses is replayed on a Kuhn cube (4^3 cells of 6 tetrahedra, edge 1: [0, 4]^3) through
 // SnapCutSession with the degeneracy plug-in linked in. Every step must complete or be refused
 // with the mesh bit for bit as before; after each one the mesh validates with every element
-// positive in both position sets, and a sample whose time has an odd whole part takes the last step back
-// (undo_step) instead of cutting. At the end every step is undone and the mesh must be the cube
-// again, bit for bit. A broken rule prints what broke and aborts.
+// positive in both position sets. A sample whose time has an odd whole part takes the last step
+// back (undo_step) instead of cutting. At the end every step is undone and the mesh must be the
+// cube again, bit for bit. A broken rule prints what broke and aborts.
 #include <array>
 #include <cmath>
 #include <cstdint>
