@@ -6,7 +6,6 @@
 #include <deque>
 #include <unordered_map>
 
-
 namespace sxk::snapcut {
 namespace {
 
