@@ -83,10 +83,12 @@ public:
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
     // dissection is recorded with its original's).
     void add_snapped(VertexId v, const Point& was);
-    // The snapped nodes whose positions before snapping are within the reach of the sweep: the
-    // corners, as the selection sees them, of every element with a snapped corner that the
-    // selection sees meeting the sweep (reach: the longest edge of such an element).
-    std::vector<VertexId> snapped_near(const Sweep& sweep) const;
+    // Every element with a snapped corner that may meet the sweep as the selection sees it
+    // (selection_position), sorted, each once: in the stars of the snapped nodes within the reach
+    // of the sweep (the longest edge of such an element), the elements that reach from the node
+    // as far as the sweep is (an element lies in the ball about any of its corners through its
+    // farthest corner).
+    std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep) const;
     // Makes the reach at least `length` (the longest edge around a node about to be snapped).
     void extend_reach(double length) { m_reach = std::max(m_reach, length); }
     // Where the selection sees v: where it was before this cut snapped it, else where it is.

@@ -235,10 +235,10 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     // every incomplete tetrahedron this sweep can complete). The selection sees snapped nodes
     // where they were before the cut moved them, the index where they are: an element may meet
     // the sweep only as the selection sees it, and then it has a snapped corner within reach of
-    // the sweep (CutMarks::snapped_near). So the stars of those are candidates too.
+    // the sweep (CutMarks::elements_near). So those are candidates too.
     auto phase = Clock::now();
     std::vector<ElementId> candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c).elements;
-    const std::vector<ElementId> around = stars_of(mesh, m_marks.snapped_near(sweep));
+    const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
     candidates.insert(candidates.end(), around.begin(), around.end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());

@@ -100,8 +100,20 @@ TEST(BezierClipping, RaysAimedAtPointsOfCurvedPatchesHitThem) {
                 ++rays;
                 ASSERT_TRUE(hit) << "degree " << degree << " missed the point at (" << target[0] << ", " << target[1]
                                  << ", " << target[2] << ")";
-                // the nearest hit: at the target, or before it where the ray crosses the patch earlier
-                EXPECT_LE(hit->t, back * (1 + 1e-9));
+                // the nearest hit: at the target, or before it where the ray crosses the patch
+                // earlier; or, for a ray grazing the patch, its second crossing within the
+                // clipping's parametric tolerance of the target (two crossings in one cell may
+                // give the farther: bezier_clipping.hpp; SXK_SEED=682095474, degree 6, cos 3.6e-4,
+                // the crossings 5.7e-5 apart in the domain and at t = 3 and 3.00003)
+                if (hit->t > back * (1 + 1e-9)) {
+                    const Point n = patch.normal(target);
+                    const double grazing = std::abs(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]);
+                    double apart = 0;
+                    for (std::size_t k = 0; k < 3; ++k) apart = std::max(apart, std::abs(hit->at[k] - target[k]));
+                    EXPECT_LT(grazing, 1e-2) << "degree " << degree << ": t " << hit->t << " beyond the target";
+                    EXPECT_LE(apart, ClippingOptions{}.parametric_tolerance)
+                        << "degree " << degree << ": t " << hit->t << " beyond the target";
+                }
                 expect_on_patch(patch, ray, *hit);
                 if (std::abs(hit->t - back) < 1e-9) ++at_target;
             }
