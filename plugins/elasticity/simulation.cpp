@@ -65,7 +65,8 @@ public:
                 if (m_mesh.mate(f) == invalid_id && (lowest == invalid_id || f < lowest)) lowest = f;
         }
         if (lowest == invalid_id) return false;
-        for (const VertexId v : m_mesh.face_simplex(lowest).vertices())
+        const Simplex face = m_mesh.face_simplex(lowest);  // by value: a range over a temporary's span dangles
+        for (const VertexId v : face.vertices())
             if (Outcome<Done> fixed = body.fix(v, body.displacement(v)); !fixed)
                 return fixed.refusal().prefixed("hold_piece: ");
         return true;

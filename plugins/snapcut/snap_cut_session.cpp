@@ -300,9 +300,11 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         touched.push_back(copy);
         if (m_marks.snapped(original)) m_marks.add_snapped(copy, m_marks.selection_position(mesh, original));
     }
-    for (const FaceId f : dissected->opened)
-        for (const VertexId v : mesh.face_simplex(f).vertices())
+    for (const FaceId f : dissected->opened) {
+        const Simplex face = mesh.face_simplex(f);  // by value: a range over a temporary's span dangles
+        for (const VertexId v : face.vertices())
             m_last.incision_error = std::max(m_last.incision_error, distance_to_recent_sweeps(mesh.deformed(v), sweep_index));
+    }
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
     m_last.seconds_dissect += seconds_since(phase);
