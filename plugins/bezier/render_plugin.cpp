@@ -657,6 +657,25 @@ Outcome<Done> draw_mesh(const Mesh& mesh, const std::filesystem::path& output,
     return Done{};
 }
 
+// RenderService::default_camera: frame() from the default view, as draw() frames a mesh.
+std::string default_camera(const Mesh& mesh) {
+    std::vector<Point> points;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        if (mesh.vertex_element(v) != invalid_id) points.push_back(mesh.deformed(v));
+    const bool planar = mesh.ambient_dimension() == 2;
+    const Camera camera = frame(box_of(points), planar ? planar_view : default_view, planar ? planar_up : default_up,
+                                CommandOptions{}.fov);
+    std::string text;
+    char number[32];
+    for (const Point* p : {&camera.eye, &camera.target, &camera.up})
+        for (const double x : *p) {
+            std::snprintf(number, sizeof number, "%.17g,", x);
+            text += number;
+        }
+    text.pop_back();
+    return text;
+}
+
 class BezierPlugin final : public Plugin {
 public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
@@ -666,7 +685,7 @@ public:
     }
 
 private:
-    RenderService m_service{&draw_mesh};
+    RenderService m_service{&draw_mesh, &default_camera};
     RenderCommand m_render;
     PluginCommand* m_commands[1] = {&m_render};
 };

@@ -29,6 +29,10 @@ struct RenderService {
     // elements or a picture that cannot be written (not_applicable).
     Outcome<Done> (*draw_mesh)(const Mesh& mesh, const std::filesystem::path& output,
                                std::span<const std::string> options);
+    // The camera `sxk render` chooses for `mesh` as it is now (its default view of the deformed
+    // positions of the vertices in elements, default field of view), as `--camera` takes it:
+    // pass it to draw_mesh to keep one view over pictures of a changing mesh.
+    std::string (*default_camera)(const Mesh& mesh);
 };
 
 }  // namespace sxk::bezier

@@ -5,10 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 #include <memory>
 #include <sstream>
 #include <optional>
@@ -55,37 +53,6 @@ std::vector<std::string> words_of(const std::string& text) {
     std::istringstream in(text);
     for (std::string word; in >> word;) words.push_back(word);
     return words;
-}
-
-// The camera of --frames, as `sxk render --camera` takes it: the body's deformed bounding box seen
-// from `sxk render`'s default direction (1, -2, 1.2), its circumscribed sphere filling the
-// default 40 degree field of view.
-std::string camera_for(const Mesh& mesh) {
-    Point low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-              std::numeric_limits<double>::infinity()};
-    Point high{-low[0], -low[1], -low[2]};
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-        if (mesh.vertex_element(v) != invalid_id)
-            for (std::size_t k = 0; k < 3; ++k) {
-                low[k] = std::min(low[k], mesh.deformed(v)[k]);
-                high[k] = std::max(high[k], mesh.deformed(v)[k]);
-            }
-    const Point from{1, -2, 1.2};
-    const double from_length = std::sqrt(from[0] * from[0] + from[1] * from[1] + from[2] * from[2]);
-    double diagonal = 0;
-    for (std::size_t k = 0; k < 3; ++k) diagonal += (high[k] - low[k]) * (high[k] - low[k]);
-    const double distance = std::max(std::sqrt(diagonal) / 2, 1e-300) / std::sin(20 * std::numbers::pi / 180);
-    std::string text;
-    char number[32];
-    for (std::size_t k = 0; k < 3; ++k) {
-        std::snprintf(number, sizeof number, "%.17g,", (low[k] + high[k]) / 2 + distance * from[k] / from_length);
-        text += number;
-    }
-    for (std::size_t k = 0; k < 3; ++k) {
-        std::snprintf(number, sizeof number, "%.17g,", (low[k] + high[k]) / 2);
-        text += number;
-    }
-    return text + "0,0,1";
 }
 
 struct CommandOptions {
@@ -236,7 +203,7 @@ public:
                     << (error ? ": " + error.message() : std::string()) << '\n';
                 return 2;
             }
-            frame_words = {"--colour", "plain", "--camera", camera_for(*mesh), "--cut-label",
+            frame_words = {"--colour", "plain", "--camera", renderer->default_camera(*mesh), "--cut-label",
                            std::to_string(options.cut.cut_label)};
         }
         auto frame = [&](std::size_t index) {

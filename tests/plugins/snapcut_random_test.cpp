@@ -16,18 +16,26 @@
 namespace sxk::test {
 namespace {
 
-TEST(SnapCutRandom, ThesisCube) { check_random_cuts("SnapCutRandom.ThesisCube", make_kuhn_cube(8).value(), 80, 60); }
+TEST(SnapCutRandom, ThesisCube) {
+    std::size_t dissected = 0;
+    check_random_cuts("SnapCutRandom.ThesisCube", make_kuhn_cube(8).value(), 80, 60, dissected);
+    EXPECT_GT(dissected, 0u);
+}
 
 TEST(SnapCutRandom, DelaunayOfRandomPoints) {
     std::mt19937_64 random(seed_for("SnapCutRandom.DelaunayOfRandomPoints/points"));
     std::uniform_real_distribution<double> coordinate(0, 1);
     std::vector<Point> points;
     for (int i = 0; i < 600; ++i) points.push_back({coordinate(random), coordinate(random), coordinate(random)});
-    check_random_cuts("SnapCutRandom.DelaunayOfRandomPoints", make_delaunay(points).value(), 50, 60);
+    std::size_t dissected = 0;
+    check_random_cuts("SnapCutRandom.DelaunayOfRandomPoints", make_delaunay(points).value(), 50, 60, dissected);
+    EXPECT_GT(dissected, 0u);
 }
 
 TEST(SnapCutRandom, DelaunayCylinder) {
-    check_random_cuts("SnapCutRandom.DelaunayCylinder", make_delaunay(cylinder_cloud(4, 13)).value(), 50, 60);
+    std::size_t dissected = 0;
+    check_random_cuts("SnapCutRandom.DelaunayCylinder", make_delaunay(cylinder_cloud(4, 13)).value(), 50, 60, dissected);
+    EXPECT_GT(dissected, 0u);
 }
 
 }  // namespace
