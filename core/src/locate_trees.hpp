@@ -99,6 +99,10 @@ struct BoxTree {
     std::vector<std::uint32_t> entry_of;       // by id: its entry's key, or none
     std::vector<std::uint32_t> next_member;    // by id: the next member of its entry, or none
     std::size_t live_count = 0, empty_count = 0;
+    // The mean largest side of the entries' boxes at the last load: the scale below which a query
+    // box holds few entries (elements_hit_by_triangle splits its triangle down to it). Edits do
+    // not change it; it only steers how queries are cut up, never what they find.
+    double mean_side = 0;
     std::deque<std::uint32_t> empty_order;     // keys as they became empty (refilled ones too)
     std::array<std::uint32_t, recent_size> recent;  // keys of entries that lost a member lately
     std::size_t recent_next = 0;
@@ -163,6 +167,7 @@ struct BoxTree {
         empty_order.clear();
         recent.fill(none);
         live_count = empty_count = 0;
+        mean_side = 0;
     }
     bool is_live(std::uint32_t id) const { return id < entry_of.size() && entry_of[id] != none; }
     // The box the tree holds for a live id (its entry's).
@@ -257,6 +262,14 @@ struct BoxTree {
             values[key].second = key;
         }
         live_count = values.size();
+        double sides = 0;
+        for (const Value& v : values) {
+            double side = 0;
+            for (int k = 0; k < D; ++k)
+                side = std::max(side, double(corner(v.first.max_corner(), k) - corner(v.first.min_corner(), k)));
+            sides += side;
+        }
+        mean_side = values.empty() ? 0 : sides / double(values.size());
         tree = Tree(values.begin(), values.end());
     }
     std::size_t memory_bytes() const {

@@ -237,7 +237,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     // the sweep only as the selection sees it, and then it has a snapped corner within reach of
     // the sweep (CutMarks::elements_near). So those are candidates too.
     auto phase = Clock::now();
-    std::vector<ElementId> candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c).elements;
+    std::vector<ElementId> candidates =
+        m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
     const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
     candidates.insert(candidates.end(), around.begin(), around.end());
     std::sort(candidates.begin(), candidates.end());

@@ -170,6 +170,9 @@ inline void expect_index_agrees(const SpatialIndex& index, std::mt19937_64& rng,
         std::vector<FaceId> faces = scanned.boundary_faces;
         std::sort(faces.begin(), faces.end());
         EXPECT_EQ(hits.boundary_faces, faces);
+        const TriangleHits elements_only = index.elements_hit_by_triangle(x, y, z, TriangleHitsOf::elements);
+        EXPECT_EQ(elements_only.elements, scanned.elements);
+        EXPECT_TRUE(elements_only.boundary_faces.empty());
         // the box spanned by x and y, against every element's vertices
         Point low{}, high{};
         for (std::size_t k = 0; k < 3; ++k) {

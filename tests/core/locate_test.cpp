@@ -263,8 +263,10 @@ TEST(SpatialIndex, AgreesWithAScanOnAGridACubeAndASurface) {
 }
 
 // Large triangles oblique to the axes (a scalpel's sweep) are gathered from the boxes of their
-// pieces where one box would hold too many elements (locate_triangle_sweep.cpp): on a cube of
-// 16,464 tetrahedra, slivers and broad triangles in every direction meet what a scan finds.
+// pieces (locate_triangle_sweep.cpp): on a cube of 16,464 tetrahedra, slivers and broad
+// triangles in every direction meet what a scan finds, and so do triangles a hundred times the
+// cube's size (more than the 1024 pieces the triangle is cut into before any lookup), with and
+// without the boundary faces.
 TEST(SpatialIndex, LongObliqueTrianglesMeetWhatAScanFinds) {
     const std::uint64_t seed = test::seed_for("SpatialIndex.LongObliqueTrianglesMeetWhatAScanFinds");
     std::mt19937_64 rng(seed);
@@ -283,16 +285,24 @@ TEST(SpatialIndex, LongObliqueTrianglesMeetWhatAScanFinds) {
         return x;
     };
     for (int i = 0; i < 60; ++i) {
-        const Point a = anywhere(), b = anywhere();
-        Point c = anywhere();
+        Point a = anywhere(), b = anywhere(), c = anywhere();
         if (i % 2 == 0)  // a sliver: c a little off a
             for (std::size_t k = 0; k < 3; ++k) c[k] = a[k] + (c[k] - a[k]) * 1e-3;
+        if (i % 5 == 4)  // a hundred times larger, about the cube's middle
+            for (Point* x : {&a, &b, &c})
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const double middle = (low[k] + high[k]) / 2;
+                    (*x)[k] = middle + 100 * ((*x)[k] - middle);
+                }
         const TriangleHits hits = index.elements_hit_by_triangle(a, b, c);
         const TriangleHits scanned = test::scan_triangle(mesh, a, b, c, Positions::deformed);
         EXPECT_EQ(hits.elements, scanned.elements) << "triangle " << i;
         std::vector<FaceId> faces = scanned.boundary_faces;
         std::sort(faces.begin(), faces.end());
         EXPECT_EQ(hits.boundary_faces, faces) << "triangle " << i;
+        const TriangleHits elements_only = index.elements_hit_by_triangle(a, b, c, TriangleHitsOf::elements);
+        EXPECT_EQ(elements_only.elements, scanned.elements) << "triangle " << i;
+        EXPECT_TRUE(elements_only.boundary_faces.empty()) << "triangle " << i;
     }
     EXPECT_TRUE(mesh.validate().ok());
 }

@@ -6,12 +6,13 @@
 // several runs of the cut on fresh copies, and their ratio between the meshes - the peer is the
 // small femur, as a step must cost the same on a mesh 6 times larger.
 //
-//   snapcut_latency PATH [--substeps N] NAME=MESH.ele [NAME=MESH.ele ...]
+//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=MESH.ele [NAME=MESH.ele ...]
 //
 // The first mesh is the peer of the others. --substeps N replays each movement of the path as N
-// movements (handle and tip interpolated linearly): the same cut at a haptic device's rate, where
-// a step moves the blade a fraction of an element; the work of a step then follows the faces it
-// crosses, and "per dissected face" compares the meshes at equal work.
+// movements (handle and tip interpolated linearly); --rate HZ as many as a device sampling at HZ
+// takes over the movement's time in the path (--rate 1000: a haptic loop's steps). A step then
+// moves the blade a fraction of an element; its work follows the faces it crosses, and "per
+// dissected face" compares the meshes at equal work.
 //
 // stdout: JSON lines (CONTRIBUTING.md "Benchmarks"); stderr: a table per mesh.
 #include <algorithm>
@@ -53,6 +54,7 @@ struct Figures {
     std::size_t dissected = 0;
     long long new_elements = 0;
     double searched = 0, hit = 0;  // elements searched, edges hit: means over the cutting steps
+    double rounds = 0;  // selection rounds (sweeps and their repeats): mean over the cutting steps
     double per_face = 0;  // ms of cutting steps per dissected face
 };
 
@@ -75,6 +77,7 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
             if (r.edges_hit == 0) continue;  // steps that cut: the others only move the scalpel
             f.searched += double(r.elements_searched);
             f.hit += double(r.edges_hit);
+            f.rounds += double(r.sweeps + r.repeats);
             step.push_back(r.seconds * 1e3);
             select.push_back(r.seconds_select * 1e3);
             snap.push_back(r.seconds_snap * 1e3);
@@ -106,14 +109,15 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     f.cutting_steps = step.size() / runs;
     f.searched /= double(step.size());
     f.hit /= double(step.size());
+    f.rounds /= double(step.size());
     std::fprintf(stderr,
                  "%s (%zu tets): %zu cutting steps, median %.3f ms, p99 %.3f, max %.3f; phases median/p99: select "
                  "%.3f/%.3f, snap %.3f/%.3f, dissect %.3f/%.3f, degeneracy %.3f/%.3f, pieces %.3f/%.3f; %zu faces "
-                 "dissected, %+lld elements, %.3f ms per dissected face; per step %.0f elements searched, %.0f edges hit; "
-                 "index %.2f s\n",
+                 "dissected, %+lld elements, %.3f ms per dissected face; per step %.0f elements searched, %.0f edges hit, "
+                 "%.1f selection rounds; index %.2f s\n",
                  name.c_str(), f.elements, f.cutting_steps, f.median, f.p99, f.max, f.select, f.select99, f.snap,
                  f.snap99, f.dissect, f.dissect99, f.degeneracy, f.degeneracy99, f.pieces, f.pieces99, f.dissected,
-                 f.new_elements, f.per_face, f.searched, f.hit, f.index_build);
+                 f.new_elements, f.per_face, f.searched, f.hit, f.rounds, f.index_build);
     return f;
 }
 
@@ -127,36 +131,48 @@ void line(const std::string& name, const char* unit, double ours, double peer, c
 }  // namespace
 
 int main(int argc, char** argv) {
+    const char* usage = "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=MESH.ele [NAME=MESH.ele ...]\n";
     int first_mesh = 2;
-    int substeps = 1;
+    int substeps = 1;  // per movement
+    double rate = 0;   // samples per second of the path's time column (0: by substeps)
     if (argc > 3 && std::string(argv[2]) == "--substeps") {
         substeps = std::atoi(argv[3]);
         first_mesh = 4;
+    } else if (argc > 3 && std::string(argv[2]) == "--rate") {
+        rate = std::atof(argv[3]);
+        first_mesh = 4;
+        if (!(rate > 0)) substeps = 0;
     }
     if (argc <= first_mesh || substeps < 1) {
-        std::fprintf(stderr, "usage: snapcut_latency PATH [--substeps N] NAME=MESH.ele [NAME=MESH.ele ...]\n");
+        std::fprintf(stderr, "%s", usage);
         return 2;
     }
     try {
         const std::array<int, 1> columns{6};
         std::vector<Scalpel> samples;
+        std::vector<double> times;
         for (const sxk::ToolSample& sample : sxk::read_tool_path(argv[1], columns).samples) {
             const auto& v = sample.values;
             samples.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+            times.push_back(sample.time);
         }
         std::vector<Scalpel> path{samples.front()};
-        for (std::size_t i = 1; i < samples.size(); ++i)
-            for (int j = 1; j <= substeps; ++j) {
-                const double s = double(j) / substeps;
+        for (std::size_t i = 1; i < samples.size(); ++i) {
+            const int parts = rate > 0 ? std::max(1, int(std::lround((times[i] - times[i - 1]) * rate))) : substeps;
+            for (int j = 1; j <= parts; ++j) {
+                const double s = double(j) / parts;
                 Scalpel between;
                 for (std::size_t k = 0; k < 3; ++k) {
                     between.handle[k] = samples[i - 1].handle[k] + s * (samples[i].handle[k] - samples[i - 1].handle[k]);
                     between.tip[k] = samples[i - 1].tip[k] + s * (samples[i].tip[k] - samples[i - 1].tip[k]);
                 }
-                if (j == substeps) between = samples[i];  // the sample itself, not a rounding of it
+                if (j == parts) between = samples[i];  // the sample itself, not a rounding of it
                 path.push_back(between);
             }
-        const std::string how = substeps == 1 ? "" : " (" + std::to_string(substeps) + " substeps)";
+        }
+        const std::string how = rate > 0         ? " (at " + std::to_string(std::lround(rate)) + " Hz)"
+                                : substeps == 1 ? ""
+                                                : " (" + std::to_string(substeps) + " substeps)";
         std::vector<Figures> all;
         for (int i = first_mesh; i < argc; ++i) {
             const std::string arg = argv[i];

@@ -79,6 +79,10 @@ struct TriangleHits {
     std::vector<FaceId> boundary_faces;
 };
 
+// What elements_hit_by_triangle looks for: a cutter that only selects among the elements skips
+// the boundary faces' tree (half the query's time on a scalpel's sweep).
+enum class TriangleHitsOf { elements_and_boundary_faces, elements };
+
 // The point of the boundary nearest a query. barycentric[j] weighs face_simplex(face).vertex(j),
 // j < d (a boundary face has d vertices).
 struct BoundaryPoint {
@@ -141,10 +145,11 @@ public:
     std::vector<ElementId> elements_crossed(const Point& a, const Point& b) const;
 
     // The elements whose closed simplex meets the closed triangle (a, b, c), and the boundary
-    // faces it meets (exactly), sorted by id. A degenerate triangle (collinear corners) is the
-    // segment between its two farthest corners. Candidates: the elements whose boxes meet the
-    // triangle's bounding box.
-    TriangleHits elements_hit_by_triangle(const Point& a, const Point& b, const Point& c) const;
+    // faces it meets (exactly; none with TriangleHitsOf::elements), sorted by id. A degenerate
+    // triangle (collinear corners) is the segment between its two farthest corners. Candidates:
+    // the elements whose boxes meet the boxes of pieces of the triangle.
+    TriangleHits elements_hit_by_triangle(const Point& a, const Point& b, const Point& c,
+                                          TriangleHitsOf what = TriangleHitsOf::elements_and_boundary_faces) const;
 
     // The elements with at least one vertex in the closed axis-aligned box [low, high] (each
     // coordinate compared exactly), sorted by id: what a brush of that size touches. Planar
