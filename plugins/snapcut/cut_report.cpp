@@ -15,7 +15,10 @@ nlohmann::ordered_json to_json(const CutStepReport& r) {
     json["edges_hit"] = r.edges_hit;
     json["faces_selected"] = r.faces_selected;
     json["faces_dissected"] = r.faces_dissected;
+    json["placement_error"] = r.placement_error;
+    json["placement_error_local"] = r.placement_error_local;
     json["incision_error"] = r.incision_error;
+    json["incision_error_local"] = r.incision_error_local;
     json["nodes_snapped"] = r.nodes_snapped;
     json["nodes_partly_snapped"] = r.nodes_partly_snapped;
     json["nodes_refused"] = r.nodes_refused;

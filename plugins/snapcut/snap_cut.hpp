@@ -90,11 +90,15 @@ struct CutStepReport {
     std::size_t edges_hit = 0;         // edges the sweeps crossed for the first time
     std::size_t faces_selected = 0;    // interior faces selected (§3.2.1)
     std::size_t faces_dissected = 0;   // of those, faces that opened
-    // The farthest corner of a face the step opened from the sweeps of the last 8 steps (a face
-    // opens once the faces around its corners close up, which may take a few steps after the
-    // sweep that selected it), in the deformed positions right after the dissection: how
-    // closely the incision follows the scalpel.
-    double incision_error = 0;
+    // How closely the incision follows the scalpel: the farthest corner of a face the step
+    // selected from the sweeps of the last 8 steps, in the deformed positions right after the
+    // snapping (placement), and of a face the step opened, right after the dissection (incision:
+    // a face opens once the faces around its corners close up, which may take a few steps after
+    // the sweep that selected it; on a deforming body the relaxations between have moved it with
+    // the material). Each also relative to the corner's own mesh size: the distance over the mean
+    // length of the edges at the corner (the femur's interior edges are up to 7 times its mean).
+    double placement_error = 0, placement_error_local = 0;
+    double incision_error = 0, incision_error_local = 0;
     std::size_t nodes_snapped = 0;
     std::size_t nodes_partly_snapped = 0;  // of the snapped, moved only part of the way to the sweep
     std::size_t nodes_refused = 0;     // listed with reasons in `refusals`
@@ -165,6 +169,9 @@ private:
     // The distance from p to the nearest of the sweeps sweep_index - 15 .. sweep_index (the last
     // 8 steps').
     double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const;
+    // Raises `farthest` to v's distance_to_recent_sweeps and `farthest_local` to that over the
+    // mean length of v's edges (CutStepReport::placement_error, incision_error).
+    void note_distance(VertexId v, std::uint32_t sweep_index, double& farthest, double& farthest_local) const;
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
 

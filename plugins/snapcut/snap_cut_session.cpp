@@ -68,6 +68,19 @@ double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) 
     return longest;
 }
 
+// The mean length of the edges at v, deformed positions: the mesh's size where v is.
+double mean_edge_at(const Mesh& mesh, VertexId v) {
+    std::vector<VertexId> neighbours;
+    for (const ElementId t : star(mesh, v))
+        for (const VertexId w : mesh.simplex(t).vertices())
+            if (w != v) neighbours.push_back(w);
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    double sum = 0;
+    for (const VertexId w : neighbours) sum += length(mesh.deformed(v), mesh.deformed(w));
+    return sum / double(neighbours.size());
+}
+
 }  // namespace
 
 double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const {
@@ -81,6 +94,13 @@ double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t s
         nearest = std::min(nearest, length(p, q));
     }
     return nearest;
+}
+
+void SnapCutSession::note_distance(VertexId v, std::uint32_t sweep_index, double& farthest,
+                                   double& farthest_local) const {
+    const double away = distance_to_recent_sweeps(mesh().deformed(v), sweep_index);
+    farthest = std::max(farthest, away);
+    if (away > 0) farthest_local = std::max(farthest_local, away / mean_edge_at(mesh(), v));
 }
 
 void SnapCutSession::relax(StepReport& report) {
@@ -270,7 +290,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     std::vector<VertexId> touched;  // whose stars the degeneracy removal looks at
     if (m_options.snap) {
         for (const NodeToSnap& node : nodes) m_marks.extend_reach(longest_edge_around(mesh, m_marks, node.node));
-        SnapResult snapped = snap_nodes(mesh, nodes, m_marks.sweeps(), m_options.min_snap_aspect_ratio);
+        SnapResult snapped = snap_nodes(mesh, nodes, m_marks, m_options.min_snap_aspect_ratio);
         for (std::size_t i = 0; i < snapped.snapped.size(); ++i)
             m_marks.add_snapped(snapped.snapped[i], snapped.snapped_from[i]);
         m_last.nodes_snapped += snapped.snapped.size();
@@ -281,6 +301,9 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         report.actions.push_back("snapped " + std::to_string(snapped.snapped.size()) + " nodes, refused " +
                                  std::to_string(snapped.refused.size()));
     }
+    for (const Simplex& face : faces)
+        for (const VertexId v : face.vertices())
+            note_distance(v, sweep_index, m_last.placement_error, m_last.placement_error_local);
     m_last.seconds_snap += seconds_since(phase);
 
     // 3. dissect (§7.3). A selected face opens only once the faces around its corners separate
@@ -304,7 +327,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     for (const FaceId f : dissected->opened) {
         const Simplex face = mesh.face_simplex(f);  // by value: a range over a temporary's span dangles
         for (const VertexId v : face.vertices())
-            m_last.incision_error = std::max(m_last.incision_error, distance_to_recent_sweeps(mesh.deformed(v), sweep_index));
+            note_distance(v, sweep_index, m_last.incision_error, m_last.incision_error_local);
     }
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");

@@ -58,6 +58,28 @@ TEST(SxkCutSnap, CutsTheCubeAlongThePathAndReportsEachStep) {
     EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
 }
 
+// tools/incision-distance (docs/snapcut.md "The femur") on the same cut: the 9 x 5 grid nodes at
+// x = 3 and the 36 copies the dissection made, snapped onto the blade's plane x = 3.3, lie on the
+// swept surface; without snapping they stay 0.3 from it, every one.
+TEST(SxkCutSnap, TheIncisionDistanceToolMeasuresHowFarTheCutIsFromTheSweep) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const std::string tool = SXK_SOURCE_DIR "/tools/incision-distance";
+    ASSERT_EQ(f.cut(path).exit_code, 0);
+    const ProcessResult snapped = run_program(tool, {f.out.string(), path.string(), "--h", "1"});
+    ASSERT_EQ(snapped.exit_code, 0) << snapped.err;
+    EXPECT_EQ(snapped.out.substr(0, snapped.out.find('\n')),
+              "81 corners, in h: mean 0.000, median 0.000, p95 0.000, max 0.000, above 0.5: 0");
+    ASSERT_EQ(f.cut(path, {"--no-snap"}).exit_code, 0);
+    const ProcessResult unsnapped = run_program(tool, {f.out.string(), path.string(), "--h", "1"});
+    ASSERT_EQ(unsnapped.exit_code, 0) << unsnapped.err;
+    EXPECT_EQ(unsnapped.out.substr(0, unsnapped.out.find('\n')),
+              "81 corners, in h: mean 0.300, median 0.300, p95 0.300, max 0.300, above 0.5: 0");
+    const ProcessResult bad = run_program(tool, {f.cube.string(), path.string()});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_EQ(bad.err, "incision-distance: no face with the cut label, or a path of fewer than 2 samples\n");
+}
+
 TEST(SxkCutSnap, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
     CutFixture f;
     const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--undo", "all"});

@@ -4,10 +4,11 @@
 // sideways by 4 N, E = 1e6), cut through the shaft by the 20-sample curved path of
 // tests/data/paths/femur-shaft.path with the simulation relaxed after every step. Then: a valid
 // mesh with no element inverted or flat in either configuration; no degenerate element on the cut
-// (TetGen's own boundary needles, about 30, are not the cut's); the bone in two pieces; every
-// dissected face within 1.5 mean edge lengths of the scalpel's sweep right after its dissection
-// (CutStepReport::incision_error; the issue's half edge length is not met, see below); and
-// undoing every step gives the deformed femur of before the cut back exactly.
+// (TetGen's own boundary needles, about 30, are not the cut's); the bone in two pieces; the
+// corners of the cut's faces about half the local edge length from the scalpel's sweep at most
+// (CutStepReport::placement_error_local, incision_error_local; the issue's half edge length is
+// not quite met, see below); and undoing every step gives the deformed femur of before the cut
+// back exactly.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -86,7 +87,7 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
     const std::array<int, 1> columns{6};
     const ToolPath path = read_tool_path(SXK_TEST_DATA_DIR "/paths/femur-shaft.path", columns);
     ASSERT_EQ(path.samples.size(), 20u);
-    double farthest = 0, cutting = 0, relaxing = 0;
+    double placed = 0, placed_local = 0, farthest = 0, farthest_local = 0, cutting = 0, relaxing = 0;
     std::size_t loose = 0;
     for (std::size_t i = 0; i < path.samples.size(); ++i) {
         const auto& v = path.samples[i].values;
@@ -96,22 +97,28 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
         EXPECT_EQ(session->last_step().relax_refusal, "") << "step " << i;
         loose += session->last_step().loose_pieces.size();
         // the faces this step opened, right after the dissection (before the relaxation moves them)
+        placed = std::max(placed, session->last_step().placement_error);
+        placed_local = std::max(placed_local, session->last_step().placement_error_local);
         farthest = std::max(farthest, session->last_step().incision_error);
+        farthest_local = std::max(farthest_local, session->last_step().incision_error_local);
         cutting += session->last_step().seconds - session->last_step().seconds_relax;
         relaxing += session->last_step().seconds_relax;
     }
     const std::set<Simplex> cut = cut_faces(mesh);
-    std::printf("[ femur    ] %zu cut faces, farthest corner %.3g h from the sweep, %zu loose pieces; %.2f s cutting, "
-                "%.2f s relaxing\n",
-                cut.size(), farthest / h, loose, cutting, relaxing);
+    std::printf("[ femur    ] %zu cut faces; farthest corner from the sweep as placed %.3g h (%.3g of its own mean "
+                "edge), as opened %.3g h (%.3g); %zu loose pieces; %.2f s cutting, %.2f s relaxing\n",
+                cut.size(), placed / h, placed_local, farthest / h, farthest_local, loose, cutting, relaxing);
     const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
     ASSERT_TRUE(valid) << valid.reason();
     EXPECT_GT(cut.size(), 300u);
-    // The issue asks for half the mean edge length h. Not met: on the static femur the farthest
-    // corner is 0.83 h from the sweep (a node whose star would invert even a quarter of the way
-    // stays where it is, up to half its edge from the crossing that marked it, and the femur has
-    // edges of twice h); on the deforming one 1.44 h (a face opens up to a few steps after the
-    // sweep that selected it, and the relaxations between have moved it). docs/snapcut.md.
+    // The issue asks for half an edge length h. Against the mesh's size at each corner (the mean
+    // length of its edges) the farthest corner is at 0.50 of it as placed and 0.53 as opened;
+    // against the femur's mean edge length (its interior edges are up to 7 times longer) at
+    // 1.44 h: a node 1.45 h ahead of the blade, on an edge 3 h long, snapped onto the plane of
+    // its sweep. Not met (docs/snapcut.md "The femur"); the bounds below leave room for the
+    // rounding of other compilers, not for a regression.
+    EXPECT_LE(placed_local, 0.55);
+    EXPECT_LE(farthest_local, 0.6);
     EXPECT_LE(farthest, 1.5 * h);
     // the bone in two: one piece came loose, and the simulation held it
     EXPECT_EQ(connected_components(mesh).count, 2u);
