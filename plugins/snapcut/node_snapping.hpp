@@ -1,10 +1,7 @@
 // Node snapping of the snap cut (thesis §3.2.2, Fig. 3.6): the corners of the selected faces
 // move onto the sweep, so that the incision follows the scalpel instead of the mesh's faces.
 //
-//   interior node v:  w = the point of the swept surface nearest v (the sweeps next to the one
-//                     that marked v); when that point is on the blade where the step left it
-//                     (v is ahead of the blade), the orthogonal projection of v onto the plane
-//                     of its sweep, as in the thesis
+//   interior node v:  w = the orthogonal projection of v onto the sweep's plane
 //   boundary node v:  for each boundary face f around v, w_f = the projection of v onto the line
 //                     where the sweep's plane meets f's plane, kept when w_f lies in f; w is the
 //                     w_f nearest v (a flat surface keeps its shape)
@@ -19,14 +16,9 @@
 // reference corners (its strain, as the thesis says). The move is refused when no element of the
 // star holds w, when it would make an element of the star inverted or flat in either position set
 // (the thesis' §3.4 remedy for the inverted elements snapping made), or when it would leave one
-// below `min_aspect_ratio` (0: no such check). An interior node so refused tries the other
-// places on the sweep it may go to: the projection onto its sweep's plane, and where the sweeps
-// cross its edges that marked it (along an edge of the star, only the elements without that edge
-// can invert). When none can be reached, the node goes as far toward one as its star allows, at
-// least a quarter of the way, to 1/64 of it ("partly" snapped), to the place nearest the swept
-// surface; otherwise it stays and the refusal is reported. On the static femur these took the
-// corners of the cut's faces from 0.035 to 0.022 mean edge lengths from the sweep on average,
-// 0.29 to 0.13 at the 95th percentile (docs/snapcut.md "The femur").
+// below `min_aspect_ratio` (0: no such check). A node refused for its star's shapes goes 7/8, 3/4,
+// 1/2 or 1/4 of the way when that is allowed ("partly" snapped: on the femur this halves the
+// incision's distance from the sweep); otherwise it stays and the refusal is reported.
 #pragma once
 
 #include <cstddef>
@@ -54,6 +46,7 @@ struct SnapResult {
 };
 
 // Snaps `nodes` one after the other (each move checked against the positions of those before).
-SnapResult snap_nodes(Mesh& mesh, std::span<const NodeToSnap> nodes, const CutMarks& marks, double min_aspect_ratio);
+SnapResult snap_nodes(Mesh& mesh, std::span<const NodeToSnap> nodes, const std::vector<Sweep>& sweeps,
+                      double min_aspect_ratio);
 
 }  // namespace sxk::snapcut

@@ -290,7 +290,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     std::vector<VertexId> touched;  // whose stars the degeneracy removal looks at
     if (m_options.snap) {
         for (const NodeToSnap& node : nodes) m_marks.extend_reach(longest_edge_around(mesh, m_marks, node.node));
-        SnapResult snapped = snap_nodes(mesh, nodes, m_marks, m_options.min_snap_aspect_ratio);
+        SnapResult snapped = snap_nodes(mesh, nodes, m_marks.sweeps(), m_options.min_snap_aspect_ratio);
         for (std::size_t i = 0; i < snapped.snapped.size(); ++i)
             m_marks.add_snapped(snapped.snapped[i], snapped.snapped_from[i]);
         m_last.nodes_snapped += snapped.snapped.size();
