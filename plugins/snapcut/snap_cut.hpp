@@ -169,9 +169,11 @@ private:
     // The distance from p to the nearest of the sweeps sweep_index - 15 .. sweep_index (the last
     // 8 steps').
     double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const;
-    // Raises `farthest` to v's distance_to_recent_sweeps and `farthest_local` to that over the
-    // mean length of v's edges (CutStepReport::placement_error, incision_error).
-    void note_distance(VertexId v, std::uint32_t sweep_index, double& farthest, double& farthest_local) const;
+    // Raises `farthest` to the largest distance_to_recent_sweeps of `corners` and `farthest_local`
+    // to the largest such distance over the mean length of the corner's edges
+    // (CutStepReport::placement_error, incision_error).
+    void note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, double& farthest,
+                        double& farthest_local) const;
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
 

@@ -96,11 +96,16 @@ double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t s
     return nearest;
 }
 
-void SnapCutSession::note_distance(VertexId v, std::uint32_t sweep_index, double& farthest,
-                                   double& farthest_local) const {
-    const double away = distance_to_recent_sweeps(mesh().deformed(v), sweep_index);
-    farthest = std::max(farthest, away);
-    if (away > 0) farthest_local = std::max(farthest_local, away / mean_edge_at(mesh(), v));
+void SnapCutSession::note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, double& farthest,
+                                    double& farthest_local) const {
+    // a corner is shared by several faces: each measured once (16 triangle distances and a star)
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    for (const VertexId v : corners) {
+        const double away = distance_to_recent_sweeps(mesh().deformed(v), sweep_index);
+        farthest = std::max(farthest, away);
+        if (away > 0) farthest_local = std::max(farthest_local, away / mean_edge_at(mesh(), v));
+    }
 }
 
 void SnapCutSession::relax(StepReport& report) {
@@ -301,9 +306,9 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         report.actions.push_back("snapped " + std::to_string(snapped.snapped.size()) + " nodes, refused " +
                                  std::to_string(snapped.refused.size()));
     }
-    for (const Simplex& face : faces)
-        for (const VertexId v : face.vertices())
-            note_distance(v, sweep_index, m_last.placement_error, m_last.placement_error_local);
+    std::vector<VertexId> corners;
+    for (const Simplex& face : faces) corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
+    note_distances(std::move(corners), sweep_index, m_last.placement_error, m_last.placement_error_local);
     m_last.seconds_snap += seconds_since(phase);
 
     // 3. dissect (§7.3). A selected face opens only once the faces around its corners separate
@@ -324,11 +329,12 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         touched.push_back(copy);
         if (m_marks.snapped(original)) m_marks.add_snapped(copy, m_marks.selection_position(mesh, original));
     }
+    corners.clear();
     for (const FaceId f : dissected->opened) {
         const Simplex face = mesh.face_simplex(f);  // by value: a range over a temporary's span dangles
-        for (const VertexId v : face.vertices())
-            note_distance(v, sweep_index, m_last.incision_error, m_last.incision_error_local);
+        corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
     }
+    note_distances(std::move(corners), sweep_index, m_last.incision_error, m_last.incision_error_local);
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
     m_last.seconds_dissect += seconds_since(phase);
