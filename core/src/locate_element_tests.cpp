@@ -100,10 +100,8 @@ bool triangle_meets_points(const Mesh& mesh, const detail::ElementPoints& e, con
             return CGAL::do_intersect(query, Kernel::Triangle_2(to_cgal_2(*p[0]), to_cgal_2(*p[1]), to_cgal_2(*p[2])));
         return CGAL::do_intersect(query, Kernel::Segment_2(to_cgal_2(*p[0]), to_cgal_2(*p[1])));
     }
+    if (e.count == 4) return triangle_meets_tetrahedron(a, b, c, *p[0], *p[1], *p[2], *p[3]);
     const Kernel::Triangle_3 query(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c));
-    if (e.count == 4)
-        return CGAL::do_intersect(query, Kernel::Tetrahedron_3(to_cgal_3(*p[0]), to_cgal_3(*p[1]), to_cgal_3(*p[2]),
-                                                               to_cgal_3(*p[3])));
     if (e.count == 3) {
         if (collinear(*p[0], *p[1], *p[2])) {  // a face of a flat tetrahedron
             const auto ends = farthest_pair(*p[0], *p[1], *p[2]);

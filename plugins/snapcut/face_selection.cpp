@@ -45,7 +45,7 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     // (816 elements searched per step on the 213k femur before, 403 after), each with a margin
     // for the rounding.
     constexpr double margin = 1 + 1e-9;
-    std::vector<ElementId> near;
+    std::vector<ElementId> near, around;
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
          it != m_tree->tree.qend(); ++it) {
         const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
@@ -57,7 +57,9 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
         }
         if (!(d2 <= m_reach * m_reach * margin)) continue;
         const VertexId v = it->second;
-        for (const ElementId t : star(mesh, v)) {
+        around.clear();
+        collect_star(mesh, v, mesh.vertex_element(v), around);
+        for (const ElementId t : around) {
             double farthest2 = 0;
             for (const VertexId corner : mesh.simplex(t).vertices()) {
                 const Point& q = selection_position(mesh, corner);
@@ -84,7 +86,16 @@ std::optional<CutMarks::Mark> CutMarks::mark(VertexId a, VertexId b) const {
 }
 
 void CutMarks::add_mark(VertexId a, VertexId b, const Mark& mark) {
-    if (m_marks.emplace(key(a, b), mark).second) m_mark_order.push_back(key(a, b));
+    if (!m_marks.emplace(key(a, b), mark).second) return;
+    m_mark_order.push_back(key(a, b));
+    count_marks_at(key(a, b), +1);
+}
+
+void CutMarks::count_marks_at(std::uint64_t key, int change) {
+    for (const auto v : {static_cast<VertexId>(key >> 32), static_cast<VertexId>(key & 0xffffffffu)}) {
+        if (v >= m_marks_at.size()) m_marks_at.resize(std::size_t{v} + 1, 0);
+        m_marks_at[v] = static_cast<std::uint32_t>(static_cast<std::int64_t>(m_marks_at[v]) + change);
+    }
 }
 
 std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
@@ -104,6 +115,7 @@ CutMarks::Checkpoint CutMarks::checkpoint() const {
 
 void CutMarks::restore(const Checkpoint& checkpoint) {
     while (m_mark_order.size() > checkpoint.marks) {
+        count_marks_at(m_mark_order.back(), -1);
         m_marks.erase(m_mark_order.back());
         m_mark_order.pop_back();
     }
@@ -149,7 +161,8 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
         for (int i = 0; i < 4; ++i)
             for (int j = i + 1; j < 4; ++j) {
                 const VertexId u = s.vertex(i), v = s.vertex(j);
-                std::optional<CutMarks::Mark> mark = marks.mark(u, v);
+                std::optional<CutMarks::Mark> mark;
+                if (marks.has_marked_edge(u) && marks.has_marked_edge(v)) mark = marks.mark(u, v);
                 if (!mark) {
                     const std::uint64_t edge = (std::uint64_t{u} << 32) | v;  // u < v: canonical order
                     if (missed.contains(edge)) continue;

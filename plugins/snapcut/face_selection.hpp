@@ -68,6 +68,9 @@ public:
 
     // The mark of edge {a, b}, if a sweep crossed it.
     std::optional<Mark> mark(VertexId a, VertexId b) const;
+    // Whether some marked edge ends at v: the selection asks it before looking an edge up (most
+    // elements along the blade have no marked edge, and a lookup costs a hash each).
+    bool has_marked_edge(VertexId v) const { return v < m_marks_at.size() && m_marks_at[v] > 0; }
     void add_mark(VertexId a, VertexId b, const Mark& mark);
     std::size_t mark_count() const { return m_marks.size(); }
 
@@ -109,6 +112,8 @@ private:
     static std::uint64_t key(VertexId a, VertexId b);
     std::unordered_map<std::uint64_t, Mark> m_marks;
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
+    std::vector<std::uint32_t> m_marks_at;    // per vertex id, the marked edges ending there
+    void count_marks_at(std::uint64_t key, int change);
     std::unordered_map<VertexId, Point> m_unsnapped;
     std::vector<VertexId> m_snapped_order;
     struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)

@@ -46,6 +46,13 @@ SXK_API Sign compare_distances_to_plane(const Point& a, const Point& b, const Po
 SXK_API bool segment_meets_triangle(const Point& a, const Point& b, const Point& p, const Point& q,
                                     const Point& r);
 
+// The closed triangle (a, b, c) meets the closed tetrahedron (p0, p1, p2, p3), exactly: what the
+// spatial index asks of every element along a scalpel's sweep. Decided by orientation signs, each
+// through its static filter (CGAL's own test when the triangle is collinear or the tetrahedron
+// flat).
+SXK_API bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, const Point& p0,
+                                        const Point& p1, const Point& p2, const Point& p3);
+
 // Exact orientation of element t in the chosen positions, taking the simplex sign into account:
 // positive means the element is correctly oriented (counter-clockwise triangle, positive
 // volume tetrahedron). Only defined when topological == ambient dimension; for triangle

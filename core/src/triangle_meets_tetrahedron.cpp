@@ -1,0 +1,98 @@
+// triangle_meets_tetrahedron (sxk/predicates.hpp): a closed triangle against a closed
+// tetrahedron, decided by orientation signs.
+//
+// Why not CGAL::do_intersect(Triangle_3, Tetrahedron_3): the kernel filters that test as a
+// whole, so every call runs the whole construction-free algorithm in interval arithmetic; no
+// call profits from the static filters of the orientation tests it is made of. The snap cutter
+// asks it of every element along the blade (about 500 per sweep on the 1.2M femur), where it was
+// half of the spatial index's time per sweep (docs/performance.md "snapcut"). Here every decision
+// is one orientation sign (static filter first); CGAL's test remains for a collinear triangle or
+// a flat tetrahedron. tests/core/predicates_test.cpp holds the two against each other on
+// configurations that are degenerate almost everywhere.
+//
+// Why these steps suffice. If T and K meet, their common part Q is convex. Either a vertex of
+// the slice K ∩ plane(T) lies in T (that vertex is where an edge of K meets the plane), or Q
+// reaches the boundary of T (Q holds a point of T, the slice a vertex outside T, and the segment
+// between them lies in the slice and leaves T), so an edge of T meets K: either a corner of T is
+// in K or the edge crosses a face of K. Conversely each of those is a common point.
+#include <array>
+
+#include "cgal_kernel.hpp"
+#include "line_crossing.hpp"
+#include "sxk/predicates.hpp"
+
+namespace sxk {
+namespace {
+
+using detail::line_through_triangle;
+using detail::sign_of;
+using detail::to_cgal_3;
+
+// Face i of the tetrahedron (p0, p1, p2, p3) is opposite corner i, ordered so that
+// orient3d(face, p_i) has the sign of orient3d(p0, p1, p2, p3): an even permutation each.
+constexpr std::array<std::array<int, 3>, 4> faces{{{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}};
+constexpr std::array<std::array<int, 2>, 6> edges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
+bool cgal_test(const std::array<const Point*, 3>& t, const std::array<const Point*, 4>& p) {
+    using K = detail::Kernel;
+    return CGAL::do_intersect(K::Triangle_3(to_cgal_3(*t[0]), to_cgal_3(*t[1]), to_cgal_3(*t[2])),
+                              K::Tetrahedron_3(to_cgal_3(*p[0]), to_cgal_3(*p[1]), to_cgal_3(*p[2]), to_cgal_3(*p[3])));
+}
+
+}  // namespace
+
+bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, const Point& p0, const Point& p1,
+                                const Point& p2, const Point& p3) {
+    const std::array<const Point*, 3> t{&a, &b, &c};
+    const std::array<const Point*, 4> p{&p0, &p1, &p2, &p3};
+    const int volume = sign_of(orient3d(p0, p1, p2, p3));
+    if (volume == 0 || collinear(a, b, c)) return cgal_test(t, p);
+
+    // the plane of T: all corners of K strictly on one side separate them
+    std::array<int, 4> side{};
+    int above = 0, below = 0;
+    for (std::size_t i = 0; i < 4; ++i) {
+        side[i] = sign_of(orient3d(a, b, c, *p[i]));
+        above += side[i] > 0;
+        below += side[i] < 0;
+    }
+    if (above == 4 || below == 4) return false;
+
+    // the planes of K's faces: inside[i][x] > 0 when corner x of T is on the inner side of face i
+    std::array<std::array<int, 3>, 4> inside{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const auto& f = faces[i];
+        for (std::size_t x = 0; x < 3; ++x)
+            inside[i][x] = volume * sign_of(orient3d(*p[std::size_t(f[0])], *p[std::size_t(f[1])],
+                                                     *p[std::size_t(f[2])], *t[x]));
+        if (inside[i][0] < 0 && inside[i][1] < 0 && inside[i][2] < 0) return false;
+    }
+    for (std::size_t x = 0; x < 3; ++x)
+        if (inside[0][x] >= 0 && inside[1][x] >= 0 && inside[2][x] >= 0 && inside[3][x] >= 0) return true;
+
+    // an edge of K crossing T (an edge lying in T's plane is found through its ends, each on an
+    // edge of K that crosses the plane, or through the edge of T that crosses it)
+    for (const auto& [i, j] : edges) {
+        const int si = side[std::size_t(i)], sj = side[std::size_t(j)];
+        if (si * sj > 0 || (si == 0 && sj == 0)) continue;
+        if (line_through_triangle(*p[std::size_t(i)], *p[std::size_t(j)], a, b, c)) return true;
+    }
+
+    // an edge of T crossing a face of K. Its ends are outside K by now, so an edge of T lying in
+    // the plane of a face that it meets leaves that face through an edge of K: there it crosses
+    // the plane of the face on the other side of that edge (found here), or it passes through a
+    // corner of K (found above: an edge of K from that corner crosses T's plane there).
+    for (std::size_t x = 0; x < 3; ++x) {
+        const std::size_t y = (x + 1) % 3;
+        for (std::size_t i = 0; i < 4; ++i) {
+            if (inside[i][x] * inside[i][y] > 0 || (inside[i][x] == 0 && inside[i][y] == 0)) continue;
+            const auto& f = faces[i];
+            if (line_through_triangle(*t[x], *t[y], *p[std::size_t(f[0])], *p[std::size_t(f[1])],
+                                      *p[std::size_t(f[2])]))
+                return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace sxk
