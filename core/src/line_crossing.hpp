@@ -1,13 +1,18 @@
 // Where a line crossing a triangle's plane passes, by orientation signs only: the building block
-// of the segment/triangle and triangle/tetrahedron tests (predicates.hpp). Include only from .cpp
-// files in core/src.
+// of triangle_meets_tetrahedron (predicates.hpp). On CGAL's points, so that each sign is the
+// kernel's inlined orientation with its static filter (through sxk::orient3d, a library call
+// converting its four points each time, the test cost 364 ns per meeting pair instead of 302:
+// tools/bench/sweep_tests). Include only from .cpp files in core/src.
 #pragma once
 
-#include "sxk/predicates.hpp"
+#include "cgal_kernel.hpp"
 
 namespace sxk::detail {
 
-inline int sign_of(Sign s) { return static_cast<int>(s); }
+inline int orientation_sign(const Kernel::Point_3& a, const Kernel::Point_3& b, const Kernel::Point_3& c,
+                            const Kernel::Point_3& d) {
+    return static_cast<int>(CGAL::orientation(a, b, c, d));  // NEGATIVE -1, COPLANAR 0, POSITIVE 1
+}
 
 // The line through x and y passes through the closed triangle (p, q, r). Preconditions: the
 // triangle is proper (not collinear) and the line crosses its plane in one point (x and y are
@@ -15,11 +20,12 @@ inline int sign_of(Sign s) { return static_cast<int>(s); }
 // segment). The crossing lies in the triangle when the line turns the same way about its three
 // edges: orient3d(x, y, p, q), (x, y, q, r), (x, y, r, p) agree, a zero meaning the crossing is
 // on that edge's line (two zeros: on a corner; three cannot happen across a proper triangle).
-inline bool line_through_triangle(const Point& x, const Point& y, const Point& p, const Point& q, const Point& r) {
-    const int u = sign_of(orient3d(x, y, p, q));
-    const int v = sign_of(orient3d(x, y, q, r));
+inline bool line_through_triangle(const Kernel::Point_3& x, const Kernel::Point_3& y, const Kernel::Point_3& p,
+                                  const Kernel::Point_3& q, const Kernel::Point_3& r) {
+    const int u = orientation_sign(x, y, p, q);
+    const int v = orientation_sign(x, y, q, r);
     if (u * v < 0) return false;
-    const int w = sign_of(orient3d(x, y, r, p));
+    const int w = orientation_sign(x, y, r, p);
     return u * w >= 0 && v * w >= 0;
 }
 

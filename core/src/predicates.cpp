@@ -6,7 +6,6 @@
 #include <array>
 
 #include "cgal_kernel.hpp"
-#include "line_crossing.hpp"
 
 namespace sxk {
 
@@ -66,14 +65,7 @@ bool segment_meets_triangle(const Point& a, const Point& b, const Point& p, cons
         return x == y ? side.has_on(x) : CGAL::do_intersect(side, K::Segment_3(x, y));
     }
     const K::Triangle_3 triangle(t0, t1, t2);
-    if (x == y) return triangle.has_on(x);
-    // By orientation signs, each through its static filter: CGAL's do_intersect is filtered as a
-    // whole and runs in interval arithmetic every time (triangle_meets_tetrahedron.cpp). Its
-    // test stays for a segment in the triangle's plane.
-    const int sa = detail::sign_of(orient3d(p, q, r, a)), sb = detail::sign_of(orient3d(p, q, r, b));
-    if (sa * sb > 0) return false;
-    if (sa == 0 && sb == 0) return CGAL::do_intersect(triangle, K::Segment_3(x, y));
-    return detail::line_through_triangle(a, b, p, q, r);
+    return x == y ? triangle.has_on(x) : CGAL::do_intersect(triangle, K::Segment_3(x, y));
 }
 
 Sign compare_distances_to_plane(const Point& a, const Point& b, const Point& p, const Point& q,

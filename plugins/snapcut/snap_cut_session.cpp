@@ -43,8 +43,11 @@ std::vector<Simplex> labelled_faces_around(const Mesh& mesh, std::span<const Sim
         collect_star(mesh, v, mesh.vertex_element(v), around);
         for (const ElementId t : around)
             for (int i = 0; i < mesh.element_vertex_count(); ++i) {
+                // an interior face at v is met from both its elements, both in v's star: looked
+                // up (a hash of its vertices) from the one with the lower id only
                 const FaceId f = mesh.face(t, i);
-                if (mesh.mate(f) == invalid_id) continue;
+                const FaceId mate = mesh.mate(f);
+                if (mate == invalid_id || mesh.face_element(mate) < t) continue;
                 const Simplex face = mesh.face_simplex(f);
                 if (!face.contains(v) || mesh.face_label(face) != label) continue;
                 cut.push_back(Simplex(+1, face.vertices()));

@@ -105,13 +105,13 @@ TEST(Predicates, SegmentMeetsTriangleExactlyOnItsClosure) {
     EXPECT_FALSE(segment_meets_triangle({2.5, -1, 0}, {2.5, 1, 0}, a, c, b));
 }
 
-// The orientation-sign forms of segment_meets_triangle and triangle_meets_tetrahedron against
-// CGAL's do_intersect (the peer they replace), on corners drawn from a small integer grid, where
-// most configurations are degenerate somewhere (a corner on a face's plane, an edge in a plane,
-// crossings through corners and edges), and on grid corners nudged by a unit in the last place.
-TEST(Predicates, SegmentAndTriangleTestsAgreeWithCgalOnDegenerateConfigurations) {
+// triangle_meets_tetrahedron (orientation signs) against CGAL's do_intersect (the peer it
+// replaces), on corners drawn from a small integer grid, where most configurations are
+// degenerate somewhere (a corner in a face's plane, an edge in the triangle's plane, crossings
+// through corners and edges), and on grid corners nudged by a unit in the last place.
+TEST(Predicates, TriangleMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-    const std::uint64_t seed = test::seed_for("Predicates.SegmentAndTriangleTestsAgreeWithCgalOnDegenerateConfigurations");
+    const std::uint64_t seed = test::seed_for("Predicates.TriangleMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations");
     std::mt19937_64 rng(seed);
     std::uniform_int_distribution<int> coordinate(-2, 2);
     std::bernoulli_distribution nudge(0.1);
@@ -124,21 +124,13 @@ TEST(Predicates, SegmentAndTriangleTestsAgreeWithCgalOnDegenerateConfigurations)
         return x;
     };
     auto cgal = [](const Point& x) { return K::Point_3(x[0], x[1], x[2]); };
-    int tetrahedra = 0, meeting = 0, segments = 0, crossing = 0;
+    int tetrahedra = 0, meeting = 0;
     for (int round = 0; round < 200000; ++round) {
-        const Point a = draw(), b = draw(), c = draw();
-        if (collinear(a, b, c)) continue;
-        const K::Triangle_3 triangle(cgal(a), cgal(b), cgal(c));
-        const Point x = draw(), y = draw();
-        if (x != y) {
-            const bool expected = CGAL::do_intersect(triangle, K::Segment_3(cgal(x), cgal(y)));
-            ASSERT_EQ(segment_meets_triangle(x, y, a, b, c), expected) << "round " << round;
-            ++segments;
-            crossing += expected;
-        }
-        const Point p = draw(), q = draw(), r = draw(), s = draw();
-        if (orient3d(p, q, r, s) == Sign::zero) continue;
-        const bool expected = CGAL::do_intersect(triangle, K::Tetrahedron_3(cgal(p), cgal(q), cgal(r), cgal(s)));
+        const Point a = draw(), b = draw(), c = draw(), p = draw(), q = draw(), r = draw(), s = draw();
+        // CGAL's test needs a proper triangle and tetrahedron (ours hands those cases to it)
+        if (collinear(a, b, c) || orient3d(p, q, r, s) == Sign::zero) continue;
+        const bool expected = CGAL::do_intersect(K::Triangle_3(cgal(a), cgal(b), cgal(c)),
+                                                 K::Tetrahedron_3(cgal(p), cgal(q), cgal(r), cgal(s)));
         ASSERT_EQ(triangle_meets_tetrahedron(a, b, c, p, q, r, s), expected) << "round " << round;
         ++tetrahedra;
         meeting += expected;
@@ -146,8 +138,6 @@ TEST(Predicates, SegmentAndTriangleTestsAgreeWithCgalOnDegenerateConfigurations)
     // both answers occur often (the test is not one-sided)
     EXPECT_GT(meeting, tetrahedra / 10);
     EXPECT_LT(meeting, tetrahedra * 9 / 10);
-    EXPECT_GT(crossing, segments / 20);
-    EXPECT_LT(crossing, segments * 19 / 20);
 }
 
 }  // namespace
