@@ -4,11 +4,11 @@
 // Why not CGAL::do_intersect(Triangle_3, Tetrahedron_3), which it replaced: that test has no
 // early exit for a tetrahedron on one side of the triangle's plane, and most elements the spatial
 // index hands a scalpel's sweep are such (their boxes meet a piece of the sliver's box). On the
-// 1.2M femur's blade slivers (tools/bench/sweep_tests, ns per test, ours / CGAL): 69 / 425 for
-// elements with a corner in a sliver's box, 296 / 501 for the neighbours of those it meets, and
-// 302 / 231 for those it meets; about 223 candidates of which 40 meet a sweep at the haptic rate
-// (docs/performance.md "snapcut"). Every decision is one orientation sign through the kernel's
-// static filter; CGAL's test remains for a collinear triangle or a flat tetrahedron.
+// 1.2M femur's blade slivers (tools/bench/sweep_tests, ns per test, ours / CGAL): 65 / 401 for
+// elements with a corner in a sliver's box, 267 / 475 for the neighbours of those it meets, and
+// 296 / 221 for those it meets; about 223 candidates of which 40 meet a sweep at the haptic rate
+// (docs/performance.md "snapcut_latency"). Every decision is one orientation sign through the
+// kernel's static filter; a collinear triangle goes to CGAL's segment test.
 // tests/core/predicates_test.cpp holds the two against each other on configurations that are
 // degenerate almost everywhere.
 //
@@ -35,6 +35,17 @@ using detail::orientation_sign;
 constexpr std::array<std::array<std::size_t, 3>, 4> faces{{{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}}};
 constexpr std::array<std::array<std::size_t, 2>, 6> edges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
+// A collinear triangle is the segment between its two farthest corners (or a point), against a
+// proper tetrahedron: CGAL's tests, which need a proper triangle no more.
+bool collinear_meets(const std::array<Kernel::Point_3, 3>& t, const std::array<Kernel::Point_3, 4>& p) {
+    const Kernel::Tetrahedron_3 k(p[0], p[1], p[2], p[3]);
+    std::size_t from = 0, to = 1;
+    for (const auto& [i, j] : std::array<std::array<std::size_t, 2>, 2>{{{0, 2}, {1, 2}}})
+        if (CGAL::squared_distance(t[i], t[j]) > CGAL::squared_distance(t[from], t[to])) from = i, to = j;
+    if (t[from] == t[to]) return !k.has_on_unbounded_side(t[from]);
+    return CGAL::do_intersect(Kernel::Segment_3(t[from], t[to]), k);
+}
+
 }  // namespace
 
 bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, const Point& p0, const Point& p1,
@@ -44,7 +55,7 @@ bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, 
     const std::array<P, 4> p{detail::to_cgal_3(p0), detail::to_cgal_3(p1), detail::to_cgal_3(p2),
                              detail::to_cgal_3(p3)};
     // the plane of T: all corners of K strictly on one side separate them (a collinear T has no
-    // plane: every sign is zero then, and CGAL decides below)
+    // plane: every sign is zero then, as it is for no proper T and K, and CGAL decides)
     std::array<int, 4> side{};
     int above = 0, below = 0;
     for (std::size_t i = 0; i < 4; ++i) {
@@ -54,8 +65,8 @@ bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, 
     }
     if (above == 4 || below == 4) return false;
     const int volume = orientation_sign(p[0], p[1], p[2], p[3]);
-    if (volume == 0 || CGAL::collinear(t[0], t[1], t[2]))
-        return CGAL::do_intersect(Kernel::Triangle_3(t[0], t[1], t[2]), Kernel::Tetrahedron_3(p[0], p[1], p[2], p[3]));
+    if (volume == 0) return false;  // a flat tetrahedron: no element to meet (as the index has it)
+    if (above + below == 0) return collinear_meets(t, p);
 
     // the planes of K's faces: inside[i][x] > 0 when corner x of T is on the inner side of face i
     std::array<std::array<int, 3>, 4> inside{};

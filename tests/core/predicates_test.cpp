@@ -105,6 +105,19 @@ TEST(Predicates, SegmentMeetsTriangleExactlyOnItsClosure) {
     EXPECT_FALSE(segment_meets_triangle({2.5, -1, 0}, {2.5, 1, 0}, a, c, b));
 }
 
+TEST(Predicates, TriangleMeetsTetrahedronOnItsClosureAndDegenerateInputs) {
+    const Point p{0, 0, 0}, q{1, 0, 0}, r{0, 1, 0}, s{0, 0, 1};
+    EXPECT_TRUE(triangle_meets_tetrahedron({-1, -1, 0.5}, {3, -1, 0.5}, {-1, 3, 0.5}, p, q, r, s));  // slices it
+    EXPECT_TRUE(triangle_meets_tetrahedron({0.1, 0.1, 0.1}, {5, 5, 5}, {5, 0, 5}, p, q, r, s));     // a corner inside
+    EXPECT_TRUE(triangle_meets_tetrahedron({1, 0, 0}, {2, 0, 0}, {2, 1, 0}, p, q, r, s));           // touches a corner
+    EXPECT_FALSE(triangle_meets_tetrahedron({1, 1e-300, 0}, {2, 0, 0}, {2, 1, 0}, p, q, r, s));     // just misses it
+    EXPECT_FALSE(triangle_meets_tetrahedron({-1, -1, 1.5}, {3, -1, 1.5}, {-1, 3, 1.5}, p, q, r, s));
+    EXPECT_TRUE(triangle_meets_tetrahedron({0.2, 0.2, -1}, {0.2, 0.2, 1}, {0.2, 0.2, 3}, p, q, r, s));  // collinear
+    EXPECT_FALSE(triangle_meets_tetrahedron({2, 2, -1}, {2, 2, 1}, {2, 2, 3}, p, q, r, s));
+    EXPECT_TRUE(triangle_meets_tetrahedron({0.1, 0.1, 0.1}, {0.1, 0.1, 0.1}, {0.1, 0.1, 0.1}, p, q, r, s));  // a point
+    EXPECT_FALSE(triangle_meets_tetrahedron({-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}, p, q, r, {1, 1, 0}));  // flat
+}
+
 // triangle_meets_tetrahedron (orientation signs) against CGAL's do_intersect (the peer it
 // replaces), on corners drawn from a small integer grid, where most configurations are
 // degenerate somewhere (a corner in a face's plane, an edge in the triangle's plane, crossings
@@ -127,7 +140,7 @@ TEST(Predicates, TriangleMeetsTetrahedronAgreesWithCgalOnDegenerateConfiguration
     int tetrahedra = 0, meeting = 0;
     for (int round = 0; round < 200000; ++round) {
         const Point a = draw(), b = draw(), c = draw(), p = draw(), q = draw(), r = draw(), s = draw();
-        // CGAL's test needs a proper triangle and tetrahedron (ours hands those cases to it)
+        // CGAL's test needs a proper triangle and tetrahedron (ours: the test above)
         if (collinear(a, b, c) || orient3d(p, q, r, s) == Sign::zero) continue;
         const bool expected = CGAL::do_intersect(K::Triangle_3(cgal(a), cgal(b), cgal(c)),
                                                  K::Tetrahedron_3(cgal(p), cgal(q), cgal(r), cgal(s)));

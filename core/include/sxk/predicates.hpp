@@ -49,7 +49,8 @@ SXK_API bool segment_meets_triangle(const Point& a, const Point& b, const Point&
 // The closed triangle (a, b, c) meets the closed tetrahedron (p0, p1, p2, p3), exactly: what the
 // spatial index asks of every element along a scalpel's sweep. Decided by orientation signs, each
 // through its static filter, with an early exit for a tetrahedron on one side of the triangle's
-// plane (CGAL's do_intersect when the triangle is collinear or the tetrahedron flat).
+// plane. A collinear triangle is the segment between its two farthest corners; a flat
+// tetrahedron meets nothing (the index's elements_hit_by_triangle skips flat elements too).
 SXK_API bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, const Point& p0,
                                         const Point& p1, const Point& p2, const Point& p3);
 
