@@ -39,6 +39,11 @@ ToolSession::ToolSession(Mesh& mesh) : m_mesh(mesh), m_journal(mesh), m_revision
 
 ToolSession::~ToolSession() = default;
 
+std::span<const ElementId> ToolSession::elements_edited_in_step() const {
+    if (m_step_elements == nullptr) return {};
+    return *m_step_elements;
+}
+
 Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     if (m_ended) return Refusal{RefusalCode::not_applicable, "step: the session has ended"};
     EditJournal& journal = m_journal.journal();
@@ -53,6 +58,11 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     {
         EditStep step(journal);
         const ScopedWatcher watching(m_mesh, watcher);
+        m_step_elements = &watcher.elements;
+        struct Forget {  // also when apply throws: the watcher's list goes out of scope with it
+            const std::vector<ElementId>*& elements;
+            ~Forget() { elements = nullptr; }
+        } forget{m_step_elements};
         applied = apply(pose, report);
         recorded = journal.recorded() > 0;
         if (applied) (void)step.commit();

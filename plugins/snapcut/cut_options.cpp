@@ -24,6 +24,11 @@ void add_cut_options(CLI::App& app, Options& options) {
         ->check(number_in(0, true, 1, false, "[0, 1)"))
         ->capture_default_str();
     app.add_flag("--remove-loose", options.remove_loose_pieces, "Remove the pieces a step cuts loose");
+    app.add_option("--largest-crumb", options.largest_crumb,
+                   "Keep pieces of at most this many elements attached instead of cutting them loose, 0..1000 "
+                   "(0: any piece may come loose)")
+        ->check(whole_number_in(0, 1000))
+        ->capture_default_str();
     app.add_option("--relax-iterations", options.relax_iterations,
                    "With a simulation (--deform): CG iterations after each step, 1..10^8")
         ->check(whole_number_in(1, 100000000))

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 
 #include "sxk/locate.hpp"
 #include "sxk/predicates.hpp"
@@ -28,7 +29,25 @@ struct CutMarks::SnappedTree {
     static Value value(const Point& p, VertexId v) { return {Position(p[0], p[1], p[2]), v}; }
 };
 
-CutMarks::CutMarks() : m_tree(std::make_unique<SnappedTree>()) {}
+struct CutMarks::SweepTree {
+    using Position = SnappedTree::Position;
+    using Box = bg::model::box<Position>;
+    using Value = std::pair<Box, std::uint32_t>;
+    bgi::rtree<Value, bgi::quadratic<16>> tree;
+    static Box box(const Point& low, const Point& high) {
+        return {Position(low[0], low[1], low[2]), Position(high[0], high[1], high[2])};
+    }
+    static Value value(const Sweep& sweep, std::uint32_t index) {
+        Point low{}, high{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            low[k] = std::min({sweep.a[k], sweep.b[k], sweep.c[k]});
+            high[k] = std::max({sweep.a[k], sweep.b[k], sweep.c[k]});
+        }
+        return {box(low, high), index};
+    }
+};
+
+CutMarks::CutMarks() : m_tree(std::make_unique<SnappedTree>()), m_sweep_tree(std::make_unique<SweepTree>()) {}
 CutMarks::~CutMarks() = default;
 
 std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sweep) const {
@@ -100,7 +119,19 @@ void CutMarks::count_marks_at(std::uint64_t key, int change) {
 
 std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
     m_sweeps.push_back(sweep);
-    return static_cast<std::uint32_t>(m_sweeps.size() - 1);
+    const auto index = static_cast<std::uint32_t>(m_sweeps.size() - 1);
+    m_sweep_tree->tree.insert(SweepTree::value(sweep, index));
+    return index;
+}
+
+std::vector<std::uint32_t> CutMarks::sweeps_meeting_box(const Point& low, const Point& high) const {
+    std::vector<SweepTree::Value> values;
+    m_sweep_tree->tree.query(bgi::intersects(SweepTree::box(low, high)), std::back_inserter(values));
+    std::vector<std::uint32_t> found;
+    found.reserve(values.size());
+    for (const auto& value : values) found.push_back(value.second);
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 void CutMarks::add_snapped(VertexId v, const Point& was) {
@@ -110,7 +141,7 @@ void CutMarks::add_snapped(VertexId v, const Point& was) {
 }
 
 CutMarks::Checkpoint CutMarks::checkpoint() const {
-    return {m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), m_incomplete};
+    return {m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), m_incomplete, m_pending};
 }
 
 void CutMarks::restore(const Checkpoint& checkpoint) {
@@ -125,8 +156,12 @@ void CutMarks::restore(const Checkpoint& checkpoint) {
         m_unsnapped.erase(found);
         m_snapped_order.pop_back();
     }
-    m_sweeps.resize(checkpoint.sweeps);
+    while (m_sweeps.size() > checkpoint.sweeps) {
+        m_sweep_tree->tree.remove(SweepTree::value(m_sweeps.back(), static_cast<std::uint32_t>(m_sweeps.size() - 1)));
+        m_sweeps.pop_back();
+    }
     m_incomplete = checkpoint.incomplete;
+    m_pending = checkpoint.pending;
 }
 
 namespace {

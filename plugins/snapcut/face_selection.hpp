@@ -77,6 +77,31 @@ public:
     const std::vector<Sweep>& sweeps() const { return m_sweeps; }
     std::uint32_t add_sweep(const Sweep& sweep);
 
+    // Marks follow the mesh's edits (thesis §3.4: every change of the mesh must also be applied to
+    // the cutting module's references). Marks live on vertex pairs, and an edit that renames or
+    // makes vertices makes edges no sweep has seen: the tetrahedra at the incision's rim that hold
+    // them could never be completed, and the incision would stop there.
+    //
+    // A dissection's copy takes over some of its original's edges: edge {copy, x} takes the mark
+    // of {original, x0} (x0: x's original when x is a copy of the same dissection, else x), the
+    // marked end mapped along. The copy sits where its original is, as the selection sees it, so
+    // this is the mark a sweep would have given.
+    void carry_to_copies(const Mesh& mesh, std::span<const std::pair<VertexId, VertexId>> copies);
+    // The degeneracy removal's edits (a split's new vertex, a collapse's or a flip's new edges):
+    // each unmarked edge of `elements` (dead ids skipped) is tested against the sweeps so far,
+    // oldest first, and the first it crosses marks it if its nearer end is a node on the cut
+    // already (snapped). The edges are seen where they are, not where the selection sees the mesh:
+    // a split's vertex has no place from before the snapping, and an edge from a node that never
+    // moved to where a snapped one was can cross a sweep the edge as it lies does not (tried: the
+    // cube cut through in 16 steps then lost a two-element piece). And a mark that would pull a
+    // node not yet on the cut onto it is left out: the new marks join the incision's rim to the
+    // surface already cut, they do not move it.
+    void mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements);
+    // Elements that gained a marked edge outside a selection (the two calls above), sorted: they
+    // may now be complete, so the next selection looks at them (take_pending empties the list).
+    const std::vector<ElementId>& pending() const { return m_pending; }
+    std::vector<ElementId> take_pending() { return std::exchange(m_pending, {}); }
+
     // The last sweep's candidates with one or two marked corners (sorted).
     const std::vector<ElementId>& incomplete() const { return m_incomplete; }
     void set_incomplete(std::vector<ElementId> incomplete) { m_incomplete = std::move(incomplete); }
@@ -102,7 +127,7 @@ public:
 
     struct Checkpoint {
         std::size_t marks = 0, snapped = 0, sweeps = 0;
-        std::vector<ElementId> incomplete;
+        std::vector<ElementId> incomplete, pending;
     };
     Checkpoint checkpoint() const;
     // Forgets everything added since `checkpoint` (which must be older than any later one used).
@@ -120,7 +145,14 @@ private:
     std::unique_ptr<SnappedTree> m_tree;
     double m_reach = 0;  // only grows: a larger reach finds more candidates, never fewer
     std::vector<Sweep> m_sweeps;
+    struct SweepTree;  // the sweeps by their boxes (Boost.Geometry rtree)
+    std::unique_ptr<SweepTree> m_sweep_tree;
+    // The sweeps whose boxes meet the box [low, high], oldest first.
+    std::vector<std::uint32_t> sweeps_meeting_box(const Point& low, const Point& high) const;
+    // Marks {u, v} (when it has no mark) and puts the elements around the edge in pending.
+    void mark_outside_selection(const Mesh& mesh, VertexId u, VertexId v, const Mark& mark);
     std::vector<ElementId> m_incomplete;
+    std::vector<ElementId> m_pending;
 };
 
 // A face chosen for the cut, with the nodes to snap and the sweep whose plane each goes to.

@@ -32,4 +32,14 @@ struct LoosePieces {
 // With the seeds all in one component there is no loose piece.
 LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds);
 
+// Crumbs (keep_crumbs_attached.cpp). Where the incision's surface folds around a tetrahedron or
+// two at its rim (tetrahedra whose faces were selected from different sides, or that a later
+// sweep completes around a corner), opening every selected face would cut that crumb loose: a
+// piece of a few elements that then floats in the simulation (the thesis' "cut free" elements,
+// §3.3). Returns `faces` (interior faces, sorted as Simplex(+1, vertices)) less one face per
+// crumb of at most `crumb` elements that opening them would make, the crumb being closed off by
+// the boundary and the faces to open: the crumb stays on the side across that face (the lowest
+// such face by vertices, so the choice is deterministic). A face left out keeps its cut label.
+std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex> faces, std::size_t crumb);
+
 }  // namespace sxk::snapcut

@@ -10,9 +10,14 @@
 //        |  node_snapping.hpp                  (boundary nodes within their boundary faces), in
 //        |                                     the deformed positions, mapped back to the reference
 //   3. dissect (§7.3)                          the selected faces open (sxk/ops/dissect.hpp), each
-//        |                                     carrying the cut label
+//        |                                     carrying the cut label, but for one face per crumb
+//        |                                     they would cut loose; the copies take over their
+//        |                                     originals' marks
 //   4. remove degeneracies (§3.2.3)            among the elements around the snapped nodes, by the
-//        |                                     degeneracy plug-in's service when it is loaded
+//        |                                     degeneracy plug-in's service when it is loaded; the
+//        |                                     edges it makes take the marks of the sweeps they
+//        |                                     cross (§3.4), and what that completes is selected
+//        |                                     in another round
 //   5. loose pieces                            a piece the cut separated is found by a search from
 //           loose_pieces.hpp                   both sides of the new cut faces that stops at the
 //                                              smaller side: its cost is that side's, not the mesh's
@@ -73,6 +78,10 @@ struct Options {
     // flat in either position set, or give it an aspect ratio below this (0: only inverted and
     // flat are refused; degeneracy removal then deals with the thin elements, as in the thesis).
     double min_snap_aspect_ratio = 0;
+    // Crumbs: a step does not cut loose a piece of at most this many elements (0: any piece may
+    // come loose). Where the incision folds around a tetrahedron or two at its rim, one of the
+    // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached).
+    std::size_t largest_crumb = 4;
     // The face label of the cut surface (DissectOptions::cut_label).
     int cut_label = 9999;
     // Remove the pieces a step cuts loose (they are reported either way). A simulation fixes

@@ -243,9 +243,11 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
     const std::uint32_t sweep_index = m_marks.add_sweep(sweep);
     // The degeneracy removal's collapses replace edges, and with them the marks of the sweeps
     // that crossed them: the tetrahedra at the rim of the incision lose what would connect it to
-    // the next sweep (thesis §3.3, Fig. 3.17: disconnected incisions). As the thesis proposes,
-    // the sweep is then processed again: the new edges it crosses are marked, and what they
-    // complete is cut. Twice more at most; a round that selects nothing ends it.
+    // the next sweep (thesis §3.3, Fig. 3.17: disconnected incisions). The new edges take the
+    // marks of the sweeps that cross them (CutMarks::mark_from_earlier_sweeps, and the copies of
+    // a dissection those of their originals), and as the thesis proposes the sweep is then
+    // processed again: what the new marks and the new edges it crosses complete is cut. Twice
+    // more at most (what is left waits for the next sweep); a round that selects nothing ends it.
     for (int round = 0; round < 3; ++round) {
         bool edited = false;
         if (Outcome<Done> done = cut_round(sweep_index, report, edited); !done) return done;
@@ -269,6 +271,10 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
     const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
     candidates.insert(candidates.end(), around.begin(), around.end());
+    // and the elements whose edges took marks over from the last round's edits (they may be
+    // complete now, wherever the sweep is)
+    const std::vector<ElementId> pending = m_marks.take_pending();
+    candidates.insert(candidates.end(), pending.begin(), pending.end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates);
@@ -322,11 +328,13 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     phase = Clock::now();
     for (const Simplex& face : faces)
         if (!mesh.face_label(face)) mesh.set_face_label(face, m_options.cut_label);
-    const std::vector<Simplex> cut = labelled_faces_around(mesh, faces, m_options.cut_label);
+    std::vector<Simplex> cut = labelled_faces_around(mesh, faces, m_options.cut_label);
+    cut = keep_crumbs_attached(mesh, std::move(cut), m_options.largest_crumb);
     auto dissected = dissect(mesh, cut, DissectOptions{m_options.cut_label});
     if (!dissected) return dissected.refusal().prefixed("snapcut: ");
     const std::size_t opened = dissected->opened.size() / 2;
     m_last.faces_dissected += opened;
+    m_marks.carry_to_copies(mesh, dissected->new_vertices);
     for (const auto& [original, copy] : dissected->new_vertices) {
         touched.push_back(original);
         touched.push_back(copy);
@@ -349,8 +357,10 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
         removal.aspect_ratio = m_options.aspect_ratio;
         removal.large_angle = m_options.large_angle;
         const std::vector<ElementId> around = stars_of(mesh, touched);
+        const std::size_t edited_before = elements_edited_in_step().size();
         auto removed = m_services.degeneracy->remove_among(mesh, around, removal);
         if (!removed) return removed.refusal().prefixed("snapcut: degeneracy removal: ");
+        m_marks.mark_from_earlier_sweeps(mesh, elements_edited_in_step().subspan(edited_before));
         m_last.degeneracy_removal_ran = true;
         m_last.degenerates_found += removed->found;
         m_last.collapses += removed->collapses;
@@ -364,6 +374,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
                                  std::to_string(removed->collapses) + " collapses, " +
                                  std::to_string(removed->cut_free) + " cut free");
     }
+    // marks carried over to new edges may have completed tetrahedra: another round selects them
+    edited = edited || !m_marks.pending().empty();
     // the removal's collapses may lengthen edges around snapped nodes: the reach follows
     for (const VertexId v : touched)
         if (m_marks.snapped(v) && mesh.vertex_element(v) != invalid_id)

@@ -6,6 +6,9 @@
 // them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "../../fuzz/ops_driver.hpp"
 #include "fixtures.hpp"
 #include "sxk/edit_journal.hpp"
@@ -166,6 +169,48 @@ TEST(ToolSession, StepsGoToTheApplicationsJournal) {
     ASSERT_TRUE(journal.rollback().ok());
     ASSERT_TRUE(journal.undo().ok());
     EXPECT_TRUE(snapshot(mesh) == start);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
+// A tool that follows its own edits: elements_edited_in_step() grows with each edit of the step
+// (the children of a split at vertex 0), starts empty in every step, and is empty outside apply().
+class WatchfulTool final : public ToolSession {
+public:
+    using ToolSession::ToolSession;
+    std::vector<std::size_t> sizes;           // before the split, after it, per step
+    std::vector<ElementId> seen;              // what the last step's split made, as the tool saw it
+    std::vector<ElementId> made;              // what split_edge said it made
+    std::size_t outside() const { return elements_edited_in_step().size(); }
+
+protected:
+    Outcome<Done> apply(const ToolPose&, StepReport&) override {
+        sizes.push_back(elements_edited_in_step().size());
+        const Simplex& anchor = mesh().simplex(mesh().vertex_element(0));
+        auto split = split_edge(mesh(), 0, anchor.vertex(0) == 0 ? anchor.vertex(1) : anchor.vertex(0), 0.5);
+        if (!split) return split.refusal();
+        const auto edited = elements_edited_in_step();
+        sizes.push_back(edited.size());
+        seen.assign(edited.begin(), edited.end());
+        made = split->elements;
+        return Done{};
+    }
+};
+
+TEST(ToolSession, TheToolSeesTheElementsItsStepEditedSoFar) {
+    Mesh mesh = test::planar_grid(2);
+    WatchfulTool tool(mesh);
+    EXPECT_EQ(tool.outside(), 0u);
+    ASSERT_TRUE(tool.step(ToolPose{}).ok());
+    ASSERT_EQ(tool.sizes.size(), 2u);
+    EXPECT_EQ(tool.sizes[0], 0u);
+    EXPECT_GT(tool.sizes[1], 0u);
+    std::sort(tool.seen.begin(), tool.seen.end());
+    tool.seen.erase(std::unique(tool.seen.begin(), tool.seen.end()), tool.seen.end());
+    std::sort(tool.made.begin(), tool.made.end());
+    EXPECT_EQ(tool.seen, tool.made);
+    EXPECT_EQ(tool.outside(), 0u);
+    ASSERT_TRUE(tool.step(ToolPose{}).ok());  // the next step starts from nothing again
+    EXPECT_EQ(tool.sizes[2], 0u);
     EXPECT_TRUE(mesh.validate().ok());
 }
 

@@ -87,6 +87,11 @@ protected:
     // pose) restores its state of before that step. A refused apply() restores its own state
     // before it returns.
     virtual void step_taken_back() {}
+    // Inside apply(): the elements the step's edits have changed or added so far, in the order of
+    // their events (an id may repeat, and may have been removed since). It only grows during a
+    // step, so a tool that follows what its own edits made (a cutter carrying its marks over to
+    // new edges) keeps how far it has read. Empty outside apply().
+    std::span<const ElementId> elements_edited_in_step() const;
 
 private:
     Mesh& m_mesh;
@@ -97,6 +102,7 @@ private:
     enum class Kept : std::uint8_t { history_entry, application_step, nothing };
     std::vector<Kept> m_kept;
     std::uint64_t m_revision = 0;  // the mesh's revision after this session's last change
+    const std::vector<ElementId>* m_step_elements = nullptr;  // the step watcher's, during apply()
     bool m_ended = false;
 };
 

@@ -1,0 +1,75 @@
+// Crumbs a cut would make stay attached (loose_pieces.hpp).
+#include <algorithm>
+
+#include "loose_pieces.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::snapcut {
+
+namespace {
+
+Simplex unoriented(const Simplex& face) { return Simplex(+1, face.vertices()); }
+
+// An element with face `face` (interior faces have two; either), or invalid_id.
+ElementId element_with(const Mesh& mesh, const Simplex& face, std::vector<ElementId>& around) {
+    around.clear();
+    const VertexId v = face.vertex(0);
+    if (mesh.vertex_element(v) == invalid_id) return invalid_id;
+    collect_star(mesh, v, mesh.vertex_element(v), around);
+    for (const ElementId t : around) {
+        const Simplex s = mesh.simplex(t);
+        if (s.contains(face.vertex(1)) && s.contains(face.vertex(2))) return t;
+    }
+    return invalid_id;
+}
+
+}  // namespace
+
+std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex> faces, std::size_t crumb) {
+    if (crumb == 0 || faces.empty()) return faces;
+    const int n = mesh.element_vertex_count();
+    // face i of t is open after the cut: on the boundary already, or one of the faces to open
+    const auto open = [&](ElementId t, int i) {
+        const FaceId f = mesh.face(t, i);
+        return mesh.mate(f) == invalid_id || std::binary_search(faces.begin(), faces.end(), unoriented(mesh.face_simplex(f)));
+    };
+    std::vector<ElementId> sides, around;
+    for (const Simplex& face : faces) {
+        const ElementId t = element_with(mesh, face, around);
+        if (t == invalid_id) continue;
+        sides.push_back(t);
+        for (int i = 0; i < n; ++i)
+            if (mesh.neighbor(t, i) != invalid_id && unoriented(mesh.face_simplex(mesh.face(t, i))) == face)
+                sides.push_back(mesh.neighbor(t, i));
+    }
+    std::sort(sides.begin(), sides.end());
+    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+    std::vector<ElementId> piece;
+    for (const ElementId start : sides) {
+        // the piece about `start` the open faces close off, searched up to crumb + 1 elements
+        piece.assign(1, start);
+        bool larger = false;
+        for (std::size_t k = 0; k < piece.size() && !larger; ++k)
+            for (int i = 0; i < n && !larger; ++i) {
+                const ElementId next = mesh.neighbor(piece[k], i);
+                if (open(piece[k], i) || std::find(piece.begin(), piece.end(), next) != piece.end()) continue;
+                piece.push_back(next);
+                larger = piece.size() > crumb;
+            }
+        if (larger) continue;
+        // a crumb: the lowest of the faces to open around it stays closed
+        const Simplex* keep = nullptr;
+        for (const ElementId t : piece)
+            for (int i = 0; i < n; ++i) {
+                if (mesh.mate(mesh.face(t, i)) == invalid_id) continue;
+                const auto found = std::lower_bound(faces.begin(), faces.end(), unoriented(mesh.face_simplex(mesh.face(t, i))));
+                if (found != faces.end() && *found == unoriented(mesh.face_simplex(mesh.face(t, i))) &&
+                    (keep == nullptr || *found < *keep))
+                    keep = &*found;
+            }
+        if (keep != nullptr) faces.erase(faces.begin() + (keep - faces.data()));
+    }
+    return faces;
+}
+
+}  // namespace sxk::snapcut

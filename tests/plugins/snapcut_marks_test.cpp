@@ -1,0 +1,156 @@
+// Cut marks that follow the mesh's edits, and crumbs kept attached (plugins/snapcut: CutMarks::
+// carry_to_copies, mark_from_earlier_sweeps, keep_crumbs_attached), on the 2 x 2 x 2 Kuhn cube:
+// vertex (i,j,k) has id (3k + j) 3 + i, every edge climbs in x, y and z.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "face_selection.hpp"
+#include "loose_pieces.hpp"
+#include "sxk/generators.hpp"
+#include "sxk/ops/dissect.hpp"
+#include "sxk/ops/split_edge.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::test {
+namespace {
+
+using snapcut::CutMarks;
+using snapcut::Sweep;
+
+void expect_valid(const Mesh& mesh) {
+    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
+    EXPECT_TRUE(valid) << valid.reason();
+}
+
+VertexId id(int i, int j, int k) { return static_cast<VertexId>((3 * k + j) * 3 + i); }
+
+std::vector<ElementId> all_elements(const Mesh& mesh) {
+    std::vector<ElementId> all;
+    for (const ElementId t : elements(mesh)) all.push_back(t);
+    return all;
+}
+
+// A sweep in the plane x = c, large enough to cross the whole cube.
+Sweep plane_x(double c) { return {{c, -1, -1}, {c, 5, -1}, {c, -1, 5}}; }
+
+// The interior faces of the plane x = 1.
+std::vector<Simplex> faces_of_x_equals_1(const Mesh& mesh) {
+    std::set<Simplex> faces;
+    for (const ElementId t : elements(mesh))
+        for (int i = 0; i < 4; ++i) {
+            const FaceId f = mesh.face(t, i);
+            if (mesh.mate(f) == invalid_id) continue;
+            const Simplex face = mesh.face_simplex(f);
+            if (std::all_of(face.vertices().begin(), face.vertices().end(),
+                            [&](VertexId v) { return mesh.reference(v)[0] == 1.0; }))
+                faces.insert(Simplex(+1, face.vertices()));
+        }
+    return {faces.begin(), faces.end()};
+}
+
+TEST(SnapCutMarks, ADissectionCopyTakesTheMarksOfItsOriginalsEdges) {
+    Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    const std::uint32_t sweep = marks.add_sweep(plane_x(1.3));
+    (void)snapcut::select_faces(mesh, marks, sweep, all_elements(mesh));
+    const std::size_t before = marks.mark_count();
+    const auto dissected = dissect(mesh, faces_of_x_equals_1(mesh));
+    ASSERT_TRUE(dissected) << dissected.reason();
+    ASSERT_FALSE(dissected->new_vertices.empty());
+    expect_valid(mesh);
+    marks.carry_to_copies(mesh, dissected->new_vertices);
+    // Every edge of the mesh from x = 1 to x = 2 crosses the sweep, copies' edges included, and
+    // is marked at its x = 1 end by sweep 0: the copies took their originals' marks over.
+    std::size_t crossing = 0;
+    for (const ElementId t : elements(mesh)) {
+        const Simplex s = mesh.simplex(t);
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const VertexId u = s.vertex(i), v = s.vertex(j);
+                if (mesh.reference(u)[0] != 1.0 || mesh.reference(v)[0] != 2.0) continue;
+                ++crossing;
+                const auto mark = marks.mark(u, v);
+                ASSERT_TRUE(mark) << "edge " << u << "-" << v;
+                EXPECT_EQ(mark->node, u);
+                EXPECT_EQ(mark->sweep, sweep);
+            }
+    }
+    EXPECT_GT(crossing, 0u);
+    EXPECT_GT(marks.mark_count(), before) << "no copy on the marked side: the test proves nothing";
+    // the elements with carried marks wait for the next selection
+    ASSERT_FALSE(marks.pending().empty());
+    for (const ElementId t : marks.pending()) EXPECT_TRUE(mesh.is_element(t));
+    EXPECT_TRUE(std::is_sorted(marks.pending().begin(), marks.pending().end()));
+    // and a checkpoint from before takes them back
+    CutMarks again;
+    const auto empty = again.checkpoint();
+    (void)again.add_sweep(plane_x(1.3));
+    again.carry_to_copies(mesh, dissected->new_vertices);
+    again.restore(empty);
+    EXPECT_TRUE(again.pending().empty());
+    EXPECT_TRUE(again.sweeps().empty());
+}
+
+// A split of an edge from a node the cut snapped makes edges no sweep has seen: the one from the
+// snapped node to the new vertex crosses the sweep at the snapped node, and takes the sweep's
+// mark; an edge whose nearer end is the new vertex would pull it onto the cut, and stays unmarked.
+TEST(SnapCutMarks, NewEdgesTakeTheMarkOfAnEarlierSweepWhenTheirNearerEndIsOnTheCut) {
+    Mesh mesh = make_kuhn_cube(2).value();
+    CutMarks marks;
+    const std::uint32_t sweep = marks.add_sweep(plane_x(1.3));
+    (void)marks.add_sweep(plane_x(0.2));  // a later sweep these edges do not cross
+    const VertexId v = id(1, 1, 1);
+    // v snapped onto the sweep's plane, as the cutter does
+    const Point was = mesh.deformed(v);
+    const Point on_plane{1.3, 1, 1};
+    ASSERT_TRUE(mesh.move_vertices(std::span(&v, 1), std::span(&on_plane, 1), PositionSet::both));
+    marks.add_snapped(v, was);
+    const auto split = split_edge(mesh, v, id(2, 1, 1));  // m at x = 1.65
+    ASSERT_TRUE(split) << split.reason();
+    const VertexId m = split->vertex;
+    marks.mark_from_earlier_sweeps(mesh, split->elements);
+    const auto mark = marks.mark(v, m);
+    ASSERT_TRUE(mark);
+    EXPECT_EQ(mark->node, v);
+    EXPECT_EQ(mark->sweep, sweep);
+    EXPECT_FALSE(marks.mark(m, id(2, 1, 1)));  // 1.65 to 2: beside both sweeps
+    // m's edges to the x = 1 nodes other than v cross x = 1.3 nearer m: not marked
+    for (const VertexId w : {id(1, 0, 1), id(1, 1, 0), id(1, 0, 0)})
+        if (marks.mark(m, w)) ADD_FAILURE() << "edge " << m << "-" << w << " marked";
+    // every mark this made is at v (its edges touch the plane there), and the elements around
+    // the marked edges, v-m's among them, wait for the next selection
+    for (const ElementId t : marks.pending()) EXPECT_TRUE(mesh.simplex(t).contains(v)) << "element " << t;
+    for (const ElementId t : star(mesh, v))
+        if (mesh.simplex(t).contains(m))
+            EXPECT_TRUE(std::binary_search(marks.pending().begin(), marks.pending().end(), t)) << "element " << t;
+    expect_valid(mesh);
+}
+
+TEST(SnapCutCrumbs, ATetrahedronTheCutWouldCloseOffKeepsItsLowestFaceClosed) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    // the element at the cube's centre with all four faces interior
+    ElementId inner = invalid_id;
+    for (const ElementId t : elements(mesh)) {
+        bool interior = true;
+        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
+        if (interior) inner = t;
+    }
+    ASSERT_NE(inner, invalid_id);
+    std::vector<Simplex> faces;
+    for (int i = 0; i < 4; ++i) faces.push_back(Simplex(+1, mesh.face_simplex(mesh.face(inner, i)).vertices()));
+    std::sort(faces.begin(), faces.end());
+    const auto kept = snapcut::keep_crumbs_attached(mesh, faces, 4);
+    EXPECT_EQ(kept, std::vector<Simplex>(faces.begin() + 1, faces.end()));
+    // 0: any piece may come loose
+    EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, faces, 0), faces);
+    // the faces of x = 1 halve the cube: two pieces of 24, no crumb
+    const std::vector<Simplex> plane = faces_of_x_equals_1(mesh);
+    EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 4), plane);
+    // and a half is a crumb when crumbs may be that large: one face of the plane stays closed
+    EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 24).size(), plane.size() - 1);
+}
+
+}  // namespace
+}  // namespace sxk::test
