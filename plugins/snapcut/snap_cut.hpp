@@ -172,9 +172,10 @@ protected:
 
 private:
     Outcome<Done> cut_sweep(const Sweep& sweep, StepReport& report);
-    // One selection, snap, dissection and removal of sweep `sweep_index`; `edited`: the removal
-    // changed the mesh.
-    Outcome<Done> cut_round(std::uint32_t sweep_index, StepReport& report, bool& edited);
+    // One selection, snap, dissection and removal of sweep `sweep_index`, among the elements the
+    // sweep meets and those carried marks may have completed (CutMarks::pending), or among the
+    // latter only (whole_sweep false); `edited`: the removal changed the mesh.
+    Outcome<Done> cut_round(std::uint32_t sweep_index, bool whole_sweep, StepReport& report, bool& edited);
     // The distance from p to the nearest of the sweeps sweep_index - 15 .. sweep_index (the last
     // 8 steps').
     double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const;

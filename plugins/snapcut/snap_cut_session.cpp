@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "degeneracy_service.hpp"
@@ -246,18 +247,29 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
     // the next sweep (thesis §3.3, Fig. 3.17: disconnected incisions). The new edges take the
     // marks of the sweeps that cross them (CutMarks::mark_from_earlier_sweeps, and the copies of
     // a dissection those of their originals), and as the thesis proposes the sweep is then
-    // processed again: what the new marks and the new edges it crosses complete is cut. Twice
-    // more at most (what is left waits for the next sweep); a round that selects nothing ends it.
+    // processed again: what the new marks and the new edges it crosses complete is cut. When only
+    // marks were carried over (a dissection's copies, no removal edit), the next round selects
+    // among the elements they may have completed alone: the rest of the sweep did not change.
+    // Twice more at most (what is left waits for the next sweep); a round that selects nothing,
+    // edits nothing and carries no mark over ends it.
+    bool whole_sweep = true;
     for (int round = 0; round < 3; ++round) {
         bool edited = false;
-        if (Outcome<Done> done = cut_round(sweep_index, report, edited); !done) return done;
-        if (!edited) break;
-        ++m_last.repeats;
+        if (Outcome<Done> done = cut_round(sweep_index, whole_sweep, report, edited); !done) return done;
+        if (edited) {
+            whole_sweep = true;
+            ++m_last.repeats;
+        } else if (m_marks.pending().empty()) {
+            break;
+        } else {
+            whole_sweep = false;
+        }
     }
     return Done{};
 }
 
-Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& report, bool& edited) {
+Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sweep, StepReport& report,
+                                        bool& edited) {
     Mesh& mesh = this->mesh();
     const Sweep sweep = m_marks.sweeps()[sweep_index];
 
@@ -267,10 +279,13 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     // the sweep only as the selection sees it, and then it has a snapped corner within reach of
     // the sweep (CutMarks::elements_near). So those are candidates too.
     auto phase = Clock::now();
-    std::vector<ElementId> candidates =
-        m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
-    const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
-    candidates.insert(candidates.end(), around.begin(), around.end());
+    std::vector<ElementId> candidates;
+    const std::vector<ElementId> incomplete = m_marks.incomplete();  // the sweep's, kept by a partial round
+    if (whole_sweep) {
+        candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
+        const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
+        candidates.insert(candidates.end(), around.begin(), around.end());
+    }
     // and the elements whose edges took marks over from the last round's edits (they may be
     // complete now, wherever the sweep is)
     const std::vector<ElementId> pending = m_marks.take_pending();
@@ -278,6 +293,13 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates);
+    if (!whole_sweep) {
+        std::vector<ElementId> merged;
+        std::set_union(incomplete.begin(), incomplete.end(), m_marks.incomplete().begin(), m_marks.incomplete().end(),
+                       std::back_inserter(merged));
+        std::erase_if(merged, [&](ElementId t) { return !mesh.is_element(t); });
+        m_marks.set_incomplete(std::move(merged));
+    }
     m_last.elements_searched += selection.elements_searched;
     m_last.edges_hit += selection.edges_hit;
     m_last.faces_selected += selection.faces.size();
@@ -374,8 +396,6 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, StepReport& r
                                  std::to_string(removed->collapses) + " collapses, " +
                                  std::to_string(removed->cut_free) + " cut free");
     }
-    // marks carried over to new edges may have completed tetrahedra: another round selects them
-    edited = edited || !m_marks.pending().empty();
     // the removal's collapses may lengthen edges around snapped nodes: the reach follows
     for (const VertexId v : touched)
         if (m_marks.snapped(v) && mesh.vertex_element(v) != invalid_id)
