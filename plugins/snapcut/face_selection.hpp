@@ -93,7 +93,7 @@ public:
     // already (snapped). The edges are seen where they are, not where the selection sees the mesh:
     // a split's vertex has no place from before the snapping, and an edge from a node that never
     // moved to where a snapped one was can cross a sweep the edge as it lies does not (tried: the
-    // cube cut through in 16 steps then lost a two-element piece). And a mark that would pull a
+    // cube cut through in 16 steps then lost a small piece). And a mark that would pull a
     // node not yet on the cut onto it is left out: the new marks join the incision's rim to the
     // surface already cut, they do not move it.
     void mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements);

@@ -280,7 +280,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
     // the sweep (CutMarks::elements_near). So those are candidates too.
     auto phase = Clock::now();
     std::vector<ElementId> candidates;
-    const std::vector<ElementId> incomplete = m_marks.incomplete();  // the sweep's, kept by a partial round
+    std::vector<ElementId> incomplete;  // the sweep's, kept by a partial round
+    if (!whole_sweep) incomplete = m_marks.incomplete();
     if (whole_sweep) {
         candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
         const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);

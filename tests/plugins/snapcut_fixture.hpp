@@ -16,8 +16,28 @@
 #include "degeneracy_plugin.hpp"
 #include "snap_cut.hpp"
 #include "sxk/generators.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk::test {
+
+// Valid, with no element inverted or flat in either position set.
+inline void expect_valid(const Mesh& mesh) {
+    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
+    EXPECT_TRUE(valid) << valid.reason();
+}
+
+// The 2 x 2 x 2 Kuhn cube of the selection and marks tests: vertex (i,j,k) has id (3k + j) 3 + i,
+// every edge climbs in x, y and z.
+inline VertexId kuhn2_vertex(int i, int j, int k) { return static_cast<VertexId>((3 * k + j) * 3 + i); }
+
+inline std::vector<ElementId> all_elements(const Mesh& mesh) {
+    std::vector<ElementId> all;
+    for (const ElementId t : elements(mesh)) all.push_back(t);
+    return all;
+}
+
+// A sweep in the plane x = c, large enough to cross the whole 2-cube.
+inline snapcut::Sweep plane_x(double c) { return {{c, -1, -1}, {c, 5, -1}, {c, -1, 5}}; }
 
 // The degeneracy service of a host that links the plug-in in (one per test program).
 inline const degeneracy::DegeneracyService* degeneracy_service() { return degeneracy::linked_in_service(); }

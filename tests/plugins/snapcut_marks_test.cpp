@@ -1,6 +1,6 @@
 // Cut marks that follow the mesh's edits, and crumbs kept attached (plugins/snapcut: CutMarks::
-// carry_to_copies, mark_from_earlier_sweeps, keep_crumbs_attached), on the 2 x 2 x 2 Kuhn cube:
-// vertex (i,j,k) has id (3k + j) 3 + i, every edge climbs in x, y and z.
+// carry_to_copies, mark_from_earlier_sweeps, keep_crumbs_attached), on the 2 x 2 x 2 Kuhn cube
+// (snapcut_fixture.hpp: kuhn2_vertex(i, j, k)).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +8,7 @@
 
 #include "face_selection.hpp"
 #include "loose_pieces.hpp"
+#include "snapcut_fixture.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -17,23 +18,6 @@ namespace sxk::test {
 namespace {
 
 using snapcut::CutMarks;
-using snapcut::Sweep;
-
-void expect_valid(const Mesh& mesh) {
-    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
-    EXPECT_TRUE(valid) << valid.reason();
-}
-
-VertexId id(int i, int j, int k) { return static_cast<VertexId>((3 * k + j) * 3 + i); }
-
-std::vector<ElementId> all_elements(const Mesh& mesh) {
-    std::vector<ElementId> all;
-    for (const ElementId t : elements(mesh)) all.push_back(t);
-    return all;
-}
-
-// A sweep in the plane x = c, large enough to cross the whole cube.
-Sweep plane_x(double c) { return {{c, -1, -1}, {c, 5, -1}, {c, -1, 5}}; }
 
 // The interior faces of the plane x = 1.
 std::vector<Simplex> faces_of_x_equals_1(const Mesh& mesh) {
@@ -101,13 +85,13 @@ TEST(SnapCutMarks, NewEdgesTakeTheMarkOfAnEarlierSweepWhenTheirNearerEndIsOnTheC
     CutMarks marks;
     const std::uint32_t sweep = marks.add_sweep(plane_x(1.3));
     (void)marks.add_sweep(plane_x(0.2));  // a later sweep these edges do not cross
-    const VertexId v = id(1, 1, 1);
+    const VertexId v = kuhn2_vertex(1, 1, 1);
     // v snapped onto the sweep's plane, as the cutter does
     const Point was = mesh.deformed(v);
     const Point on_plane{1.3, 1, 1};
     ASSERT_TRUE(mesh.move_vertices(std::span(&v, 1), std::span(&on_plane, 1), PositionSet::both));
     marks.add_snapped(v, was);
-    const auto split = split_edge(mesh, v, id(2, 1, 1));  // m at x = 1.65
+    const auto split = split_edge(mesh, v, kuhn2_vertex(2, 1, 1));  // m at x = 1.65
     ASSERT_TRUE(split) << split.reason();
     const VertexId m = split->vertex;
     marks.mark_from_earlier_sweeps(mesh, split->elements);
@@ -115,9 +99,9 @@ TEST(SnapCutMarks, NewEdgesTakeTheMarkOfAnEarlierSweepWhenTheirNearerEndIsOnTheC
     ASSERT_TRUE(mark);
     EXPECT_EQ(mark->node, v);
     EXPECT_EQ(mark->sweep, sweep);
-    EXPECT_FALSE(marks.mark(m, id(2, 1, 1)));  // 1.65 to 2: beside both sweeps
+    EXPECT_FALSE(marks.mark(m, kuhn2_vertex(2, 1, 1)));  // 1.65 to 2: beside both sweeps
     // m's edges to the x = 1 nodes other than v cross x = 1.3 nearer m: not marked
-    for (const VertexId w : {id(1, 0, 1), id(1, 1, 0), id(1, 0, 0)})
+    for (const VertexId w : {kuhn2_vertex(1, 0, 1), kuhn2_vertex(1, 1, 0), kuhn2_vertex(1, 0, 0)})
         if (marks.mark(m, w)) ADD_FAILURE() << "edge " << m << "-" << w << " marked";
     // every mark this made is at v (its edges touch the plane there), and the elements around
     // the marked edges, v-m's among them, wait for the next selection

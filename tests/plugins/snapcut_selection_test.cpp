@@ -1,10 +1,11 @@
 // Face selection of the snap cut (plugins/snapcut/face_selection.hpp, thesis §3.2.1), on the
-// 2 x 2 x 2 Kuhn cube: vertex (i,j,k) has id (3k + j) 3 + i, every edge climbs in x, y and z.
+// 2 x 2 x 2 Kuhn cube (snapcut_fixture.hpp: kuhn2_vertex(i, j, k)).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "face_selection.hpp"
+#include "snapcut_fixture.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/traversal.hpp"
 
@@ -13,18 +14,6 @@ namespace {
 
 using snapcut::CutMarks;
 using snapcut::Selection;
-using snapcut::Sweep;
-
-VertexId id(int i, int j, int k) { return static_cast<VertexId>((3 * k + j) * 3 + i); }
-
-std::vector<ElementId> all_elements(const Mesh& mesh) {
-    std::vector<ElementId> all;
-    for (const ElementId t : elements(mesh)) all.push_back(t);
-    return all;
-}
-
-// A sweep in the plane x = c, large enough to cross the whole cube.
-Sweep plane_x(double c) { return {{c, -1, -1}, {c, 5, -1}, {c, -1, 5}}; }
 
 Selection select_plane(const Mesh& mesh, CutMarks& marks, double c) {
     const std::uint32_t sweep = marks.add_sweep(plane_x(c));
@@ -45,11 +34,11 @@ TEST(SnapCutSelection, EachCrossedEdgeMarksItsEndNearerTheCrossing) {
     // the edges from x = 1 to x = 2: (1,j,k)-(2,j',k') with j' - j, k' - k in {0, 1}
     EXPECT_EQ(selection.edges_hit, marks.mark_count());
     EXPECT_GT(selection.edges_hit, 0u);
-    const auto mark = marks.mark(id(1, 0, 0), id(2, 0, 0));
+    const auto mark = marks.mark(kuhn2_vertex(1, 0, 0), kuhn2_vertex(2, 0, 0));
     ASSERT_TRUE(mark);
-    EXPECT_EQ(mark->node, id(1, 0, 0));
+    EXPECT_EQ(mark->node, kuhn2_vertex(1, 0, 0));
     EXPECT_EQ(mark->sweep, 0u);
-    EXPECT_FALSE(marks.mark(id(0, 0, 0), id(1, 0, 0)));  // x from 0 to 1 does not reach 1.3
+    EXPECT_FALSE(marks.mark(kuhn2_vertex(0, 0, 0), kuhn2_vertex(1, 0, 0)));  // x from 0 to 1 does not reach 1.3
     expect_the_faces_of_x_equals_1(mesh, selection);
 }
 
@@ -58,7 +47,7 @@ TEST(SnapCutSelection, AnExactHalfMarksTheLowerVertexId) {
     const Mesh mesh = make_kuhn_cube(2).value();
     CutMarks marks;
     const Selection selection = select_plane(mesh, marks, 1.5);
-    EXPECT_EQ(marks.mark(id(1, 1, 1), id(2, 2, 2))->node, id(1, 1, 1));
+    EXPECT_EQ(marks.mark(kuhn2_vertex(1, 1, 1), kuhn2_vertex(2, 2, 2))->node, kuhn2_vertex(1, 1, 1));
     expect_the_faces_of_x_equals_1(mesh, selection);
 }
 
@@ -70,8 +59,8 @@ TEST(SnapCutSelection, OnlyTheFirstCrossingOfAnEdgeCounts) {
     const Selection again = select_plane(mesh, marks, 1.3);  // would mark the x = 1 ends
     EXPECT_EQ(again.edges_hit, 0u);
     EXPECT_EQ(marks.mark_count(), marked);
-    EXPECT_EQ(marks.mark(id(1, 0, 0), id(2, 0, 0))->node, id(2, 0, 0));
-    EXPECT_EQ(marks.mark(id(1, 0, 0), id(2, 0, 0))->sweep, 0u);
+    EXPECT_EQ(marks.mark(kuhn2_vertex(1, 0, 0), kuhn2_vertex(2, 0, 0))->node, kuhn2_vertex(2, 0, 0));
+    EXPECT_EQ(marks.mark(kuhn2_vertex(1, 0, 0), kuhn2_vertex(2, 0, 0))->sweep, 0u);
     // the x = 2 faces are on the boundary: nothing to open, nothing selected
     EXPECT_TRUE(again.faces.empty());
 }
@@ -132,20 +121,20 @@ TEST(SnapCutSelection, ACheckpointTakesBackWhatCameAfterIt) {
     const Mesh mesh = make_kuhn_cube(2).value();
     CutMarks marks;
     (void)select_plane(mesh, marks, 1.3);
-    marks.add_snapped(id(1, 1, 1), mesh.deformed(id(1, 1, 1)));
+    marks.add_snapped(kuhn2_vertex(1, 1, 1), mesh.deformed(kuhn2_vertex(1, 1, 1)));
     const CutMarks::Checkpoint checkpoint = marks.checkpoint();
     const std::size_t marked = marks.mark_count();
     const std::vector<ElementId> incomplete = marks.incomplete();
     (void)select_plane(mesh, marks, 0.4);
-    marks.add_snapped(id(0, 1, 1), mesh.deformed(id(0, 1, 1)));
+    marks.add_snapped(kuhn2_vertex(0, 1, 1), mesh.deformed(kuhn2_vertex(0, 1, 1)));
     ASSERT_GT(marks.mark_count(), marked);
     marks.restore(checkpoint);
     EXPECT_EQ(marks.mark_count(), marked);
     EXPECT_EQ(marks.sweeps().size(), 1u);
     EXPECT_EQ(marks.incomplete(), incomplete);
-    EXPECT_TRUE(marks.snapped(id(1, 1, 1)));
-    EXPECT_FALSE(marks.snapped(id(0, 1, 1)));
-    EXPECT_FALSE(marks.mark(id(0, 0, 0), id(1, 0, 0)));
+    EXPECT_TRUE(marks.snapped(kuhn2_vertex(1, 1, 1)));
+    EXPECT_FALSE(marks.snapped(kuhn2_vertex(0, 1, 1)));
+    EXPECT_FALSE(marks.mark(kuhn2_vertex(0, 0, 0), kuhn2_vertex(1, 0, 0)));
 }
 
 }  // namespace

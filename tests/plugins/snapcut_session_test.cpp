@@ -31,11 +31,6 @@ std::size_t boundary_faces_with_label(const Mesh& mesh, int label) {
 // 10 steps: the cut should open the faces of the grid plane x = 3 above z = 4.
 std::vector<Scalpel> grid_plane_path() { return straight_path({3.3, -1, 0}, {0, 1, 0}, 10, 4, 10, 10); }
 
-void expect_valid(const Mesh& mesh) {
-    const auto valid = mesh.validate({.orientation = true, .flat_is_invalid = true});
-    EXPECT_TRUE(valid) << valid.reason();
-}
-
 TEST(SnapCut, APlaneAlongTheGridOpensTheGridFacesItCrosses) {
     Mesh mesh = make_kuhn_cube(8).value();
     auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
