@@ -106,9 +106,10 @@ TEST(SnapCutMarks, NewEdgesTakeTheMarkOfAnEarlierSweepWhenTheirNearerEndIsOnTheC
     // every mark this made is at v (its edges touch the plane there), and the elements around
     // the marked edges, v-m's among them, wait for the next selection
     for (const ElementId t : marks.pending()) EXPECT_TRUE(mesh.simplex(t).contains(v)) << "element " << t;
-    for (const ElementId t : star(mesh, v))
-        if (mesh.simplex(t).contains(m))
-            EXPECT_TRUE(std::binary_search(marks.pending().begin(), marks.pending().end(), t)) << "element " << t;
+    for (const ElementId t : star(mesh, v)) {
+        if (!mesh.simplex(t).contains(m)) continue;
+        EXPECT_TRUE(std::binary_search(marks.pending().begin(), marks.pending().end(), t)) << "element " << t;
+    }
     expect_valid(mesh);
 }
 
