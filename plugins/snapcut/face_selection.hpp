@@ -149,8 +149,11 @@ private:
     std::unique_ptr<SweepTree> m_sweep_tree;
     // The sweeps whose boxes meet the box [low, high], oldest first.
     std::vector<std::uint32_t> sweeps_meeting_box(const Point& low, const Point& high) const;
-    // Marks {u, v} (when it has no mark) and puts the elements around the edge in pending.
-    void mark_outside_selection(const Mesh& mesh, VertexId u, VertexId v, const Mark& mark);
+    // Marks {u, v} (when it has no mark) and puts the elements around the edge (those of u's star
+    // `star_u` that hold v) in pending; settle_pending sorts pending and drops repeats.
+    void mark_outside_selection(const Mesh& mesh, std::span<const ElementId> star_u, VertexId u, VertexId v,
+                                const Mark& mark);
+    void settle_pending();
     std::vector<ElementId> m_incomplete;
     std::vector<ElementId> m_pending;
 };

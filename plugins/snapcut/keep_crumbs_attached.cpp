@@ -10,17 +10,24 @@ namespace {
 
 Simplex unoriented(const Simplex& face) { return Simplex(+1, face.vertices()); }
 
-// An element with face `face` (interior faces have two; either), or invalid_id.
-ElementId element_with(const Mesh& mesh, const Simplex& face, std::vector<ElementId>& around) {
+// The two elements on either side of interior face `face` (a star walk from its first corner),
+// none when it is not a face of the mesh.
+void add_elements_of(const Mesh& mesh, const Simplex& face, std::vector<ElementId>& around,
+                     std::vector<ElementId>& sides) {
     around.clear();
     const VertexId v = face.vertex(0);
-    if (mesh.vertex_element(v) == invalid_id) return invalid_id;
+    if (mesh.vertex_element(v) == invalid_id) return;
     collect_star(mesh, v, mesh.vertex_element(v), around);
     for (const ElementId t : around) {
         const Simplex s = mesh.simplex(t);
-        if (s.contains(face.vertex(1)) && s.contains(face.vertex(2))) return t;
+        if (!s.contains(face.vertex(1)) || !s.contains(face.vertex(2))) continue;
+        for (int i = 0; i < s.count(); ++i)
+            if (!face.contains(s.vertex(i))) {  // face i of t, opposite its vertex i, is `face`
+                sides.push_back(t);
+                if (mesh.neighbor(t, i) != invalid_id) sides.push_back(mesh.neighbor(t, i));
+                return;
+            }
     }
-    return invalid_id;
 }
 
 }  // namespace
@@ -34,14 +41,7 @@ std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex>
         return mesh.mate(f) == invalid_id || std::binary_search(faces.begin(), faces.end(), unoriented(mesh.face_simplex(f)));
     };
     std::vector<ElementId> sides, around;
-    for (const Simplex& face : faces) {
-        const ElementId t = element_with(mesh, face, around);
-        if (t == invalid_id) continue;
-        sides.push_back(t);
-        for (int i = 0; i < n; ++i)
-            if (mesh.neighbor(t, i) != invalid_id && unoriented(mesh.face_simplex(mesh.face(t, i))) == face)
-                sides.push_back(mesh.neighbor(t, i));
-    }
+    for (const Simplex& face : faces) add_elements_of(mesh, face, around, sides);
     std::sort(sides.begin(), sides.end());
     sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
     std::vector<ElementId> piece;
@@ -62,10 +62,9 @@ std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex>
         for (const ElementId t : piece)
             for (int i = 0; i < n; ++i) {
                 if (mesh.mate(mesh.face(t, i)) == invalid_id) continue;
-                const auto found = std::lower_bound(faces.begin(), faces.end(), unoriented(mesh.face_simplex(mesh.face(t, i))));
-                if (found != faces.end() && *found == unoriented(mesh.face_simplex(mesh.face(t, i))) &&
-                    (keep == nullptr || *found < *keep))
-                    keep = &*found;
+                const Simplex face = unoriented(mesh.face_simplex(mesh.face(t, i)));
+                const auto found = std::lower_bound(faces.begin(), faces.end(), face);
+                if (found != faces.end() && *found == face && (keep == nullptr || *found < *keep)) keep = &*found;
             }
         if (keep != nullptr) faces.erase(faces.begin() + (keep - faces.data()));
     }

@@ -1,6 +1,5 @@
 // Cut marks that follow the mesh's edits (face_selection.hpp, CutMarks; thesis §3.4).
 #include <algorithm>
-#include <cmath>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -10,42 +9,17 @@
 
 namespace sxk::snapcut {
 
-namespace {
-
-// Whether segment (p, q) may reach the plane of the sweep: false only when both ends are clearly
-// on one side. A filter in doubles before the exact test (most edges near a cut lie beside most
-// sweeps' planes); the margin is far above the rounding of the products, so it never drops an
-// edge the exact test would find crossing.
-bool may_reach_plane(const Point& p, const Point& q, const Sweep& sweep) {
-    double ab[3], ac[3], n[3], dp = 0, dq = 0, size_ab = 0, size_ac = 0, size_p = 0, size_q = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-        ab[k] = sweep.b[k] - sweep.a[k];
-        ac[k] = sweep.c[k] - sweep.a[k];
-        size_ab += std::abs(ab[k]);
-        size_ac += std::abs(ac[k]);
-        size_p += std::abs(p[k] - sweep.a[k]);
-        size_q += std::abs(q[k] - sweep.a[k]);
-    }
-    n[0] = ab[1] * ac[2] - ab[2] * ac[1];
-    n[1] = ab[2] * ac[0] - ab[0] * ac[2];
-    n[2] = ab[0] * ac[1] - ab[1] * ac[0];
-    for (std::size_t k = 0; k < 3; ++k) {
-        dp += n[k] * (p[k] - sweep.a[k]);
-        dq += n[k] * (q[k] - sweep.a[k]);
-    }
-    const double margin = 1e-10 * size_ab * size_ac * std::max(size_p, size_q);
-    return !((dp > margin && dq > margin) || (dp < -margin && dq < -margin));
-}
-
-}  // namespace
-
-void CutMarks::mark_outside_selection(const Mesh& mesh, VertexId u, VertexId v, const Mark& mark) {
+void CutMarks::mark_outside_selection(const Mesh& mesh, std::span<const ElementId> star_u, VertexId u, VertexId v,
+                                      const Mark& mark) {
     if (m_marks.contains(key(u, v))) return;
     add_mark(u, v, mark);
-    std::vector<ElementId> around;
-    collect_star(mesh, u, mesh.vertex_element(u), around);
-    for (const ElementId t : around)
+    for (const ElementId t : star_u)
         if (mesh.simplex(t).contains(v)) m_pending.push_back(t);
+}
+
+void CutMarks::settle_pending() {
+    std::sort(m_pending.begin(), m_pending.end());
+    m_pending.erase(std::unique(m_pending.begin(), m_pending.end()), m_pending.end());
 }
 
 void CutMarks::carry_to_copies(const Mesh& mesh, std::span<const std::pair<VertexId, VertexId>> copies) {
@@ -73,15 +47,15 @@ void CutMarks::carry_to_copies(const Mesh& mesh, std::span<const std::pair<Verte
             if (x0 == o || !has_marked_edge(x0)) continue;  // x0 == o: another copy of o
             const std::optional<Mark> was = mark(o, x0);
             if (!was) continue;
-            mark_outside_selection(mesh, c, x, Mark{was->node == o ? c : x, was->sweep});
+            mark_outside_selection(mesh, around, c, x, Mark{was->node == o ? c : x, was->sweep});
         }
     }
-    std::sort(m_pending.begin(), m_pending.end());
-    m_pending.erase(std::unique(m_pending.begin(), m_pending.end()), m_pending.end());
+    settle_pending();
 }
 
 void CutMarks::mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements) {
     std::unordered_set<std::uint64_t> tested;
+    std::vector<ElementId> around;
     for (const ElementId t : elements) {
         if (!mesh.is_element(t)) continue;
         const Simplex s = mesh.simplex(t);
@@ -96,18 +70,18 @@ void CutMarks::mark_from_earlier_sweeps(const Mesh& mesh, std::span<const Elemen
                 for (std::size_t k = 0; k < 3; ++k) low[k] = std::min(p[k], q[k]), high[k] = std::max(p[k], q[k]);
                 for (const std::uint32_t index : sweeps_meeting_box(low, high)) {
                     const Sweep& sweep = m_sweeps[index];
-                    if (!may_reach_plane(p, q, sweep) || !segment_meets_triangle(p, q, sweep.a, sweep.b, sweep.c))
-                        continue;
+                    if (!segment_meets_triangle(p, q, sweep.a, sweep.b, sweep.c)) continue;
                     const Sign side = compare_distances_to_plane(p, q, sweep.a, sweep.b, sweep.c);
                     const VertexId nearer = side == Sign::negative ? u : side == Sign::positive ? v : std::min(u, v);
                     if (!snapped(nearer)) break;  // the first sweep it crosses would pull a new node onto the cut
-                    mark_outside_selection(mesh, u, v, Mark{nearer, index});
+                    around.clear();
+                    collect_star(mesh, u, mesh.vertex_element(u), around);
+                    mark_outside_selection(mesh, around, u, v, Mark{nearer, index});
                     break;
                 }
             }
     }
-    std::sort(m_pending.begin(), m_pending.end());
-    m_pending.erase(std::unique(m_pending.begin(), m_pending.end()), m_pending.end());
+    settle_pending();
 }
 
 }  // namespace sxk::snapcut

@@ -281,11 +281,12 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
     auto phase = Clock::now();
     std::vector<ElementId> candidates;
     std::vector<ElementId> incomplete;  // the sweep's, kept by a partial round
-    if (!whole_sweep) incomplete = m_marks.incomplete();
     if (whole_sweep) {
         candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
         const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
         candidates.insert(candidates.end(), around.begin(), around.end());
+    } else {
+        incomplete = m_marks.incomplete();
     }
     // and the elements whose edges took marks over from the last round's edits (they may be
     // complete now, wherever the sweep is)
