@@ -198,7 +198,10 @@ void random_edits_keep_the_state_of_a_fresh_body(const char* name, std::uint32_t
     std::mt19937_64 rng(seed);
     test::StartChoices start(rng, kind);
     int compared = 0, edits = 0, flat = 0;
-    for (int round = 0; round < 4; ++round) {
+    // A flat element usually stays until the round ends (nothing edits it away), so a round
+    // that makes one early compares little: more rounds until 30 states are compared (the
+    // seed 1712318564 had 17 of its 40 checks flat in 4 rounds).
+    for (int round = 0; round < 4 || (compared < 30 && round < 12); ++round) {
         start.restart();
         Mesh mesh = ops_driver::start_mesh(start.choices(), 3, 2);
         ASSERT_EQ(mesh.topological_dimension(), kind == 3 ? 3 : 2);
