@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sxk/predicates.hpp"
+#include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk::degeneracy {
@@ -94,34 +95,6 @@ Plane plane_through_centre(const Mesh& mesh, const Point& normal) {
     return {{(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2}, normal};
 }
 
-double mean_edge_length(const Mesh& mesh) {
-    // each edge once: its sorted vertex pair packed into 64 bits, sorted and made unique (about
-    // 7 pairs per tetrahedron: 1.5M for the 213k-tet femur, sorted in well under a second)
-    std::vector<std::uint64_t> edges;
-    const int k = mesh.element_vertex_count();
-    edges.reserve(mesh.element_count() * static_cast<std::size_t>(k * (k - 1) / 2));
-    for (const ElementId t : elements(mesh)) {
-        const Simplex& s = mesh.simplex(t);
-        for (int i = 0; i < k; ++i)
-            for (int j = i + 1; j < k; ++j) {
-                const std::uint64_t a = std::min(s.vertex(i), s.vertex(j));
-                const std::uint64_t b = std::max(s.vertex(i), s.vertex(j));
-                edges.push_back(a << 32 | b);
-            }
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    if (edges.empty())
-        return 0;
-    double sum = 0;
-    for (const std::uint64_t e : edges) {
-        const Point d = minus(mesh.reference(static_cast<VertexId>(e >> 32)),
-                              mesh.reference(static_cast<VertexId>(e & 0xffffffffu)));
-        sum += std::sqrt(dot(d, d));
-    }
-    return sum / static_cast<double>(edges.size());
-}
-
 SnapReport snap_to_plane(Mesh& mesh, const Plane& plane, double max_distance) {
     const double length = std::sqrt(dot(plane.normal, plane.normal));
     if (!(length > 0) || !std::isfinite(length))
@@ -133,7 +106,7 @@ SnapReport snap_to_plane(Mesh& mesh, const Plane& plane, double max_distance) {
     const Point unit{plane.normal[0] / length, plane.normal[1] / length, plane.normal[2] / length};
 
     SnapReport report;
-    report.mean_edge_length = mean_edge_length(mesh);
+    report.mean_edge_length = sxk::mean_edge_length(mesh);
     std::vector<ElementId> around;
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
         if (mesh.vertex_element(v) == invalid_id)

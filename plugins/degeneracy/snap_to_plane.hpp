@@ -38,11 +38,8 @@ struct SnapReport {
 // (the femur's: normal {0.3, 1, 0.12}, along the bone, not axis aligned).
 Plane plane_through_centre(const Mesh& mesh, const Point& normal);
 
-// Mean edge length of the mesh in the reference positions (each edge counted once).
-double mean_edge_length(const Mesh& mesh);
-
 // Snaps the vertices within max_distance of the plane (reference positions) onto it. The
-// thesis' snapped meshes use max_distance = mean_edge_length / 3. A test-mesh maker, not an
+// thesis' snapped meshes use max_distance = mean_edge_length / 3 (sxk/quality.hpp). A test-mesh maker, not an
 // edit of the kernel: throws std::invalid_argument (mesh untouched) for a zero or non-finite
 // normal ("snap_to_plane: the plane's normal must be finite and not zero") or a negative or
 // non-finite distance ("snap_to_plane: max_distance must be finite and >= 0, not -1").

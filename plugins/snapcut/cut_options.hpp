@@ -6,6 +6,8 @@
 //   --aspect A                 degeneracy threshold, 0 < A < 1 (0.01)
 //   --angle RADIANS            large dihedral angle, pi/2 < x < pi (0.99 pi)
 //   --snap-min-aspect A        refuse a snap leaving an element below A, 0 <= A < 1 (0: off)
+//   --split-beyond X           split crossed edges whose nearer end is farther than X mean edge
+//                              lengths from the sweep's plane, where crossed (1; 0: never)
 //   --remove-loose             remove the pieces a step cuts loose
 //   --cut-label L              the face label of the cut surface (9999)
 //   --relax-iterations N       with a simulation: CG iterations after each step (100)

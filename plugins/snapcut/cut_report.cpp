@@ -13,6 +13,8 @@ nlohmann::ordered_json to_json(const CutStepReport& r) {
     json["repeats"] = r.repeats;
     json["elements_searched"] = r.elements_searched;
     json["edges_hit"] = r.edges_hit;
+    json["edges_split"] = r.edges_split;
+    json["splits_refused"] = r.splits_refused;
     json["faces_selected"] = r.faces_selected;
     json["faces_dissected"] = r.faces_dissected;
     json["placement_error"] = r.placement_error;
@@ -62,13 +64,14 @@ nlohmann::ordered_json to_json(const Options& options, bool degeneracy_service) 
     json["snap_min_aspect_ratio"] = options.min_snap_aspect_ratio;
     json["remove_loose"] = options.remove_loose_pieces;
     json["cut_label"] = options.cut_label;
+    json["split_beyond"] = options.split_beyond;
     return json;
 }
 
 namespace {
 
 struct Totals {
-    std::size_t edges = 0, selected = 0, dissected = 0, snapped = 0, refused = 0, degenerate = 0, collapses = 0,
+    std::size_t edges = 0, edges_split = 0, selected = 0, dissected = 0, snapped = 0, refused = 0, degenerate = 0, collapses = 0,
                 splits = 0, flips = 0, peeled = 0, cut_free = 0, pieces = 0;
     double seconds = 0;
 };
@@ -78,6 +81,7 @@ Totals totals_of(const ReplayRecord& record) {
     for (const ReplayStep& step : record.steps) {
         const CutStepReport& r = step.report;
         t.edges += r.edges_hit;
+        t.edges_split += r.edges_split;
         t.selected += r.faces_selected;
         t.dissected += r.faces_dissected;
         t.snapped += r.nodes_snapped;
@@ -118,6 +122,7 @@ nlohmann::ordered_json to_json(const ReplayRecord& record) {
     summary["steps"] = record.steps.size();
     summary["undone"] = record.undone;
     summary["edges_hit"] = t.edges;
+    summary["edges_split"] = t.edges_split;
     summary["faces_selected"] = t.selected;
     summary["faces_dissected"] = t.dissected;
     summary["nodes_snapped"] = t.snapped;
@@ -155,7 +160,8 @@ void print_replay(std::ostream& out, const ReplayRecord& record) {
         out << '\n';
     }
     const Totals t = totals_of(record);
-    out << record.steps.size() << " steps: " << t.dissected << " faces dissected, " << t.snapped << " nodes snapped ("
+    out << record.steps.size() << " steps: " << t.dissected << " faces dissected, " << t.edges_split
+        << " long edges split where crossed, " << t.snapped << " nodes snapped ("
         << t.refused << " refused), " << t.degenerate << " degenerate (" << t.collapses << " collapses, " << t.cut_free
         << " cut free), " << t.pieces << " loose pieces; " << record.elements_before << " -> "
         << record.elements_after << " elements, " << record.vertices_before << " -> " << record.vertices_after

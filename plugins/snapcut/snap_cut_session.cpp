@@ -10,9 +10,11 @@
 #include "loose_pieces.hpp"
 #include "node_snapping.hpp"
 #include "snap_cut.hpp"
+#include "split_far_crossings.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/ops/remove_elements.hpp"
 #include "sxk/predicates.hpp"
+#include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk::snapcut {
@@ -167,11 +169,19 @@ Outcome<std::unique_ptr<SnapCutSession>> SnapCutSession::make(Mesh& mesh, const 
     if (!(options.min_snap_aspect_ratio >= 0 && options.min_snap_aspect_ratio < 1))
         return Refusal{RefusalCode::bad_argument, "snapcut: the snap's aspect ratio limit must be in [0, 1), not " +
                                                       std::to_string(options.min_snap_aspect_ratio)};
+    if (!(options.split_beyond >= 0 && std::isfinite(options.split_beyond)))
+        return Refusal{RefusalCode::bad_argument, "snapcut: the distance beyond which crossings are split must be "
+                                                  "finite and >= 0, not " + std::to_string(options.split_beyond)};
     return std::make_unique<SnapCutSession>(mesh, options, services);
 }
 
 SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServices& services)
-    : ToolSession(mesh), m_options(options), m_services(services), m_index(mesh, Positions::deformed) {}
+    : ToolSession(mesh),
+      m_options(options),
+      m_services(services),
+      m_index(mesh, Positions::deformed),
+      m_split_beyond(options.split_beyond > 0 ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
+                                              : 0) {}
 
 SnapCutSession::~SnapCutSession() = default;
 
@@ -294,6 +304,13 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
     candidates.insert(candidates.end(), pending.begin(), pending.end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    // crossings far from both ends of long edges get a node of their own (split_far_crossings.hpp)
+    if (m_split_beyond > 0 && m_options.snap) {
+        const FarCrossings far = split_far_crossings(mesh, m_marks, sweep_index, candidates, m_split_beyond);
+        m_last.edges_split += far.split;
+        m_last.splits_refused += far.refused;
+        if (far.split > 0) report.actions.push_back("split " + std::to_string(far.split) + " far crossings");
+    }
     const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates);
     if (!whole_sweep) {
         std::vector<ElementId> merged;

@@ -11,6 +11,20 @@ namespace {
 
 const std::array<Point, 4> regular{{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}};
 
+TEST(Quality, MeanEdgeLengthCountsEachEdgeOnce) {
+    // unit square: four sides of 1 and the shared diagonal of sqrt 2 (counted once, not twice)
+    EXPECT_NEAR(mean_edge_length(test::unit_square()), (4 + std::sqrt(2.0)) / 5, 1e-15);
+    // one Kuhn cube: 12 cube edges, one diagonal per face (6 x sqrt 2), the main diagonal
+    // (sqrt 3): 19 edges shared by 6 tetrahedra
+    EXPECT_NEAR(mean_edge_length(test::kuhn_cube(1)), (12 + 6 * std::sqrt(2.0) + std::sqrt(3.0)) / 19, 1e-15);
+    // each position set on its own
+    Mesh square = test::unit_square();
+    square.set_deformed(2, {2, 2, 0});
+    EXPECT_NEAR(mean_edge_length(square), (4 + std::sqrt(2.0)) / 5, 1e-15);
+    EXPECT_GT(mean_edge_length(square, Positions::deformed), (4 + std::sqrt(2.0)) / 5 + 0.1);
+    EXPECT_EQ(mean_edge_length(Mesh(3, 3)), 0.0);
+}
+
 TEST(Quality, RegularTetrahedron) {
     EXPECT_NEAR(aspect_ratio(regular), std::sqrt(2.0 / 3.0), 1e-12);
     EXPECT_NEAR(radius_ratio(regular), 1.0, 1e-12);

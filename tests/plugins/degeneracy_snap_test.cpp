@@ -61,22 +61,6 @@ std::string throw_message(auto&& call) {
     return "(no std::invalid_argument)";
 }
 
-// ---- mean_edge_length ----------------------------------------------------------------------
-
-TEST(SnapToPlane, MeanEdgeLengthCountsEachEdgeOnce) {
-    // unit square: four sides of 1 and the shared diagonal of sqrt 2 (counted once, not twice)
-    EXPECT_NEAR(mean_edge_length(test::unit_square()), (4 + std::sqrt(2.0)) / 5, 1e-15);
-    // one Kuhn cube: 12 cube edges, one diagonal per face (6 x sqrt 2), the main diagonal
-    // (sqrt 3): 19 edges shared by 6 tetrahedra
-    EXPECT_NEAR(mean_edge_length(test::kuhn_cube(1)),
-                (12 + 6 * std::sqrt(2.0) + std::sqrt(3.0)) / 19, 1e-15);
-    // reference positions only
-    Mesh square = test::unit_square();
-    square.set_deformed(2, {5, 5, 0});
-    EXPECT_NEAR(mean_edge_length(square), (4 + std::sqrt(2.0)) / 5, 1e-15);
-    EXPECT_EQ(mean_edge_length(Mesh(3, 3)), 0.0);
-}
-
 // ---- which vertices move, and where --------------------------------------------------------
 
 // A plane whose normal has no negative component: every Kuhn tetrahedron spans more than

@@ -92,6 +92,79 @@ TEST_P(SnapCutThrough, ACutThroughTheCubeSeparatesItInAnyNumberOfSteps) {
 
 INSTANTIATE_TEST_SUITE_P(Steps, SnapCutThrough, ::testing::Values(1, 4, 16, 64, 256));
 
+// The same cut with every crossing more than 0.2 h from the plane split (Options::split_beyond,
+// split_far_crossings.hpp): 114 to 186 edges split, and the cube still comes apart in two
+// however many steps (with a split node's edges marked by the exact test alone, its rounding
+// left holes from 16 steps on).
+class SnapCutThroughSplitting : public ::testing::TestWithParam<int> {};
+
+TEST_P(SnapCutThroughSplitting, ACutThroughTheCubeWithItsCrossingsSplitSeparatesIt) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    auto session = SnapCutSession::make(mesh, {.split_beyond = 0.2}, {degeneracy_service()}).value();
+    std::size_t loose = 0, split = 0;
+    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -12, 30, GetParam())) {
+        ASSERT_TRUE(session->cut(scalpel));
+        loose += session->last_step().loose_pieces.size();
+        split += session->last_step().edges_split;
+    }
+    expect_valid(mesh);
+    EXPECT_GE(split, 100u);
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    EXPECT_EQ(loose, 1u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Steps, SnapCutThroughSplitting, ::testing::Values(1, 16, 256));
+
+// One Kuhn cube cut through by the plane x = 1/2: every edge it crosses has both ends 1/2 from
+// the plane (0.43 h), beyond split_beyond = 0.3 h. The nine such edges (four along x, four face
+// diagonals, the main diagonal) are split at their midpoints, which lie on the plane exactly, and
+// the cut runs through them alone: no node moves, and the cube comes apart on x = 1/2.
+TEST(SnapCutSplitting, CrossingsFarFromBothEndsGetANodeOnTheSweep) {
+    Mesh mesh = make_kuhn_cube(1).value();
+    auto session = SnapCutSession::make(mesh, {.split_beyond = 0.3}, {degeneracy_service()}).value();
+    std::size_t split = 0, dissected = 0, loose = 0;
+    for (const Scalpel& scalpel : straight_path({0.5, -1, 0}, {0, 1, 0}, 3, -1, 2, 1)) {
+        ASSERT_TRUE(session->cut(scalpel));
+        split += session->last_step().edges_split;
+        dissected += session->last_step().faces_dissected;
+        loose += session->last_step().loose_pieces.size();
+    }
+    expect_valid(mesh);
+    EXPECT_EQ(split, 9u);
+    EXPECT_GT(dissected, 0u);
+    EXPECT_EQ(loose, 1u);
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    mesh.for_each_boundary_face([&](FaceId f) {
+        const Simplex face = mesh.face_simplex(f);
+        if (mesh.face_label(face) != cut_label) return;
+        for (const VertexId v : face.vertices()) {
+            EXPECT_EQ(mesh.reference(v)[0], 0.5) << "vertex " << v;
+            EXPECT_EQ(mesh.deformed(v)[0], 0.5) << "vertex " << v;
+        }
+    });
+    // the default (1 h) leaves these edges to the snapping
+    Mesh whole = make_kuhn_cube(1).value();
+    auto plain = SnapCutSession::make(whole, {}, {degeneracy_service()}).value();
+    for (const Scalpel& scalpel : straight_path({0.5, -1, 0}, {0, 1, 0}, 3, -1, 2, 1)) {
+        ASSERT_TRUE(plain->cut(scalpel));
+        EXPECT_EQ(plain->last_step().edges_split, 0u);
+    }
+    expect_valid(whole);
+}
+
+TEST(SnapCutSplitting, ADistanceThatIsNotAFiniteNonNegativeNumberIsRefused) {
+    Mesh mesh = make_kuhn_cube(1).value();
+    for (const double bad : {-1.0, std::nan(""), static_cast<double>(INFINITY)}) {
+        const auto made = SnapCutSession::make(mesh, {.split_beyond = bad});
+        ASSERT_FALSE(made.ok());
+        EXPECT_EQ(made.code(), RefusalCode::bad_argument);
+        EXPECT_EQ(made.reason().rfind("snapcut: the distance beyond which crossings are split must be finite and "
+                                      ">= 0, not ", 0),
+                  0u)
+            << made.reason();
+    }
+}
+
 TEST(SnapCut, WithoutSnappingTheGridFacesOpenWhereTheyAre) {
     Mesh mesh = make_kuhn_cube(8).value();
     snapcut::Options options;

@@ -2,6 +2,7 @@
 // degeneracy removal and of relaxation after it make it.
 #pragma once
 
+#include "sxk/quality.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/generators.hpp"
 
@@ -19,7 +20,7 @@ inline const degeneracy::Plane thesis_cube_plane{{3.85, 4.0, 3.5}, {1, -0.95, 0.
 inline Mesh snapped_thesis_cube(degeneracy::SnapReport& snap) {
     Mesh mesh = make_kuhn_cube(8).value();
     snap =
-        degeneracy::snap_to_plane(mesh, thesis_cube_plane, degeneracy::mean_edge_length(mesh) / 3);
+        degeneracy::snap_to_plane(mesh, thesis_cube_plane, sxk::mean_edge_length(mesh) / 3);
     return mesh;
 }
 

@@ -77,7 +77,7 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
     const std::string femur = make_femur();
     ASSERT_FALSE(femur.empty()) << "tools/make-data femur failed";
     Mesh mesh = read_mesh(femur);
-    const double h = degeneracy::mean_edge_length(mesh);
+    const double h = sxk::mean_edge_length(mesh);
     std::size_t degenerate_before = 0;
     for (const ElementId t : elements(mesh)) degenerate_before += degenerate(mesh, t);
 

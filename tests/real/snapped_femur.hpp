@@ -4,6 +4,7 @@
 // §3.2.2). tools/bench/degeneracies.cpp snaps its femurs the same way.
 #pragma once
 
+#include "sxk/quality.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/mesh.hpp"
 
@@ -11,7 +12,7 @@ namespace sxk::test {
 
 inline degeneracy::SnapReport snap_femur(Mesh& mesh) {
     return degeneracy::snap_to_plane(mesh, degeneracy::plane_through_centre(mesh, {0.3, 1, 0.12}),
-                                     degeneracy::mean_edge_length(mesh) / 3);
+                                     sxk::mean_edge_length(mesh) / 3);
 }
 
 }  // namespace sxk::test

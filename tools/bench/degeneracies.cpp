@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "sxk/quality.hpp"
 #include "parse_option.hpp"
 #include "remove_degeneracies.hpp"
 #include "snap_to_plane.hpp"
@@ -126,7 +127,7 @@ int main(int argc, char** argv) {
         }
         c.elements = c.snapped.element_count();
         const dg::SnapReport snap =
-            dg::snap_to_plane(c.snapped, dg::plane_through_centre(c.snapped, {0.3, 1, 0.12}), dg::mean_edge_length(c.snapped) / 3);
+            dg::snap_to_plane(c.snapped, dg::plane_through_centre(c.snapped, {0.3, 1, 0.12}), sxk::mean_edge_length(c.snapped) / 3);
         c.moved = snap.moved;
         c.candidates = dg::elements_around(c.snapped, c.moved).size();
         std::fprintf(

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         sxk::Mesh snapped = mesh;
         const dg::SnapReport snap =
             dg::snap_to_plane(snapped, dg::plane_through_centre(snapped, {0.3, 1, 0.12}),
-                              dg::mean_edge_length(snapped) / 3);
+                              sxk::mean_edge_length(snapped) / 3);
         const el::SolveReport before = relax(snapped, 2 * unsnapped.iterations);
         std::fprintf(stderr,
                      "relax: %s snapped (%zu vertices moved): %zu iterations%s, |r| %.3g (needed "

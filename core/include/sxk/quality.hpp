@@ -32,6 +32,11 @@ SXK_API std::array<double, 3> triangle_angles(std::span<const Point> triangle);
 // points). The boundary tolerance of collapses and of degeneracy removal is measured so.
 SXK_API double relative_distance_to_hull(std::span<const Point> face, const Point& p);
 
+// The mean length of the mesh's edges, each counted once, in the given positions: the mesh size
+// h the thesis measures distances in (its snapped test meshes, the snap cut's incision). 0 for a
+// mesh without elements. O(E log E): sorts every element's vertex pairs.
+SXK_API double mean_edge_length(const Mesh& mesh, Positions positions = Positions::reference);
+
 // The positions of element t's vertices in canonical order.
 SXK_API std::vector<Point> element_points(const Mesh& mesh, ElementId t,
                                           Positions positions = Positions::deformed);

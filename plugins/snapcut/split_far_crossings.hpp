@@ -1,0 +1,52 @@
+// Crossings far from the mesh's nodes: where snapping alone cannot bring the incision close to the
+// scalpel.
+//
+// The selection marks the end of each crossed edge nearer the crossing, and snapping moves it onto
+// the sweep. A node is at most half its edge from the crossing, but a real mesh's interior edges
+// are long (the femur's up to 7 times its mean edge h): a node 1.5 h from the sweep, whose star
+// would invert before it gets there, stays off the cut or goes part of the way
+// (node_snapping.hpp). So before the selection, an edge the sweep crosses whose nearer end is
+// farther than `beyond` from the sweep's plane is split where the sweep crosses it (split_edge,
+// both position sets at the same fraction of the edge, which is where the element maps the
+// crossing): the new node lies on the sweep, every edge at it is marked with it (an exact touch
+// would mark them so; rounding puts the node on either side of the plane), and the faces selected
+// through it lie on the sweep where the edge was long.
+//
+//        a (far from the sweep)            a
+//        |                                 |
+//   =====x===== sweep        --->     =====m===== m: the new node, the mark of every edge at m
+//        |                                 |
+//        b                                 b
+//
+// The distance is to the sweep's plane, not its triangle. Measured against the triangle, a node
+// just beyond a sweep where the blade turns is far from it but on the next sweep; splitting its
+// edge at the first sweep's crossing put the incision through both, and the femur cut stayed in
+// one piece. Both ends are then farther than `beyond` from the crossing, so no child is a sliver
+// along the edge. Edges with a snapped end are left alone: the selection sees a snapped node where
+// it was before the cut moved it, and the crossing of the edge it sees is not a point of the edge
+// as it lies. Only unmarked edges count (the first crossing of an edge is its mark), and an edge
+// split_edge refuses (a pinched star, a child flat by rounding) stays and is marked by the
+// selection as before.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "face_selection.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk::snapcut {
+
+struct FarCrossings {
+    std::size_t split = 0;    // edges split where the sweep crosses them
+    std::size_t refused = 0;  // edges split_edge refused (left to the selection as they are)
+};
+
+// Splits the far crossings of sweep `sweep_index` among the edges of `candidates` (dead ids are
+// skipped) and adds the children to `candidates` (sorted again, each once). `beyond` > 0.
+FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
+                                 std::vector<ElementId>& candidates, double beyond);
+
+}  // namespace sxk::snapcut
