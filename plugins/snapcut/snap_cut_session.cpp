@@ -308,6 +308,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
     if (m_split_beyond > 0 && m_options.snap) {
         const FarCrossings far = split_far_crossings(mesh, m_marks, sweep_index, candidates, m_split_beyond);
         m_last.edges_split += far.split;
+        m_last.edges_hit += far.split;  // crossed, and marked by the split rather than the selection
         m_last.splits_refused += far.refused;
         if (far.split > 0) report.actions.push_back("split " + std::to_string(far.split) + " far crossings");
     }

@@ -23,7 +23,6 @@ using Vec = Eigen::Vector3d;
 
 Vec vec(const Point& p) { return {p[0], p[1], p[2]}; }
 
-
 }  // namespace
 
 FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,

@@ -196,6 +196,9 @@ TEST(SxkCutSnap, UsageErrors) {
     const ProcessResult bad_aspect = f.cut(path, {"--aspect", "2"});
     EXPECT_EQ(bad_aspect.exit_code, 2);
     EXPECT_NE(bad_aspect.err.find("--aspect: '2' is not in (0, 1)"), std::string::npos) << bad_aspect.err;
+    const ProcessResult bad_split = f.cut(path, {"--split-beyond", "-0.5"});
+    EXPECT_EQ(bad_split.exit_code, 2);
+    EXPECT_NE(bad_split.err.find("--split-beyond: '-0.5' is not in [0, 1000]"), std::string::npos) << bad_split.err;
     const fs::path square = f.folder / "square.mesh";
     ASSERT_EQ(sxk({"convert", SXK_TEST_DATA_DIR "/io/square.mesh", square.string()}).exit_code, 0);
     const ProcessResult planar = sxk({"cut", "snap", square.string(), path.string(), f.out.string()});
@@ -204,6 +207,7 @@ TEST(SxkCutSnap, UsageErrors) {
     const ProcessResult help = sxk({"cut", "snap", "--help"});
     EXPECT_EQ(help.exit_code, 0);
     EXPECT_NE(help.out.find("--no-degeneracy-removal"), std::string::npos);
+    EXPECT_NE(help.out.find("--split-beyond"), std::string::npos);
 }
 
 TEST(SxkCutSnap, ListedAsAPluginCommandAndCutsADeformingBody) {
