@@ -1,7 +1,7 @@
 // The mesh's mean edge length (sxk/quality.hpp).
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <cstddef>
 #include <vector>
 
 #include "sxk/quality.hpp"
@@ -10,30 +10,42 @@
 namespace sxk {
 
 double mean_edge_length(const Mesh& mesh, Positions positions) {
-    // each edge once: its sorted vertex pair packed into 64 bits, sorted and made unique (about
-    // 7 pairs per tetrahedron: 1.5M for the 213k-tet femur, sorted in well under a second)
-    std::vector<std::uint64_t> edges;
+    // Each edge once: every element's vertex pairs bucketed by their lower vertex (a count, then a
+    // fill), each bucket (a vertex's higher neighbours, about 7) sorted and made unique. One
+    // global sort of the packed pairs took 0.6 s at 1.2M tetrahedra, when the snap cutter's
+    // session begins; the buckets need no global order.
+    const std::size_t n = mesh.vertex_count();
     const int k = mesh.element_vertex_count();
-    edges.reserve(mesh.element_count() * static_cast<std::size_t>(k * (k - 1) / 2));
-    for (const ElementId t : elements(mesh)) {
-        const Simplex& s = mesh.simplex(t);
-        for (int i = 0; i < k; ++i)
-            for (int j = i + 1; j < k; ++j) {
-                const std::uint64_t a = std::min(s.vertex(i), s.vertex(j));
-                const std::uint64_t b = std::max(s.vertex(i), s.vertex(j));
-                edges.push_back(a << 32 | b);
-            }
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    if (edges.empty()) return 0;
+    std::vector<std::size_t> start(n + 1, 0);
+    const auto each_pair = [&](auto&& visit) {
+        for (const ElementId t : elements(mesh)) {
+            const Simplex& s = mesh.simplex(t);
+            for (int i = 0; i < k; ++i)
+                for (int j = i + 1; j < k; ++j)
+                    visit(std::min(s.vertex(i), s.vertex(j)), std::max(s.vertex(i), s.vertex(j)));
+        }
+    };
+    each_pair([&](VertexId a, VertexId) { ++start[std::size_t{a} + 1]; });
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    std::vector<VertexId> higher(start[n]);
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    each_pair([&](VertexId a, VertexId b) { higher[next[a]++] = b; });
     const auto& at = positions == Positions::reference ? mesh.reference_positions() : mesh.deformed_positions();
     double sum = 0;
-    for (const std::uint64_t e : edges) {
-        const Point &p = at[static_cast<VertexId>(e >> 32)], &q = at[static_cast<VertexId>(e & 0xffffffffu)];
-        sum += std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+    std::size_t edges = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+        const auto first = higher.begin() + static_cast<std::ptrdiff_t>(start[v]);
+        auto last = higher.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+        std::sort(first, last);
+        last = std::unique(first, last);
+        const Point& p = at[v];
+        for (auto w = first; w != last; ++w) {
+            const Point& q = at[*w];
+            sum += std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+        }
+        edges += static_cast<std::size_t>(last - first);
     }
-    return sum / static_cast<double>(edges.size());
+    return edges == 0 ? 0 : sum / static_cast<double>(edges);
 }
 
 }  // namespace sxk

@@ -39,10 +39,10 @@ struct SnapReport {
 Plane plane_through_centre(const Mesh& mesh, const Point& normal);
 
 // Snaps the vertices within max_distance of the plane (reference positions) onto it. The
-// thesis' snapped meshes use max_distance = mean_edge_length / 3 (sxk/quality.hpp). A test-mesh maker, not an
-// edit of the kernel: throws std::invalid_argument (mesh untouched) for a zero or non-finite
-// normal ("snap_to_plane: the plane's normal must be finite and not zero") or a negative or
-// non-finite distance ("snap_to_plane: max_distance must be finite and >= 0, not -1").
+// thesis' snapped meshes use max_distance = mean_edge_length / 3 (sxk/quality.hpp). A test-mesh
+// maker, not an edit of the kernel: throws std::invalid_argument (mesh untouched) for a zero or
+// non-finite normal ("snap_to_plane: the plane's normal must be finite and not zero") or a
+// negative or non-finite distance ("snap_to_plane: max_distance must be finite and >= 0, not -1").
 // Vertices in no element, and vertices whose projection is their position already (bit for
 // bit, both sets), are neither moved nor refused. A refused move is checked against the
 // positions of the vertices moved before it (order of id) and leaves the vertex where it was.

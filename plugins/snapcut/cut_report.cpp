@@ -71,8 +71,8 @@ nlohmann::ordered_json to_json(const Options& options, bool degeneracy_service) 
 namespace {
 
 struct Totals {
-    std::size_t edges = 0, edges_split = 0, selected = 0, dissected = 0, snapped = 0, refused = 0, degenerate = 0, collapses = 0,
-                splits = 0, flips = 0, peeled = 0, cut_free = 0, pieces = 0;
+    std::size_t edges = 0, edges_split = 0, selected = 0, dissected = 0, snapped = 0, refused = 0, degenerate = 0,
+                collapses = 0, splits = 0, flips = 0, peeled = 0, cut_free = 0, pieces = 0;
     double seconds = 0;
 };
 

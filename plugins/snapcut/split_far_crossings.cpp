@@ -2,8 +2,8 @@
 #include "split_far_crossings.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <unordered_set>
 
 #include <Eigen/Dense>
 
@@ -29,28 +29,39 @@ FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t swee
                                  std::vector<ElementId>& candidates, double beyond) {
     const Sweep sweep = marks.sweeps()[sweep_index];
     const Vec corner = vec(sweep.a), normal = (vec(sweep.b) - corner).cross(vec(sweep.c) - corner);
+    const double reach = beyond * normal.norm();  // `beyond` in the units of the signed distances
     std::vector<Crossing> far;
-    std::unordered_set<std::uint64_t> seen;
     for (const ElementId t : candidates) {
         if (!mesh.is_element(t)) continue;
         const Simplex s = mesh.simplex(t);
+        // the signed distances (times |normal|) of the corners locate the crossings. An edge is
+        // looked at from each of its elements, the double tests first (most edges along the
+        // blade have both ends on one side, or one end near the plane), and repeats are dropped
+        // below: with a set of the edges seen, this pass cost 0.3 ms of a 1 kHz step on the
+        // 1.2M femur, without it 0.1 ms (docs/performance.md).
+        std::array<double, 4> d{};
+        for (int i = 0; i < 4; ++i)
+            d[static_cast<std::size_t>(i)] = normal.dot(vec(mesh.deformed(s.vertex(i))) - corner);
         for (int i = 0; i < 4; ++i)
             for (int j = i + 1; j < 4; ++j) {
+                const double da = d[static_cast<std::size_t>(i)], db = d[static_cast<std::size_t>(j)];
+                // both ends on one side in doubles: the edge meets the sweep, if at all, within
+                // rounding of an end, which is then on the sweep: nothing to split
+                if (!(da * db < 0) || !(std::min(std::abs(da), std::abs(db)) > reach)) continue;
                 const VertexId a = s.vertex(i), b = s.vertex(j);  // a < b: the simplex is sorted
-                if (!seen.insert((std::uint64_t{a} << 32) | b).second) continue;
                 if (marks.snapped(a) || marks.snapped(b)) continue;
                 if (marks.has_marked_edge(a) && marks.has_marked_edge(b) && marks.mark(a, b)) continue;
-                const Point &pa = mesh.deformed(a), &pb = mesh.deformed(b);
-                // the signed distances (times |normal|) locate the crossing; an edge with both ends
-                // on one side in doubles meets the sweep, if at all, within rounding of an end,
-                // which is then on the sweep: nothing to split
-                const double da = normal.dot(vec(pa) - corner), db = normal.dot(vec(pb) - corner);
-                if (!(da * db < 0)) continue;
-                if (!segment_meets_triangle(pa, pb, sweep.a, sweep.b, sweep.c)) continue;
-                if (!(std::min(std::abs(da), std::abs(db)) > beyond * normal.norm())) continue;
+                if (!segment_meets_triangle(mesh.deformed(a), mesh.deformed(b), sweep.a, sweep.b, sweep.c)) continue;
                 far.push_back({a, b, da / (da - db)});
             }
     }
+    std::sort(far.begin(), far.end(), [](const Crossing& x, const Crossing& y) {
+        return x.a != y.a ? x.a < y.a : x.b < y.b;
+    });
+    far.erase(std::unique(far.begin(), far.end(), [](const Crossing& x, const Crossing& y) {
+                  return x.a == y.a && x.b == y.b;
+              }),
+              far.end());
     FarCrossings result;
     for (const Crossing& crossing : far) {
         auto split = split_edge(mesh, crossing.a, crossing.b, crossing.t);

@@ -2,9 +2,9 @@
 // degeneracy removal and of relaxation after it make it.
 #pragma once
 
-#include "sxk/quality.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/generators.hpp"
+#include "sxk/quality.hpp"
 
 namespace sxk::test {
 

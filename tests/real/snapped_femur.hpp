@@ -4,9 +4,9 @@
 // §3.2.2). tools/bench/degeneracies.cpp snaps its femurs the same way.
 #pragma once
 
-#include "sxk/quality.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/mesh.hpp"
+#include "sxk/quality.hpp"
 
 namespace sxk::test {
 

@@ -38,12 +38,12 @@
 #include <string>
 #include <vector>
 
-#include "sxk/quality.hpp"
 #include "parse_option.hpp"
 #include "remove_degeneracies.hpp"
 #include "snap_to_plane.hpp"
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
+#include "sxk/quality.hpp"
 
 namespace {
 
@@ -127,7 +127,8 @@ int main(int argc, char** argv) {
         }
         c.elements = c.snapped.element_count();
         const dg::SnapReport snap =
-            dg::snap_to_plane(c.snapped, dg::plane_through_centre(c.snapped, {0.3, 1, 0.12}), sxk::mean_edge_length(c.snapped) / 3);
+            dg::snap_to_plane(c.snapped, dg::plane_through_centre(c.snapped, {0.3, 1, 0.12}),
+                              sxk::mean_edge_length(c.snapped) / 3);
         c.moved = snap.moved;
         c.candidates = dg::elements_around(c.snapped, c.moved).size();
         std::fprintf(

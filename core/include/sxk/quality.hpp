@@ -34,7 +34,7 @@ SXK_API double relative_distance_to_hull(std::span<const Point> face, const Poin
 
 // The mean length of the mesh's edges, each counted once, in the given positions: the mesh size
 // h the thesis measures distances in (its snapped test meshes, the snap cut's incision). 0 for a
-// mesh without elements. O(E log E): sorts every element's vertex pairs.
+// mesh without elements. Linear in the elements (pairs bucketed by their lower vertex).
 SXK_API double mean_edge_length(const Mesh& mesh, Positions positions = Positions::reference);
 
 // The positions of element t's vertices in canonical order.
