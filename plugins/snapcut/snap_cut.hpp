@@ -6,6 +6,8 @@
 //   1. select faces (§3.2.1)                   every mesh edge the sweep crosses marks its end
 //        |  face_selection.hpp                 nearer the crossing; a tetrahedron whose marked ends
 //        |                                     are three of its corners has that face selected
+//        |  split_far_crossings.hpp            (first, a crossed edge whose nearer end is far from
+//        |                                     the sweep's plane is split where it is crossed)
 //   2. snap nodes (§3.2.2)                     the selected faces' corners move onto the sweep
 //        |  node_snapping.hpp                  (boundary nodes within their boundary faces), in
 //        |                                     the deformed positions, mapped back to the reference
@@ -88,7 +90,7 @@ struct Options {
     // runs through the new node instead of a node the snapping may not be able to move that far.
     // On the static femur this takes the farthest corner from 0.82 h to 0.38 h for 52 more
     // elements. At 0.5 the deformed femur's cut stayed in one piece (docs/snapcut.md), hence 1.
-    // 0: never split (the thesis' snap cut, which only moves nodes).
+    // 0: never split (the thesis' snap cut, which only moves nodes). Only with `snap`.
     double split_beyond = 1;
     // The face label of the cut surface (DissectOptions::cut_label).
     int cut_label = 9999;

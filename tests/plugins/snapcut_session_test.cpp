@@ -73,21 +73,31 @@ TEST(SnapCut, APlaneAlongTheGridOpensTheGridFacesItCrosses) {
 // Fig. 3.17: in the thesis, an incision made in several steps could come apart (degeneracy
 // removal collapsed the edges whose marks connected one sweep to the next). A cut through the
 // whole cube along a tilted plane must separate it in two, however many steps it takes.
+struct ThroughCut {
+    std::size_t loose = 0, dissected = 0, split = 0;
+};
+
+ThroughCut cut_through_the_cube(Mesh& mesh, int steps, const snapcut::Options& options) {
+    auto session = SnapCutSession::make(mesh, options, {degeneracy_service()}).value();
+    ThroughCut cut;
+    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -12, 30, steps)) {
+        EXPECT_TRUE(session->cut(scalpel));
+        cut.loose += session->last_step().loose_pieces.size();
+        cut.dissected += session->last_step().faces_dissected;
+        cut.split += session->last_step().edges_split;
+    }
+    return cut;
+}
+
 class SnapCutThrough : public ::testing::TestWithParam<int> {};
 
 TEST_P(SnapCutThrough, ACutThroughTheCubeSeparatesItInAnyNumberOfSteps) {
     Mesh mesh = make_kuhn_cube(8).value();
-    auto session = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
-    std::size_t loose = 0, dissected = 0;
-    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -12, 30, GetParam())) {
-        ASSERT_TRUE(session->cut(scalpel));
-        loose += session->last_step().loose_pieces.size();
-        dissected += session->last_step().faces_dissected;
-    }
+    const ThroughCut cut = cut_through_the_cube(mesh, GetParam(), {});
     expect_valid(mesh);
     EXPECT_EQ(connected_components(mesh).count, 2u);
-    EXPECT_EQ(loose, 1u);
-    EXPECT_GE(dissected, 180u);
+    EXPECT_EQ(cut.loose, 1u);
+    EXPECT_GE(cut.dissected, 180u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Steps, SnapCutThrough, ::testing::Values(1, 4, 16, 64, 256));
@@ -100,17 +110,11 @@ class SnapCutThroughSplitting : public ::testing::TestWithParam<int> {};
 
 TEST_P(SnapCutThroughSplitting, ACutThroughTheCubeWithItsCrossingsSplitSeparatesIt) {
     Mesh mesh = make_kuhn_cube(8).value();
-    auto session = SnapCutSession::make(mesh, {.split_beyond = 0.2}, {degeneracy_service()}).value();
-    std::size_t loose = 0, split = 0;
-    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -12, 30, GetParam())) {
-        ASSERT_TRUE(session->cut(scalpel));
-        loose += session->last_step().loose_pieces.size();
-        split += session->last_step().edges_split;
-    }
+    const ThroughCut cut = cut_through_the_cube(mesh, GetParam(), {.split_beyond = 0.2});
     expect_valid(mesh);
-    EXPECT_GE(split, 100u);
+    EXPECT_GE(cut.split, 100u);
     EXPECT_EQ(connected_components(mesh).count, 2u);
-    EXPECT_EQ(loose, 1u);
+    EXPECT_EQ(cut.loose, 1u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Steps, SnapCutThroughSplitting, ::testing::Values(1, 16, 256));
