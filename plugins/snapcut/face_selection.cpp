@@ -98,7 +98,7 @@ std::uint64_t CutMarks::key(VertexId a, VertexId b) {
     return (std::uint64_t{a} << 32) | b;
 }
 
-std::optional<CutMarks::Mark> CutMarks::mark(VertexId a, VertexId b) const {
+std::optional<CutMarks::Mark> CutMarks::find_mark(VertexId a, VertexId b) const {
     const auto found = m_marks.find(key(a, b));
     if (found == m_marks.end()) return std::nullopt;
     return found->second;
@@ -196,8 +196,7 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
         for (int i = 0; i < 4; ++i)
             for (int j = i + 1; j < 4; ++j) {
                 const VertexId u = s.vertex(i), v = s.vertex(j);
-                std::optional<CutMarks::Mark> mark;
-                if (marks.has_marked_edge(u) && marks.has_marked_edge(v)) mark = marks.mark(u, v);
+                std::optional<CutMarks::Mark> mark = marks.mark(u, v);
                 if (!mark) {
                     const std::uint64_t edge = (std::uint64_t{u} << 32) | v;  // u < v: canonical order
                     if (missed.contains(edge)) continue;

@@ -66,10 +66,13 @@ public:
         std::uint32_t sweep = 0;     // the sweep that crossed the edge (index into sweeps())
     };
 
-    // The mark of edge {a, b}, if a sweep crossed it.
-    std::optional<Mark> mark(VertexId a, VertexId b) const;
-    // Whether some marked edge ends at v: the selection asks it before looking an edge up (most
-    // elements along the blade have no marked edge, and a lookup costs a hash each).
+    // The mark of edge {a, b}, if a sweep crossed it. Most edges along the blade have an end with
+    // no marked edge at all: those are answered from a per-vertex count, without a hash lookup.
+    std::optional<Mark> mark(VertexId a, VertexId b) const {
+        if (!has_marked_edge(a) || !has_marked_edge(b)) return std::nullopt;
+        return find_mark(a, b);
+    }
+    // Whether some marked edge ends at v.
     bool has_marked_edge(VertexId v) const { return v < m_marks_at.size() && m_marks_at[v] > 0; }
     void add_mark(VertexId a, VertexId b, const Mark& mark);
     std::size_t mark_count() const { return m_marks.size(); }
@@ -135,6 +138,7 @@ public:
 
 private:
     static std::uint64_t key(VertexId a, VertexId b);
+    std::optional<Mark> find_mark(VertexId a, VertexId b) const;  // the hash lookup of mark()
     std::unordered_map<std::uint64_t, Mark> m_marks;
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
     std::vector<std::uint32_t> m_marks_at;    // per vertex id, the marked edges ending there

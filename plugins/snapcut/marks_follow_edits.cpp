@@ -44,7 +44,7 @@ void CutMarks::carry_to_copies(const Mesh& mesh, std::span<const std::pair<Verte
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
         for (const VertexId x : neighbours) {
             const VertexId x0 = original(x);
-            if (x0 == o || !has_marked_edge(x0)) continue;  // x0 == o: another copy of o
+            if (x0 == o) continue;  // another copy of o
             const std::optional<Mark> was = mark(o, x0);
             if (!was) continue;
             mark_outside_selection(mesh, around, c, x, Mark{was->node == o ? c : x, was->sweep});
@@ -63,7 +63,7 @@ void CutMarks::mark_from_earlier_sweeps(const Mesh& mesh, std::span<const Elemen
             for (int j = i + 1; j < s.count(); ++j) {
                 const VertexId u = s.vertex(i), v = s.vertex(j);
                 if (!tested.insert(key(u, v)).second) continue;
-                if (has_marked_edge(u) && has_marked_edge(v) && mark(u, v)) continue;
+                if (mark(u, v)) continue;
                 const Point& p = mesh.deformed(u);
                 const Point& q = mesh.deformed(v);
                 Point low{}, high{};

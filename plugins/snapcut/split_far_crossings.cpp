@@ -50,7 +50,7 @@ FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t swee
                 if (!(da * db < 0) || !(std::min(std::abs(da), std::abs(db)) > reach)) continue;
                 const VertexId a = s.vertex(i), b = s.vertex(j);  // a < b: the simplex is sorted
                 if (marks.snapped(a) || marks.snapped(b)) continue;
-                if (marks.has_marked_edge(a) && marks.has_marked_edge(b) && marks.mark(a, b)) continue;
+                if (marks.mark(a, b)) continue;
                 if (!segment_meets_triangle(mesh.deformed(a), mesh.deformed(b), sweep.a, sweep.b, sweep.c)) continue;
                 far.push_back({a, b, da / (da - db)});
             }

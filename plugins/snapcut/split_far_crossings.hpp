@@ -21,12 +21,13 @@
 // The distance is to the sweep's plane, not its triangle. A node just beyond one sweep triangle
 // is often on the next (the movement's other half, or the next movement): measured against the
 // triangle, its edge was split at the first sweep's crossing, the next sweep marked the node
-// itself, the incision ran through both, and the femur cut stayed in one piece. Both ends are then farther than `beyond` from the crossing, so no child is a sliver
-// along the edge. Edges with a snapped end are left alone: the selection sees a snapped node where
-// it was before the cut moved it, and the crossing of the edge it sees is not a point of the edge
-// as it lies. Only unmarked edges count (the first crossing of an edge is its mark), and an edge
-// split_edge refuses (a pinched star, a child flat by rounding) stays and is marked by the
-// selection as before.
+// itself, the incision ran through both, and the femur cut stayed in one piece. Both ends are
+// then farther than `beyond` from the crossing, so no child is a sliver along the edge. Edges
+// with a snapped end are left alone: the selection sees a snapped node where it was before the
+// cut moved it, and the crossing of the edge it sees is not a point of the edge as it lies. Only
+// unmarked edges count (the first crossing of an edge is its mark), and an edge split_edge
+// refuses (a pinched star, a child flat by rounding) stays and is marked by the selection as
+// before.
 #pragma once
 
 #include <cstddef>
