@@ -25,7 +25,8 @@ void add_cut_options(CLI::App& app, Options& options) {
         ->capture_default_str();
     app.add_option("--split-beyond", options.split_beyond,
                    "Split a crossed edge where the sweep crosses it when its nearer end is farther than this "
-                   "from the sweep's plane, in mean edge lengths, 0..1000 (0: never; only snapping moves the incision)")
+                   "from where the blade has swept, in mean edge lengths, 0..1000 (0: never; only snapping moves "
+                   "the incision)")
         ->check(number_in(0, true, 1000, true, "[0, 1000]"))
         ->capture_default_str();
     app.add_flag("--remove-loose", options.remove_loose_pieces, "Remove the pieces a step cuts loose");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
 
 #include "sxk/locate.hpp"
@@ -46,6 +47,16 @@ struct CutMarks::SweepTree {
         return {box(low, high), index};
     }
 };
+
+double distance_to_sweep(const Sweep& sweep, const Point& p) {
+    const auto w = nearest_on_triangle(sweep.a, sweep.b, sweep.c, p);
+    double d2 = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const double q = w[0] * sweep.a[k] + w[1] * sweep.b[k] + w[2] * sweep.c[k];
+        d2 += (p[k] - q) * (p[k] - q);
+    }
+    return std::sqrt(d2);
+}
 
 CutMarks::CutMarks() : m_tree(std::make_unique<SnappedTree>()), m_sweep_tree(std::make_unique<SweepTree>()) {}
 CutMarks::~CutMarks() = default;
@@ -124,6 +135,21 @@ std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
     return index;
 }
 
+bool CutMarks::near_sweeps(const Point& p, double distance) const {
+    const Point low{p[0] - distance, p[1] - distance, p[2] - distance};
+    const Point high{p[0] + distance, p[1] + distance, p[2] + distance};
+    for (auto it = m_sweep_tree->tree.qbegin(bgi::intersects(SweepTree::box(low, high)));
+         it != m_sweep_tree->tree.qend(); ++it)
+        if (distance_to_sweep(m_sweeps[it->second], p) <= distance) return true;
+    return false;
+}
+
+bool SweptSurface::near(const Point& p) const {
+    for (const Sweep& next : ahead)
+        if (distance_to_sweep(next, p) <= beyond) return true;
+    return marks.near_sweeps(p, beyond);
+}
+
 std::vector<std::uint32_t> CutMarks::sweeps_meeting_box(const Point& low, const Point& high) const {
     std::vector<SweepTree::Value> values;
     m_sweep_tree->tree.query(bgi::intersects(SweepTree::box(low, high)), std::back_inserter(values));
@@ -181,7 +207,7 @@ VertexId nearer_end(const Mesh& mesh, const CutMarks& marks, VertexId u, VertexI
 }  // namespace
 
 Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
-                       std::span<const ElementId> candidates) {
+                       std::span<const ElementId> candidates, const SweptSurface* swept) {
     const Sweep& sweep = marks.sweeps()[sweep_index];
     Selection selection;
     std::unordered_set<std::uint64_t> missed;  // edges this sweep tested and does not cross
@@ -205,7 +231,12 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
                         missed.insert(edge);
                         continue;
                     }
-                    mark = CutMarks::Mark{nearer_end(mesh, marks, u, v, sweep), sweep_index};
+                    VertexId nearer = nearer_end(mesh, marks, u, v, sweep);
+                    const VertexId other = nearer == u ? v : u;
+                    if (swept != nullptr && marks.snapped(other) && !marks.snapped(nearer) &&
+                        !swept->near(mesh.deformed(nearer)))
+                        nearer = other;
+                    mark = CutMarks::Mark{nearer, sweep_index};
                     marks.add_mark(u, v, *mark);
                     ++selection.edges_hit;
                 }

@@ -53,6 +53,10 @@ struct Sweep {
     Point a{}, b{}, c{};
 };
 
+// The distance from p to the nearest point of the sweep triangle (double precision: a quantity,
+// not a decision).
+double distance_to_sweep(const Sweep& sweep, const Point& p);
+
 // What the cut keeps between sweeps, with checkpoints to take steps back.
 class CutMarks {
 public:
@@ -79,6 +83,9 @@ public:
 
     const std::vector<Sweep>& sweeps() const { return m_sweeps; }
     std::uint32_t add_sweep(const Sweep& sweep);
+    // Whether p is within `distance` of a sweep so far (the sweeps' tree, then the triangles whose
+    // boxes come that near).
+    bool near_sweeps(const Point& p, double distance) const;
 
     // Marks follow the mesh's edits (thesis §3.4: every change of the mesh must also be applied to
     // the cutting module's references). Marks live on vertex pairs, and an edit that renames or
@@ -162,6 +169,20 @@ private:
     std::vector<ElementId> m_pending;
 };
 
+// Where the blade has swept: the sweeps so far (those of `marks`) and the rest of the movement
+// being cut (`ahead`). A node farther than `beyond` from it is far from the cut: snapped onto a
+// sweep's plane it may land beyond where the blade went (ahead of it, where it turned), and a long
+// move is often refused or cut short (node_snapping.hpp). So its crossed edges are split where
+// crossed (split_far_crossings.hpp), and an edge whose other end is a node on the cut marks that
+// end (select_faces).
+struct SweptSurface {
+    const CutMarks& marks;
+    std::span<const Sweep> ahead;
+    double beyond = 0;
+    // p is within `beyond` of the swept surface.
+    bool near(const Point& p) const;
+};
+
 // A face chosen for the cut, with the nodes to snap and the sweep whose plane each goes to.
 struct SelectedFace {
     Simplex face;                           // sorted vertices, sign +1
@@ -178,7 +199,14 @@ struct Selection {
 // Processes sweep `sweep_index` of `marks` against the tetrahedra `candidates` (what the sweep
 // meets; dead ids are skipped): marks the edges it crosses, selects the
 // faces completed, and leaves the incomplete tetrahedra in `marks`. Deformed positions.
+//
+// With `swept` (the cut snaps and splits far crossings), an edge from a node on the cut (snapped)
+// whose nearer end is far from the swept surface marks the snapped end: the selection sees the
+// snapped node where it was, and the edge it sees crosses the sweep where the edge as it lies
+// does not, so the far end cannot be split out (split_far_crossings.hpp) and, snapped onto the
+// sweep's plane, it would sit beyond where the blade went (on the deforming femur 1.44 h off, where
+// the blade turned).
 Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
-                       std::span<const ElementId> candidates);
+                       std::span<const ElementId> candidates, const SweptSurface* swept = nullptr);
 
 }  // namespace sxk::snapcut

@@ -84,14 +84,14 @@ struct Options {
     // come loose). Where the incision folds around a tetrahedron or two at its rim, one of the
     // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached).
     std::size_t largest_crumb = 4;
-    // Long edges: an edge the sweep crosses whose nearer end is farther than this from the sweep's
-    // plane, in mean edge lengths of the mesh (deformed, measured when the session begins), is
-    // split where the sweep crosses it before the selection (split_far_crossings.hpp): the cut
-    // runs through the new node instead of a node the snapping may not be able to move that far.
-    // On the static femur this takes the farthest corner from 0.82 h to 0.38 h for 52 more
-    // elements. At 0.5 the deformed femur's cut stayed in one piece (docs/snapcut.md), hence 1.
-    // 0: never split (the thesis' snap cut, which only moves nodes). Only with `snap`.
-    double split_beyond = 1;
+    // Long edges: an edge the sweep crosses whose nearer end is farther than this from where the
+    // blade has swept, in mean edge lengths of the mesh (deformed, measured when the session
+    // begins), is split where the sweep crosses it before the selection (split_far_crossings.hpp):
+    // the cut runs through the new node instead of a node the snapping may not be able to move
+    // that far, or would put beyond where the blade went. The bound is half an edge, and
+    // at 0.5 the deforming femur's cut stays within it (docs/snapcut.md "The femur"). 0: never
+    // split (the thesis' snap cut, which only moves nodes). Only with `snap`.
+    double split_beyond = 0.5;
     // The face label of the cut surface (DissectOptions::cut_label).
     int cut_label = 9999;
     // Remove the pieces a step cuts loose (they are reported either way). A simulation fixes
@@ -183,19 +183,21 @@ protected:
     void step_taken_back() override;
 
 private:
-    Outcome<Done> cut_sweep(const Sweep& sweep, StepReport& report);
+    // `ahead`: the sweeps of the same movement that come after this one.
+    Outcome<Done> cut_sweep(const Sweep& sweep, std::span<const Sweep> ahead, StepReport& report);
     // One selection, snap, dissection and removal of sweep `sweep_index`, among the elements the
     // sweep meets and those carried marks may have completed (CutMarks::pending), or among the
     // latter only (whole_sweep false); `edited`: the removal changed the mesh.
-    Outcome<Done> cut_round(std::uint32_t sweep_index, bool whole_sweep, StepReport& report, bool& edited);
+    Outcome<Done> cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, bool whole_sweep,
+                            StepReport& report, bool& edited);
     // The distance from p to the nearest of the sweeps sweep_index - 15 .. sweep_index (the last
-    // 8 steps').
-    double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const;
+    // 8 steps') and of `ahead` (the rest of this movement).
+    double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index, std::span<const Sweep> ahead) const;
     // Raises `farthest` to the largest distance_to_recent_sweeps of `corners` and `farthest_local`
     // to the largest such distance over the mean length of the corner's edges
     // (CutStepReport::placement_error, incision_error).
-    void note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, double& farthest,
-                        double& farthest_local) const;
+    void note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, std::span<const Sweep> ahead,
+                        double& farthest, double& farthest_local) const;
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
 

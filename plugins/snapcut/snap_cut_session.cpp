@@ -89,26 +89,23 @@ double mean_edge_at(const Mesh& mesh, VertexId v) {
 
 }  // namespace
 
-double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index) const {
+double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index,
+                                                 std::span<const Sweep> ahead) const {
     double nearest = std::numeric_limits<double>::infinity();
+    for (const Sweep& next : ahead) nearest = std::min(nearest, distance_to_sweep(next, p));
     const std::uint32_t first = sweep_index >= 15 ? sweep_index - 15 : 0;
-    for (std::uint32_t i = first; i <= sweep_index; ++i) {
-        const Sweep& s = m_marks.sweeps()[i];
-        const auto w = nearest_on_triangle(s.a, s.b, s.c, p);
-        Point q{};
-        for (std::size_t k = 0; k < 3; ++k) q[k] = w[0] * s.a[k] + w[1] * s.b[k] + w[2] * s.c[k];
-        nearest = std::min(nearest, length(p, q));
-    }
+    for (std::uint32_t i = first; i <= sweep_index; ++i)
+        nearest = std::min(nearest, distance_to_sweep(m_marks.sweeps()[i], p));
     return nearest;
 }
 
-void SnapCutSession::note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, double& farthest,
-                                    double& farthest_local) const {
+void SnapCutSession::note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index,
+                                    std::span<const Sweep> ahead, double& farthest, double& farthest_local) const {
     // a corner is shared by several faces: each measured once (16 triangle distances and a star)
     std::sort(corners.begin(), corners.end());
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     for (const VertexId v : corners) {
-        const double away = distance_to_recent_sweeps(mesh().deformed(v), sweep_index);
+        const double away = distance_to_recent_sweeps(mesh().deformed(v), sweep_index, ahead);
         farthest = std::max(farthest, away);
         if (away > 0) farthest_local = std::max(farthest_local, away / mean_edge_at(mesh(), v));
     }
@@ -228,9 +225,10 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             const Scalpel& was = *m_scalpel;
             sweeps = {Sweep{was.handle, was.tip, next.tip}, Sweep{was.handle, next.tip, next.handle}};
         }
-        for (const Sweep& sweep : sweeps) {
+        for (std::size_t i = 0; i < sweeps.size(); ++i) {
+            const Sweep& sweep = sweeps[i];
             if (collinear(sweep.a, sweep.b, sweep.c)) continue;
-            if (Outcome<Done> done = cut_sweep(sweep, report); !done) {
+            if (Outcome<Done> done = cut_sweep(sweep, std::span<const Sweep>(sweeps).subspan(i + 1), report); !done) {
                 m_marks.restore(undo.marks);
                 m_last.seconds = seconds_since(start);
                 return done.refusal();
@@ -249,7 +247,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     return Done{};
 }
 
-Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) {
+Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, std::span<const Sweep> ahead, StepReport& report) {
     ++m_last.sweeps;
     const std::uint32_t sweep_index = m_marks.add_sweep(sweep);
     // The degeneracy removal's collapses replace edges, and with them the marks of the sweeps
@@ -265,7 +263,7 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
     bool whole_sweep = true;
     for (int round = 0; round < 3; ++round) {
         bool edited = false;
-        if (Outcome<Done> done = cut_round(sweep_index, whole_sweep, report, edited); !done) return done;
+        if (Outcome<Done> done = cut_round(sweep_index, ahead, whole_sweep, report, edited); !done) return done;
         if (edited) {
             whole_sweep = true;
             ++m_last.repeats;
@@ -278,8 +276,8 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, StepReport& report) 
     return Done{};
 }
 
-Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sweep, StepReport& report,
-                                        bool& edited) {
+Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, bool whole_sweep,
+                                        StepReport& report, bool& edited) {
     Mesh& mesh = this->mesh();
     const Sweep sweep = m_marks.sweeps()[sweep_index];
 
@@ -304,15 +302,18 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
     candidates.insert(candidates.end(), pending.begin(), pending.end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    // crossings far from both ends of long edges get a node of their own (split_far_crossings.hpp)
-    if (m_split_beyond > 0 && m_options.snap) {
-        const FarCrossings far = split_far_crossings(mesh, m_marks, sweep_index, candidates, m_split_beyond);
+    // crossed edges whose nearer end is far from where the blade has swept get a node of their
+    // own where crossed (split_far_crossings.hpp)
+    const SweptSurface swept{m_marks, ahead, m_split_beyond};
+    const bool far_rules = m_split_beyond > 0 && m_options.snap;
+    if (far_rules) {
+        const FarCrossings far = split_far_crossings(mesh, m_marks, sweep_index, swept, candidates);
         m_last.edges_split += far.split;
         m_last.edges_hit += far.split;  // crossed, and marked by the split rather than the selection
         m_last.splits_refused += far.refused;
         if (far.split > 0) report.actions.push_back("split " + std::to_string(far.split) + " far crossings");
     }
-    const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates);
+    const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates, far_rules ? &swept : nullptr);
     if (!whole_sweep) {
         std::vector<ElementId> merged;
         std::set_union(incomplete.begin(), incomplete.end(), m_marks.incomplete().begin(), m_marks.incomplete().end(),
@@ -359,7 +360,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
     }
     std::vector<VertexId> corners;
     for (const Simplex& face : faces) corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
-    note_distances(std::move(corners), sweep_index, m_last.placement_error, m_last.placement_error_local);
+    note_distances(std::move(corners), sweep_index, ahead, m_last.placement_error, m_last.placement_error_local);
     m_last.seconds_snap += seconds_since(phase);
 
     // 3. dissect (§7.3). A selected face opens only once the faces around its corners separate
@@ -387,7 +388,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, bool whole_sw
         const Simplex face = mesh.face_simplex(f);  // by value: a range over a temporary's span dangles
         corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
     }
-    note_distances(std::move(corners), sweep_index, m_last.incision_error, m_last.incision_error_local);
+    note_distances(std::move(corners), sweep_index, ahead, m_last.incision_error, m_last.incision_error_local);
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
     m_last.seconds_dissect += seconds_since(phase);

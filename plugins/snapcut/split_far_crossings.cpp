@@ -16,7 +16,8 @@ namespace {
 
 struct Crossing {
     VertexId a = invalid_id, b = invalid_id;
-    double t = 0;  // where the sweep crosses, as the fraction of the way from a to b
+    VertexId nearer = invalid_id;  // the end the selection would mark
+    double t = 0;                  // where the sweep crosses, as the fraction of the way from a to b
 };
 
 using Vec = Eigen::Vector3d;
@@ -25,8 +26,9 @@ Vec vec(const Point& p) { return {p[0], p[1], p[2]}; }
 
 }  // namespace
 
-FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
-                                 std::vector<ElementId>& candidates, double beyond) {
+FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index, const SweptSurface& swept,
+                                 std::vector<ElementId>& candidates) {
+    const double beyond = swept.beyond;
     const Sweep sweep = marks.sweeps()[sweep_index];
     const Vec corner = vec(sweep.a), normal = (vec(sweep.b) - corner).cross(vec(sweep.c) - corner);
     const double reach = beyond * normal.norm();  // `beyond` in the units of the signed distances
@@ -36,9 +38,9 @@ FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t swee
         const Simplex s = mesh.simplex(t);
         // the signed distances (times |normal|) of the corners locate the crossings. An edge is
         // looked at from each of its elements, the double tests first (most edges along the
-        // blade have both ends on one side, or one end near the plane), and repeats are dropped
-        // below: with a set of the edges seen, this pass cost 0.3 ms of a 1 kHz step on the
-        // 1.2M femur, without it 0.1 ms (docs/performance.md).
+        // blade have both ends on one side, or the nearer end near this sweep), and repeats are
+        // dropped below: with a set of the edges seen, this pass cost 0.3 ms of a 1 kHz step on
+        // the 1.2M femur, without it 0.1 ms (docs/performance.md).
         std::array<double, 4> d{};
         for (int i = 0; i < 4; ++i)
             d[static_cast<std::size_t>(i)] = normal.dot(vec(mesh.deformed(s.vertex(i))) - corner);
@@ -47,12 +49,17 @@ FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t swee
                 const double da = d[static_cast<std::size_t>(i)], db = d[static_cast<std::size_t>(j)];
                 // both ends on one side in doubles: the edge meets the sweep, if at all, within
                 // rounding of an end, which is then on the sweep: nothing to split
-                if (!(da * db < 0) || !(std::min(std::abs(da), std::abs(db)) > reach)) continue;
+                if (!(da * db < 0)) continue;
                 const VertexId a = s.vertex(i), b = s.vertex(j);  // a < b: the simplex is sorted
+                const VertexId nearer = std::abs(da) <= std::abs(db) ? a : b;
+                // within `beyond` of the triangle, the nearer end is on the cut already
+                if (std::min(std::abs(da), std::abs(db)) <= reach &&
+                    distance_to_sweep(sweep, mesh.deformed(nearer)) <= beyond)
+                    continue;
                 if (marks.snapped(a) || marks.snapped(b)) continue;
                 if (marks.mark(a, b)) continue;
                 if (!segment_meets_triangle(mesh.deformed(a), mesh.deformed(b), sweep.a, sweep.b, sweep.c)) continue;
-                far.push_back({a, b, da / (da - db)});
+                far.push_back({a, b, nearer, da / (da - db)});
             }
     }
     std::sort(far.begin(), far.end(), [](const Crossing& x, const Crossing& y) {
@@ -62,6 +69,9 @@ FarCrossings split_far_crossings(Mesh& mesh, CutMarks& marks, std::uint32_t swee
                   return x.a == y.a && x.b == y.b;
               }),
               far.end());
+    // a nearer end within `beyond` of where the blade has been, or of where this movement takes
+    // it, is left to the selection
+    std::erase_if(far, [&](const Crossing& crossing) { return swept.near(mesh.deformed(crossing.nearer)); });
     FarCrossings result;
     for (const Crossing& crossing : far) {
         auto split = split_edge(mesh, crossing.a, crossing.b, crossing.t);

@@ -146,7 +146,7 @@ TEST(SnapCutSplitting, CrossingsFarFromBothEndsGetANodeOnTheSweep) {
             EXPECT_EQ(mesh.deformed(v)[0], 0.5) << "vertex " << v;
         }
     });
-    // the default (1 h) leaves these edges to the snapping
+    // the default (half the mean edge) leaves these edges to the snapping
     Mesh whole = make_kuhn_cube(1).value();
     auto plain = SnapCutSession::make(whole, {}, {degeneracy_service()}).value();
     for (const Scalpel& scalpel : straight_path({0.5, -1, 0}, {0, 1, 0}, 3, -1, 2, 1)) {
@@ -154,6 +154,35 @@ TEST(SnapCutSplitting, CrossingsFarFromBothEndsGetANodeOnTheSweep) {
         EXPECT_EQ(plain->last_step().edges_split, 0u);
     }
     expect_valid(whole);
+}
+
+// The unit cube (mean edge h = 1.17) cut by x = 0.55 with a blade that stops at y = 0.6. Three
+// edges run from y = 0 to the corners (1, 1, z) and cross the sweep at y = 0.55, their nearer
+// ends 0.45 from the sweep's plane but 0.6 from the swept surface (0.4 ahead of the blade).
+// Snapped onto the plane, those corners would lie ahead of where the blade went; split_beyond
+// 0.45 (0.53) splits the three edges where crossed instead, and nothing else: the other nearer
+// ends are within 0.45 of the sweeps (the crossings over the movement's second sweep triangle
+// included, whose nearer ends are farther than that from the first). Measured against the plane
+// (the rule before), nothing would be split.
+TEST(SnapCutSplitting, ANodeAheadOfTheBladeIsNotSnappedBeyondIt) {
+    Mesh mesh = make_kuhn_cube(1).value();
+    const double h = sxk::mean_edge_length(mesh);
+    auto session = SnapCutSession::make(mesh, {.split_beyond = 0.45}, {degeneracy_service()}).value();
+    ASSERT_TRUE(session->cut({{0.55, -1, 2}, {0.55, -1, -1}}));
+    ASSERT_TRUE(session->cut({{0.55, 0.6, 2}, {0.55, 0.6, -1}}));
+    expect_valid(mesh);
+    EXPECT_EQ(session->last_step().edges_split, 3u);
+    EXPECT_GT(session->last_step().faces_selected, 0u);
+    EXPECT_LE(session->last_step().placement_error, 0.45 * h);
+    std::size_t unmoved = 0;
+    for (VertexId v = 0; v < 8; ++v) {
+        const Point& p = mesh.reference(v);
+        if (p[0] == 1 && p[1] == 1) {
+            EXPECT_EQ(mesh.deformed(v), p) << "vertex " << v;
+            ++unmoved;
+        }
+    }
+    EXPECT_EQ(unmoved, 2u);
 }
 
 TEST(SnapCutSplitting, ADistanceThatIsNotAFiniteNonNegativeNumberIsRefused) {
