@@ -132,8 +132,9 @@ void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) 
     centre_seeds(grid, mesh, positions);
 }
 
+// The element and boundary-face trees, each by one bulk load.
 template <int D>
-void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+void build_trees(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
     using Value = typename detail::BoxTree<D>::Value;
     std::vector<Value> values;
     values.reserve(mesh.element_count());
@@ -143,6 +144,11 @@ void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
     values.reserve(mesh.boundary_face_count());
     mesh.for_each_boundary_face([&](FaceId f) { values.emplace_back(detail::face_box<D>(mesh, f, positions), f); });
     detail::face_tree<D>(trees).load(values);
+}
+
+template <int D>
+void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    build_trees<D>(trees, mesh, positions);
     build_seeds<D>(trees.seeds, mesh, positions);
 }
 
@@ -324,10 +330,15 @@ void SpatialIndex::boundary_added(const Mesh& mesh, FaceId face) {
 // A move of a quarter of the vertices or more (a simulation writing its frame) rebuilds the trees
 // by one bulk load: re-boxing every element one by one (an rtree removal and insertion each,
 // after walking every star) took 2.2 s per frame on the 213k-element femur, the bulk load 0.15 s.
+// The seed grid stays: a move changes no element, so every seed is still a live element, which is
+// all a walk needs to start from (a seed that no longer holds its cell's centre costs a locate a
+// longer walk, or the tree when the walk gives up). Rebuilding it was a quarter of the frame's
+// rebuild on the femur (its walks to the cells' centres; perf): 0.145 s a frame with it, 0.093 s
+// without (docs/performance.md "A simulation's frame and the spatial index").
 void SpatialIndex::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
     if (!writes(which, m_options.positions)) return;
     if (4 * vertices.size() >= mesh.vertex_count()) {
-        init(mesh);
+        detail::in_dimension(mesh, [&](auto d) { build_trees<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
         return;
     }
     detail::in_dimension(mesh, [&](auto d) { rebox_around<decltype(d)::value>(*m_trees, mesh, vertices, m_options.positions); });
