@@ -48,15 +48,17 @@ struct CutMarks::SweepTree {
     }
 };
 
-double distance_to_sweep(const Sweep& sweep, const Point& p) {
+double squared_distance_to_sweep(const Sweep& sweep, const Point& p) {
     const auto w = nearest_on_triangle(sweep.a, sweep.b, sweep.c, p);
     double d2 = 0;
     for (std::size_t k = 0; k < 3; ++k) {
         const double q = w[0] * sweep.a[k] + w[1] * sweep.b[k] + w[2] * sweep.c[k];
         d2 += (p[k] - q) * (p[k] - q);
     }
-    return std::sqrt(d2);
+    return d2;
 }
+
+double distance_to_sweep(const Sweep& sweep, const Point& p) { return std::sqrt(squared_distance_to_sweep(sweep, p)); }
 
 CutMarks::CutMarks() : m_tree(std::make_unique<SnappedTree>()), m_sweep_tree(std::make_unique<SweepTree>()) {}
 CutMarks::~CutMarks() = default;
@@ -79,12 +81,7 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
          it != m_tree->tree.qend(); ++it) {
         const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
-        const auto w = nearest_on_triangle(sweep.a, sweep.b, sweep.c, p);
-        double d2 = 0;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double q = w[0] * sweep.a[k] + w[1] * sweep.b[k] + w[2] * sweep.c[k];
-            d2 += (p[k] - q) * (p[k] - q);
-        }
+        const double d2 = squared_distance_to_sweep(sweep, p);
         if (!(d2 <= m_reach * m_reach * margin)) continue;
         const VertexId v = it->second;
         around.clear();

@@ -53,9 +53,10 @@ struct Sweep {
     Point a{}, b{}, c{};
 };
 
-// The distance from p to the nearest point of the sweep triangle (double precision: a quantity,
-// not a decision).
+// The distance from p to the nearest point of the sweep triangle, and its square (double
+// precision: quantities, not decisions).
 double distance_to_sweep(const Sweep& sweep, const Point& p);
+double squared_distance_to_sweep(const Sweep& sweep, const Point& p);
 
 // What the cut keeps between sweeps, with checkpoints to take steps back.
 class CutMarks {
