@@ -18,6 +18,31 @@
 // cube in one piece). Seen in the positions before snapping, the selection of consecutive sweeps
 // is the selection of one piecewise flat surface, which closes up.
 //
+// Corners marked elsewhere. A corner counts as marked in a tetrahedron when one of the
+// tetrahedron's own edges marks it (the thesis' rule), and that alone can leave a hole. Take a face
+// F = (u, v, w) between tetrahedra (x, F) and (y, F), x and y off the cut on either side of it:
+// where u, v and w all end up on the cut, F is the cut between x and y. But F is selected only if
+// one of its tetrahedra sees all three marked by its own edges, and x's may see u and v only (w
+// was marked or snapped from an edge of another tetrahedron), y's w only (u and v lie on x's side
+// before the snap): neither selects F, and x and y stay joined. So a tetrahedron the sweep crosses
+// (a corner marked by its own edges) whose other corners on the cut (snapped, or the marked end
+// of another edge) make three with its own selects their face; the fourth is off the cut. A
+// corner completed so that is not snapped yet goes onto this sweep's plane.
+//
+//        x                 marked by x's tetrahedron's edges: u, v (o)
+//       /|\                marked elsewhere: w (*)
+//      o-+-*   F = u v w   the face F is selected from x's tetrahedron
+//       \|/
+//        y
+//
+// Where y's tetrahedron is flat along the cut (all four corners on it), it is then cut off on
+// both sides, with other flat ones next to it: a layer of almost no material comes loose, and the
+// session cuts such crumbs free (Options::largest_crumb). Leaving F closed there instead left
+// bridges (1 in 10 random through cuts of the 1.2M femur). A haptic device's steps met the holes
+// first: the femur cut at 1 kHz stayed in one piece, as did 9 of 20 random through cuts of the
+// shaft at 1 to 50 steps per movement; all of them come apart now (docs/snapcut.md, "At a haptic
+// device's rate").
+//
 // Marks are kept from sweep to sweep (CutMarks), so a later sweep completes the tetrahedra an
 // earlier one left incomplete (Fig. 3.4: selected faces lag behind the scalpel), and an edge is
 // marked by the first sweep that crosses it only (an edge crossed twice by sweeps of different
@@ -47,6 +72,8 @@
 #include "sxk/mesh.hpp"
 
 namespace sxk::snapcut {
+
+struct SweptSurface;
 
 // A sweep triangle, in the deformed positions.
 struct Sweep {
@@ -79,6 +106,8 @@ public:
     }
     // Whether some marked edge ends at v.
     bool has_marked_edge(VertexId v) const { return v < m_marks_at.size() && m_marks_at[v] > 0; }
+    // Whether v is the marked end of some edge (a node on the cut, or to be put on it).
+    bool marked_end(VertexId v) const { return v < m_marked_ends.size() && m_marked_ends[v] > 0; }
     void add_mark(VertexId a, VertexId b, const Mark& mark);
     std::size_t mark_count() const { return m_marks.size(); }
 
@@ -87,6 +116,8 @@ public:
     // Whether p is within `distance` of a sweep so far (the sweeps' tree, then the triangles whose
     // boxes come that near).
     bool near_sweeps(const Point& p, double distance) const;
+    // The distance from p to the nearest sweep so far (infinite before the first).
+    double distance_to_sweeps(const Point& p) const;
 
     // Marks follow the mesh's edits (thesis §3.4: every change of the mesh must also be applied to
     // the cutting module's references). Marks live on vertex pairs, and an edit that renames or
@@ -101,13 +132,17 @@ public:
     // The degeneracy removal's edits (a split's new vertex, a collapse's or a flip's new edges):
     // each unmarked edge of `elements` (dead ids skipped) is tested against the sweeps so far,
     // oldest first, and the first it crosses marks it if its nearer end is a node on the cut
-    // already (snapped). The edges are seen where they are, not where the selection sees the mesh:
-    // a split's vertex has no place from before the snapping, and an edge from a node that never
-    // moved to where a snapped one was can cross a sweep the edge as it lies does not (tried: the
-    // cube cut through in 16 steps then lost a small piece). And a mark that would pull a
-    // node not yet on the cut onto it is left out: the new marks join the incision's rim to the
-    // surface already cut, they do not move it.
-    void mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements);
+    // already (snapped) or, with `swept`, near the swept surface (SweptSurface::near). The edges
+    // are seen where they are, not where the selection sees the mesh: a split's vertex has no
+    // place from before the snapping, and an edge from a node that never moved to where a
+    // snapped one was can cross a sweep the edge as it lies does not (tried: the cube cut through
+    // in 16 steps then lost a small piece). A mark that would pull a node far from the cut onto it
+    // is left out: the new marks join the incision's rim to the surface already cut, they do not
+    // move it. But a node the removal made after the blade passed, 0.03 h from the cut, is on it
+    // in all but name: left unmarked, its edges across the cut held the femur cut at 1 kHz
+    // together.
+    void mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements,
+                                  const SweptSurface* swept = nullptr);
     // Elements that gained a marked edge outside a selection (the two calls above), sorted: they
     // may now be complete, so the next selection looks at them (take_pending empties the list).
     const std::vector<ElementId>& pending() const { return m_pending; }
@@ -149,8 +184,9 @@ private:
     std::optional<Mark> find_mark(VertexId a, VertexId b) const;  // the hash lookup of mark()
     std::unordered_map<std::uint64_t, Mark> m_marks;
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
-    std::vector<std::uint32_t> m_marks_at;    // per vertex id, the marked edges ending there
-    void count_marks_at(std::uint64_t key, int change);
+    std::vector<std::uint32_t> m_marks_at;     // per vertex id, the marked edges ending there
+    std::vector<std::uint32_t> m_marked_ends;  // per vertex id, the marks whose node it is
+    void count_marks_at(std::uint64_t key, VertexId node, int change);
     std::unordered_map<VertexId, Point> m_unsnapped;
     std::vector<VertexId> m_snapped_order;
     struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)

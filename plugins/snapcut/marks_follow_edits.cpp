@@ -53,7 +53,8 @@ void CutMarks::carry_to_copies(const Mesh& mesh, std::span<const std::pair<Verte
     settle_pending();
 }
 
-void CutMarks::mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements) {
+void CutMarks::mark_from_earlier_sweeps(const Mesh& mesh, std::span<const ElementId> elements,
+                                        const SweptSurface* swept) {
     std::unordered_set<std::uint64_t> tested;
     std::vector<ElementId> around;
     for (const ElementId t : elements) {
@@ -73,7 +74,8 @@ void CutMarks::mark_from_earlier_sweeps(const Mesh& mesh, std::span<const Elemen
                     if (!segment_meets_triangle(p, q, sweep.a, sweep.b, sweep.c)) continue;
                     const Sign side = compare_distances_to_plane(p, q, sweep.a, sweep.b, sweep.c);
                     const VertexId nearer = side == Sign::negative ? u : side == Sign::positive ? v : std::min(u, v);
-                    if (!snapped(nearer)) break;  // the first sweep it crosses would pull a new node onto the cut
+                    // the first sweep it crosses would pull a node far from the cut onto it
+                    if (!snapped(nearer) && (swept == nullptr || !swept->near(mesh.deformed(nearer)))) break;
                     around.clear();
                     collect_star(mesh, u, mesh.vertex_element(u), around);
                     mark_outside_selection(mesh, around, u, v, Mark{nearer, index});

@@ -82,7 +82,10 @@ struct Options {
     double min_snap_aspect_ratio = 0;
     // Crumbs: a step does not cut loose a piece of at most this many elements (0: any piece may
     // come loose). Where the incision folds around a tetrahedron or two at its rim, one of the
-    // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached).
+    // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached). A piece
+    // that comes loose all the same with no more material than this many elements of the mean
+    // volume, and fewer than a hundredth of the mesh's elements (a layer of flat elements along
+    // the cut, or a crumb the degeneracy removal cut loose), is removed and counted as cut free.
     std::size_t largest_crumb = 4;
     // Long edges: an edge the sweep crosses whose nearer end is farther than this from where the
     // blade has swept, in mean edge lengths of the mesh (deformed, measured when the session
@@ -112,11 +115,11 @@ struct CutStepReport {
     std::size_t faces_selected = 0;    // interior faces selected (§3.2.1)
     std::size_t faces_dissected = 0;   // of those, faces that opened
     // How closely the incision follows the scalpel: the farthest corner of a face the step
-    // selected from the sweeps of the last 8 steps, in the deformed positions right after the
-    // snapping (placement), and of a face the step opened, right after the dissection (incision:
-    // a face opens once the faces around its corners close up, which may take a few steps after
-    // the sweep that selected it; on a deforming body the relaxations between have moved it with
-    // the material). Each also relative to the corner's own mesh size: the distance over the mean
+    // selected from the surface swept so far, in the deformed positions right after the snapping
+    // (placement), and of a face the step opened, right after the dissection (incision: a face
+    // opens once the faces around its corners close up, which may take a few steps after the
+    // sweep that selected it). On a deforming body each sweep is where the blade went in the
+    // shape of its time: the relaxations since have moved the material a little. Each also relative to the corner's own mesh size: the distance over the mean
     // length of the edges at the corner (the femur's interior edges are up to 7 times its mean).
     double placement_error = 0, placement_error_local = 0;
     double incision_error = 0, incision_error_local = 0;
@@ -129,7 +132,8 @@ struct CutStepReport {
     bool degeneracy_removal_ran = false;
     std::size_t degenerates_found = 0;
     std::size_t collapses = 0, splits = 0, flips = 0, peeled = 0;
-    std::size_t cut_free = 0;          // elements cut free and removed (cracks)
+    std::size_t cut_free = 0;          // elements cut free and removed: cracks, and crumbs that
+                                       // came loose (Options::largest_crumb)
     std::size_t degenerates_remaining = 0;
     // loose pieces the step made: element count of each (sorted, smallest first)
     std::vector<std::size_t> loose_pieces;
@@ -174,6 +178,8 @@ public:
     bool has_degeneracy_service() const { return m_services.degeneracy != nullptr; }
     // The scalpel's pose after the last kept step, if placed.
     const std::optional<Scalpel>& scalpel() const { return m_scalpel; }
+    // What the cut keeps between sweeps: the sweeps so far, the marks, the snapped nodes.
+    const CutMarks& marks() const { return m_marks; }
 
     SnapCutSession(Mesh& mesh, const Options& options, const CutServices& services);
     ~SnapCutSession() override;
@@ -190,21 +196,27 @@ private:
     // latter only (whole_sweep false); `edited`: the removal changed the mesh.
     Outcome<Done> cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, bool whole_sweep,
                             StepReport& report, bool& edited);
-    // The distance from p to the nearest of the sweeps sweep_index - 15 .. sweep_index (the last
-    // 8 steps') and of `ahead` (the rest of this movement).
-    double distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index, std::span<const Sweep> ahead) const;
-    // Raises `farthest` to the largest distance_to_recent_sweeps of `corners` and `farthest_local`
+    // The distance from p to the surface the blade swept: the sweeps so far and `ahead` (the
+    // rest of this movement).
+    double distance_to_swept_surface(const Point& p, std::span<const Sweep> ahead) const;
+    // Raises `farthest` to the largest distance_to_swept_surface of `corners` and `farthest_local`
     // to the largest such distance over the mean length of the corner's edges
     // (CutStepReport::placement_error, incision_error).
-    void note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, std::span<const Sweep> ahead,
-                        double& farthest, double& farthest_local) const;
+    void note_distances(std::vector<VertexId> corners, std::span<const Sweep> ahead, double& farthest,
+                        double& farthest_local) const;
+    // Whether a loose piece is a crumb: no more material than Options::largest_crumb elements of
+    // the mean volume (reference positions), and less than a hundredth of the mesh's elements.
+    bool crumb(std::span<const ElementId> piece) const;
+    // Finds the pieces the step's cut separated (from m_seeds) and keeps or removes them.
+    Outcome<Done> settle_loose_pieces();
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
 
     Options m_options;
     CutServices m_services;
     SpatialIndex m_index;  // deformed positions: where the scalpel meets the mesh
-    double m_split_beyond = 0;  // Options::split_beyond in lengths (0: never split)
+    double m_element_volume = 0;  // the mean element volume when the session began (reference)
+    double m_split_beyond = 0;    // Options::split_beyond in lengths (0: never split)
     CutMarks m_marks;
     std::optional<Scalpel> m_scalpel;
     std::optional<Scalpel> m_exact;  // cut()'s scalpel, used by apply instead of the pose's
@@ -217,6 +229,7 @@ private:
     std::vector<Undo> m_undo;
     CutStepReport m_last;
     std::vector<std::vector<ElementId>> m_loose;  // the step's loose pieces (kept ones)
+    std::vector<ElementId> m_seeds;                // the step's elements on both sides of its cut faces
 };
 
 }  // namespace sxk::snapcut

@@ -74,6 +74,23 @@ double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) 
     return longest;
 }
 
+// The volume of element t in the reference positions: the material it holds.
+double volume(const Mesh& mesh, ElementId t) {
+    const auto p = element_points(mesh, t, Positions::reference);
+    double e[3][3];
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k) e[i][k] = p[i + 1][k] - p[0][k];
+    return std::abs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+           6;
+}
+
+double mean_element_volume(const Mesh& mesh) {
+    double sum = 0;
+    for (const ElementId t : elements(mesh)) sum += volume(mesh, t);
+    return mesh.element_count() > 0 ? sum / double(mesh.element_count()) : 0;
+}
+
 // The mean length of the edges at v, deformed positions: the mesh's size where v is.
 double mean_edge_at(const Mesh& mesh, VertexId v) {
     std::vector<VertexId> neighbours;
@@ -89,23 +106,18 @@ double mean_edge_at(const Mesh& mesh, VertexId v) {
 
 }  // namespace
 
-double SnapCutSession::distance_to_recent_sweeps(const Point& p, std::uint32_t sweep_index,
-                                                 std::span<const Sweep> ahead) const {
-    double nearest = std::numeric_limits<double>::infinity();
+double SnapCutSession::distance_to_swept_surface(const Point& p, std::span<const Sweep> ahead) const {
+    double nearest = m_marks.distance_to_sweeps(p);
     for (const Sweep& next : ahead) nearest = std::min(nearest, distance_to_sweep(next, p));
-    const std::uint32_t first = sweep_index >= 15 ? sweep_index - 15 : 0;
-    for (std::uint32_t i = first; i <= sweep_index; ++i)
-        nearest = std::min(nearest, distance_to_sweep(m_marks.sweeps()[i], p));
     return nearest;
 }
 
-void SnapCutSession::note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index,
-                                    std::span<const Sweep> ahead, double& farthest, double& farthest_local) const {
+void SnapCutSession::note_distances(std::vector<VertexId> corners, std::span<const Sweep> ahead, double& farthest, double& farthest_local) const {
     // a corner is shared by several faces: each measured once (16 triangle distances and a star)
     std::sort(corners.begin(), corners.end());
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     for (const VertexId v : corners) {
-        const double away = distance_to_recent_sweeps(mesh().deformed(v), sweep_index, ahead);
+        const double away = distance_to_swept_surface(mesh().deformed(v), ahead);
         farthest = std::max(farthest, away);
         if (away > 0) farthest_local = std::max(farthest_local, away / mean_edge_at(mesh(), v));
     }
@@ -177,8 +189,10 @@ SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServ
       m_options(options),
       m_services(services),
       m_index(mesh, Positions::deformed),
-      m_split_beyond(options.split_beyond > 0 ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
-                                              : 0) {}
+      m_element_volume(mean_element_volume(mesh)),
+      m_split_beyond(options.split_beyond > 0
+                         ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
+                         : 0) {}
 
 SnapCutSession::~SnapCutSession() = default;
 
@@ -230,9 +244,15 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             if (collinear(sweep.a, sweep.b, sweep.c)) continue;
             if (Outcome<Done> done = cut_sweep(sweep, std::span<const Sweep>(sweeps).subspan(i + 1), report); !done) {
                 m_marks.restore(undo.marks);
+                m_seeds.clear();
                 m_last.seconds = seconds_since(start);
                 return done.refusal();
             }
+        }
+        if (Outcome<Done> settled = settle_loose_pieces(); !settled) {
+            m_marks.restore(undo.marks);
+            m_last.seconds = seconds_since(start);
+            return settled.refusal();
         }
     } else {
         report.actions.push_back("placed the scalpel");
@@ -360,7 +380,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     }
     std::vector<VertexId> corners;
     for (const Simplex& face : faces) corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
-    note_distances(std::move(corners), sweep_index, ahead, m_last.placement_error, m_last.placement_error_local);
+    note_distances(std::move(corners), ahead, m_last.placement_error, m_last.placement_error_local);
     m_last.seconds_snap += seconds_since(phase);
 
     // 3. dissect (§7.3). A selected face opens only once the faces around its corners separate
@@ -388,7 +408,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         const Simplex face = mesh.face_simplex(f);  // by value: a range over a temporary's span dangles
         corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
     }
-    note_distances(std::move(corners), sweep_index, ahead, m_last.incision_error, m_last.incision_error_local);
+    note_distances(std::move(corners), ahead, m_last.incision_error, m_last.incision_error_local);
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
     m_last.seconds_dissect += seconds_since(phase);
@@ -403,7 +423,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         const std::size_t edited_before = elements_edited_in_step().size();
         auto removed = m_services.degeneracy->remove_among(mesh, around, removal);
         if (!removed) return removed.refusal().prefixed("snapcut: degeneracy removal: ");
-        m_marks.mark_from_earlier_sweeps(mesh, elements_edited_in_step().subspan(edited_before));
+        m_marks.mark_from_earlier_sweeps(mesh, elements_edited_in_step().subspan(edited_before),
+                                         far_rules ? &swept : nullptr);
         m_last.degeneracy_removal_ran = true;
         m_last.degenerates_found += removed->found;
         m_last.collapses += removed->collapses;
@@ -423,23 +444,56 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
             m_marks.extend_reach(longest_edge_around(mesh, m_marks, v));
     m_last.seconds_degeneracy += seconds_since(phase);
 
-    // 5. pieces the cut separated, found from both sides of the cut
+    // 5. both sides of the new cut faces: where the step's loose pieces are looked for
     phase = Clock::now();
-    std::vector<ElementId> seeds = stars_of(mesh, touched);
+    const std::vector<ElementId> seeds = stars_of(mesh, touched);
+    m_seeds.insert(m_seeds.end(), seeds.begin(), seeds.end());
     for (const FaceId f : dissected->opened)
-        if (mesh.is_face(f)) seeds.push_back(mesh.face_element(f));
+        if (mesh.is_face(f)) m_seeds.push_back(mesh.face_element(f));
+    m_last.seconds_pieces += seconds_since(phase);
+    return Done{};
+}
+
+bool SnapCutSession::crumb(std::span<const ElementId> piece) const {
+    if (piece.size() * 100 >= mesh().element_count()) return false;
+    const double most = double(m_options.largest_crumb) * m_element_volume;
+    double material = 0;
+    for (const ElementId t : piece)
+        if ((material += volume(mesh(), t)) > most) return false;
+    return true;
+}
+
+Outcome<Done> SnapCutSession::settle_loose_pieces() {
+    // Looked for once per step, after every round of every sweep: a later round that cuts near a
+    // piece an earlier one separated would otherwise find it again (the thesis' cube cut in one
+    // step reported its loose half twice), and the removal's later edits change the pieces'
+    // elements. The seeds of earlier rounds the removal replaced are dead (skipped) or reused
+    // elsewhere along the cut (a seed too many costs a search at most); the elements the removal
+    // made are seeds too, since they replaced some.
+    const auto start = Clock::now();
+    Mesh& mesh = this->mesh();
+    std::vector<ElementId> seeds = std::exchange(m_seeds, {});
+    if (!seeds.empty()) {
+        const std::span<const ElementId> edited = elements_edited_in_step();
+        seeds.insert(seeds.end(), edited.begin(), edited.end());
+    }
     LoosePieces pieces = find_loose_pieces(mesh, seeds);
-    for (const auto& piece : pieces.pieces) m_last.loose_pieces.push_back(piece.size());
-    std::sort(m_last.loose_pieces.begin(), m_last.loose_pieces.end());
     for (auto& piece : pieces.pieces) {
-        if (m_options.remove_loose_pieces) {
+        // a crumb the dissection could not keep attached, or a layer of flat elements along the
+        // cut (its corners on the cut, and faces selected from both sides) is cut free, as the
+        // thesis' degeneracy removal cuts free flat elements (§3.3)
+        const bool crumb = this->crumb(piece);
+        if (crumb) m_last.cut_free += piece.size();
+        else m_last.loose_pieces.push_back(piece.size());
+        if (crumb || m_options.remove_loose_pieces) {
             if (Outcome<Done> removed = remove_elements(mesh, piece); !removed)
                 return removed.refusal().prefixed("snapcut: removing a loose piece: ");
         } else {
             m_loose.push_back(std::move(piece));
         }
     }
-    m_last.seconds_pieces += seconds_since(phase);
+    std::sort(m_last.loose_pieces.begin(), m_last.loose_pieces.end());
+    m_last.seconds_pieces += seconds_since(start);
     return Done{};
 }
 
