@@ -31,8 +31,9 @@ void add_cut_options(CLI::App& app, Options& options) {
         ->capture_default_str();
     app.add_flag("--remove-loose", options.remove_loose_pieces, "Remove the pieces a step cuts loose");
     app.add_option("--largest-crumb", options.largest_crumb,
-                   "Keep pieces of at most this many elements attached instead of cutting them loose, 0..1000 "
-                   "(0: any piece may come loose)")
+                   "Keep pieces of at most this many elements attached instead of cutting them loose, and cut "
+                   "free (remove) a piece that comes loose with no more material than this many mean elements, "
+                   "0..1000 (0: any piece may come loose, none is removed)")
         ->check(whole_number_in(0, 1000))
         ->capture_default_str();
     app.add_option("--relax-iterations", options.relax_iterations,

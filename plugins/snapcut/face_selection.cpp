@@ -116,17 +116,14 @@ std::optional<CutMarks::Mark> CutMarks::find_mark(VertexId a, VertexId b) const 
 void CutMarks::add_mark(VertexId a, VertexId b, const Mark& mark) {
     if (!m_marks.emplace(key(a, b), mark).second) return;
     m_mark_order.push_back(key(a, b));
-    count_marks_at(key(a, b), mark.node, +1);
+    count_marks_at(key(a, b), +1);
 }
 
-void CutMarks::count_marks_at(std::uint64_t key, VertexId node, int change) {
-    const auto add = [change](std::vector<std::uint32_t>& counts, VertexId v) {
-        if (v >= counts.size()) counts.resize(std::size_t{v} + 1, 0);
-        counts[v] = static_cast<std::uint32_t>(static_cast<std::int64_t>(counts[v]) + change);
-    };
-    add(m_marks_at, static_cast<VertexId>(key >> 32));
-    add(m_marks_at, static_cast<VertexId>(key & 0xffffffffu));
-    add(m_marked_ends, node);
+void CutMarks::count_marks_at(std::uint64_t key, int change) {
+    for (const auto v : {static_cast<VertexId>(key >> 32), static_cast<VertexId>(key & 0xffffffffu)}) {
+        if (v >= m_marks_at.size()) m_marks_at.resize(std::size_t{v} + 1, 0);
+        m_marks_at[v] = static_cast<std::uint32_t>(static_cast<std::int64_t>(m_marks_at[v]) + change);
+    }
 }
 
 std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
@@ -186,9 +183,8 @@ CutMarks::Checkpoint CutMarks::checkpoint() const {
 
 void CutMarks::restore(const Checkpoint& checkpoint) {
     while (m_mark_order.size() > checkpoint.marks) {
-        const auto found = m_marks.find(m_mark_order.back());
-        count_marks_at(found->first, found->second.node, -1);
-        m_marks.erase(found);
+        count_marks_at(m_mark_order.back(), -1);
+        m_marks.erase(m_mark_order.back());
         m_mark_order.pop_back();
     }
     while (m_snapped_order.size() > checkpoint.snapped) {
@@ -263,11 +259,10 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
             std::count_if(first_sweep.begin(), first_sweep.end(), [](std::uint32_t w) { return w != UINT32_MAX; }));
         if (marked == 0) continue;
         if (marked < 3) {
-            // corners on the cut already, marked from other tetrahedra's edges, may complete a
-            // tetrahedron the sweep crosses (face_selection.hpp, "Corners marked elsewhere")
+            // corners snapped onto the cut from other tetrahedra's edges may complete a
+            // tetrahedron the sweep crosses (face_selection.hpp, "Corners snapped elsewhere")
             const auto on_cut_elsewhere = [&](int i) {
-                return first_sweep[static_cast<std::size_t>(i)] == UINT32_MAX &&
-                       (marks.snapped(s.vertex(i)) || marks.marked_end(s.vertex(i)));
+                return first_sweep[static_cast<std::size_t>(i)] == UINT32_MAX && marks.snapped(s.vertex(i));
             };
             int on_cut = marked;
             for (int i = 0; i < 4; ++i) on_cut += on_cut_elsewhere(i) ? 1 : 0;

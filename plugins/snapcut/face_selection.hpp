@@ -18,19 +18,18 @@
 // cube in one piece). Seen in the positions before snapping, the selection of consecutive sweeps
 // is the selection of one piecewise flat surface, which closes up.
 //
-// Corners marked elsewhere. A corner counts as marked in a tetrahedron when one of the
+// Corners snapped elsewhere. A corner counts as marked in a tetrahedron when one of the
 // tetrahedron's own edges marks it (the thesis' rule), and that alone can leave a hole. Take a face
 // F = (u, v, w) between tetrahedra (x, F) and (y, F), x and y off the cut on either side of it:
 // where u, v and w all end up on the cut, F is the cut between x and y. But F is selected only if
 // one of its tetrahedra sees all three marked by its own edges, and x's may see u and v only (w
-// was marked or snapped from an edge of another tetrahedron), y's w only (u and v lie on x's side
-// before the snap): neither selects F, and x and y stay joined. So a tetrahedron the sweep crosses
-// (a corner marked by its own edges) whose other corners on the cut (snapped, or the marked end
-// of another edge) make three with its own selects their face; the fourth is off the cut. A
-// corner completed so that is not snapped yet goes onto this sweep's plane.
+// was marked and snapped from an edge of another tetrahedron), y's w only (u and v lie on x's
+// side before the snap): neither selects F, and x and y stay joined. So a tetrahedron the sweep
+// crosses (a corner marked by its own edges) whose snapped corners make three with its own marked
+// ones selects their face; the fourth is off the cut.
 //
 //        x                 marked by x's tetrahedron's edges: u, v (o)
-//       /|\                marked elsewhere: w (*)
+//       /|\                snapped, marked elsewhere: w (*)
 //      o-+-*   F = u v w   the face F is selected from x's tetrahedron
 //       \|/
 //        y
@@ -38,10 +37,12 @@
 // Where y's tetrahedron is flat along the cut (all four corners on it), it is then cut off on
 // both sides, with other flat ones next to it: a layer of almost no material comes loose, and the
 // session cuts such crumbs free (Options::largest_crumb). Leaving F closed there instead left
-// bridges (1 in 10 random through cuts of the 1.2M femur). A haptic device's steps met the holes
-// first: the femur cut at 1 kHz stayed in one piece, as did 9 of 20 random through cuts of the
-// shaft at 1 to 50 steps per movement; all of them come apart now (docs/snapcut.md, "At a haptic
-// device's rate").
+// bridges (1 in 10 random through cuts of the 1.2M femur). Counting the nodes marked by other
+// edges but not snapped yet as on the cut too separates as well, but opened faces that left the
+// thesis' cube cut (docs/snapcut.md) with an element CG could not settle (20000 iterations, 380
+// without). A haptic device's steps met the holes first: the femur cut at 1 kHz stayed in one
+// piece, as did 9 of 20 random through cuts of the shaft at 1 to 50 steps per movement; all of
+// them come apart now (docs/snapcut.md, "At a haptic device's rate").
 //
 // Marks are kept from sweep to sweep (CutMarks), so a later sweep completes the tetrahedra an
 // earlier one left incomplete (Fig. 3.4: selected faces lag behind the scalpel), and an edge is
@@ -106,8 +107,6 @@ public:
     }
     // Whether some marked edge ends at v.
     bool has_marked_edge(VertexId v) const { return v < m_marks_at.size() && m_marks_at[v] > 0; }
-    // Whether v is the marked end of some edge (a node on the cut, or to be put on it).
-    bool marked_end(VertexId v) const { return v < m_marked_ends.size() && m_marked_ends[v] > 0; }
     void add_mark(VertexId a, VertexId b, const Mark& mark);
     std::size_t mark_count() const { return m_marks.size(); }
 
@@ -184,9 +183,8 @@ private:
     std::optional<Mark> find_mark(VertexId a, VertexId b) const;  // the hash lookup of mark()
     std::unordered_map<std::uint64_t, Mark> m_marks;
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
-    std::vector<std::uint32_t> m_marks_at;     // per vertex id, the marked edges ending there
-    std::vector<std::uint32_t> m_marked_ends;  // per vertex id, the marks whose node it is
-    void count_marks_at(std::uint64_t key, VertexId node, int change);
+    std::vector<std::uint32_t> m_marks_at;    // per vertex id, the marked edges ending there
+    void count_marks_at(std::uint64_t key, int change);
     std::unordered_map<VertexId, Point> m_unsnapped;
     std::vector<VertexId> m_snapped_order;
     struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)

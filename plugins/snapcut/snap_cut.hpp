@@ -5,7 +5,8 @@
 //        |
 //   1. select faces (§3.2.1)                   every mesh edge the sweep crosses marks its end
 //        |  face_selection.hpp                 nearer the crossing; a tetrahedron whose marked ends
-//        |                                     are three of its corners has that face selected
+//        |                                     (or nodes on the cut already) are three of its
+//        |                                     corners has that face selected
 //        |  split_far_crossings.hpp            (first, a crossed edge whose nearer end is far from
 //        |                                     the sweep's plane is split where it is crossed)
 //   2. snap nodes (§3.2.2)                     the selected faces' corners move onto the sweep
@@ -20,9 +21,10 @@
 //        |                                     edges it makes take the marks of the sweeps they
 //        |                                     cross (§3.4), and what that completes is selected
 //        |                                     in another round
-//   5. loose pieces                            a piece the cut separated is found by a search from
+//   5. loose pieces (once per step)            a piece the cut separated is found by a search from
 //           loose_pieces.hpp                   both sides of the new cut faces that stops at the
-//                                              smaller side: its cost is that side's, not the mesh's
+//                                              smaller side: its cost is that side's, not the mesh's;
+//                                              crumbs of almost no material are cut free
 //
 // The sweep meets the deformed shape (the positions a simulation shows); the reference shape is
 // kept consistent through the element that holds each snapped position. Nothing in a step scans
