@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <iterator>
-#include <limits>
 
 #include "sxk/locate.hpp"
 #include "sxk/predicates.hpp"
@@ -142,16 +141,13 @@ bool CutMarks::near_sweeps(const Point& p, double distance) const {
     return false;
 }
 
-double CutMarks::distance_to_sweeps(const Point& p) const {
-    // the sweeps by the distance of their boxes, nearest first: a box no nearer than the nearest
-    // triangle so far holds no nearer triangle
-    double nearest = std::numeric_limits<double>::infinity();
-    const SweepTree::Position at(p[0], p[1], p[2]);
-    for (auto it = m_sweep_tree->tree.qbegin(bgi::nearest(at, static_cast<unsigned>(m_sweeps.size())));
-         it != m_sweep_tree->tree.qend(); ++it) {
-        if (bg::distance(at, it->first) >= nearest) break;
+double CutMarks::distance_to_sweeps(const Point& p, double at_most) const {
+    const Point low{p[0] - at_most, p[1] - at_most, p[2] - at_most};
+    const Point high{p[0] + at_most, p[1] + at_most, p[2] + at_most};
+    double nearest = at_most;
+    for (auto it = m_sweep_tree->tree.qbegin(bgi::intersects(SweepTree::box(low, high)));
+         it != m_sweep_tree->tree.qend(); ++it)
         nearest = std::min(nearest, distance_to_sweep(m_sweeps[it->second], p));
-    }
     return nearest;
 }
 

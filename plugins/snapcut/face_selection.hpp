@@ -115,8 +115,9 @@ public:
     // Whether p is within `distance` of a sweep so far (the sweeps' tree, then the triangles whose
     // boxes come that near).
     bool near_sweeps(const Point& p, double distance) const;
-    // The distance from p to the nearest sweep so far (infinite before the first).
-    double distance_to_sweeps(const Point& p) const;
+    // The distance from p to the nearest sweep so far, if less than `at_most`; else `at_most`
+    // (the sweeps whose boxes come that near are measured).
+    double distance_to_sweeps(const Point& p, double at_most) const;
 
     // Marks follow the mesh's edits (thesis §3.4: every change of the mesh must also be applied to
     // the cutting module's references). Marks live on vertex pairs, and an edit that renames or

@@ -198,14 +198,14 @@ private:
     // latter only (whole_sweep false); `edited`: the removal changed the mesh.
     Outcome<Done> cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, bool whole_sweep,
                             StepReport& report, bool& edited);
-    // The distance from p to the surface the blade swept: the sweeps so far and `ahead` (the
-    // rest of this movement).
-    double distance_to_swept_surface(const Point& p, std::span<const Sweep> ahead) const;
+    // The distance from p to the surface the blade swept: the sweeps up to sweep_index and
+    // `ahead` (the rest of this movement).
+    double distance_to_swept_surface(const Point& p, std::uint32_t sweep_index, std::span<const Sweep> ahead) const;
     // Raises `farthest` to the largest distance_to_swept_surface of `corners` and `farthest_local`
     // to the largest such distance over the mean length of the corner's edges
     // (CutStepReport::placement_error, incision_error).
-    void note_distances(std::vector<VertexId> corners, std::span<const Sweep> ahead, double& farthest,
-                        double& farthest_local) const;
+    void note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index, std::span<const Sweep> ahead,
+                        double& farthest, double& farthest_local) const;
     // Whether a loose piece is a crumb: no more material than Options::largest_crumb elements of
     // the mean volume (reference positions), and less than a hundredth of the mesh's elements.
     bool crumb(std::span<const ElementId> piece) const;

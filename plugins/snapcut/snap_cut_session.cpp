@@ -106,18 +106,26 @@ double mean_edge_at(const Mesh& mesh, VertexId v) {
 
 }  // namespace
 
-double SnapCutSession::distance_to_swept_surface(const Point& p, std::span<const Sweep> ahead) const {
-    double nearest = m_marks.distance_to_sweeps(p);
+double SnapCutSession::distance_to_swept_surface(const Point& p, std::uint32_t sweep_index,
+                                                 std::span<const Sweep> ahead) const {
+    // the nearest of the movement's and the last 8 steps' sweeps first (where a corner of this
+    // sweep's faces nearly always is), then any sweep nearer than that: a face that opens some
+    // sweeps after the one that selected it, 8 steps at 1 kHz being 8 ms of the blade's travel
+    double nearest = std::numeric_limits<double>::infinity();
     for (const Sweep& next : ahead) nearest = std::min(nearest, distance_to_sweep(next, p));
-    return nearest;
+    const std::uint32_t first = sweep_index >= 15 ? sweep_index - 15 : 0;
+    for (std::uint32_t i = first; i <= sweep_index; ++i)
+        nearest = std::min(nearest, distance_to_sweep(m_marks.sweeps()[i], p));
+    return nearest > 0 ? m_marks.distance_to_sweeps(p, nearest) : nearest;
 }
 
-void SnapCutSession::note_distances(std::vector<VertexId> corners, std::span<const Sweep> ahead, double& farthest, double& farthest_local) const {
+void SnapCutSession::note_distances(std::vector<VertexId> corners, std::uint32_t sweep_index,
+                                    std::span<const Sweep> ahead, double& farthest, double& farthest_local) const {
     // a corner is shared by several faces: each measured once (16 triangle distances and a star)
     std::sort(corners.begin(), corners.end());
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     for (const VertexId v : corners) {
-        const double away = distance_to_swept_surface(mesh().deformed(v), ahead);
+        const double away = distance_to_swept_surface(mesh().deformed(v), sweep_index, ahead);
         farthest = std::max(farthest, away);
         if (away > 0) farthest_local = std::max(farthest_local, away / mean_edge_at(mesh(), v));
     }
@@ -380,7 +388,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     }
     std::vector<VertexId> corners;
     for (const Simplex& face : faces) corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
-    note_distances(std::move(corners), ahead, m_last.placement_error, m_last.placement_error_local);
+    note_distances(std::move(corners), sweep_index, ahead, m_last.placement_error, m_last.placement_error_local);
     m_last.seconds_snap += seconds_since(phase);
 
     // 3. dissect (§7.3). A selected face opens only once the faces around its corners separate
@@ -408,7 +416,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         const Simplex face = mesh.face_simplex(f);  // by value: a range over a temporary's span dangles
         corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
     }
-    note_distances(std::move(corners), ahead, m_last.incision_error, m_last.incision_error_local);
+    note_distances(std::move(corners), sweep_index, ahead, m_last.incision_error, m_last.incision_error_local);
     report.actions.push_back("dissected " + std::to_string(opened) + " faces, " +
                              std::to_string(dissected->new_vertices.size()) + " new nodes");
     m_last.seconds_dissect += seconds_since(phase);
