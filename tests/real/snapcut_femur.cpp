@@ -158,62 +158,20 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
     expect_same_state(mesh, loaded);
 }
 
-// The same path through the static femur (what `sxk cut snap` does with it; docs/snapcut.md
-// measures the written cut with tools/incision-distance): valid, in two pieces, every corner of
-// the cut within half an edge of the sweeps. Splitting by the distance to the sweeps so far alone,
-// without the rest of the movement, left the bone in one piece here.
-TEST(SnapCutFemur, TheShaftCutThroughTheStaticFemurSeparatesItWithinHalfAnEdge) {
-    const std::string femur = make_femur();
-    ASSERT_FALSE(femur.empty()) << "tools/make-data femur failed";
-    Mesh mesh = read_mesh(femur);
-    const double h = sxk::mean_edge_length(mesh);
-    PluginHost host;
-    ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
-    auto session =
-        snapcut::SnapCutSession::make(mesh, {}, {host.service<degeneracy::DegeneracyService>().value()}).value();
-    const std::array<int, 1> columns{6};
-    const ToolPath path = read_tool_path(SXK_TEST_DATA_DIR "/paths/femur-shaft.path", columns);
-    double farthest = 0;
-    std::size_t loose = 0, split = 0;
-    for (const auto& sample : path.samples) {
-        const auto& v = sample.values;
-        ASSERT_TRUE(session->cut({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}));
-        farthest = std::max({farthest, session->last_step().placement_error, session->last_step().incision_error});
-        loose += session->last_step().loose_pieces.size();
-        split += session->last_step().edges_split;
-    }
-    std::printf("[ femur    ] static: %zu edges split, farthest corner %.3g h, %zu loose pieces\n", split, farthest / h,
-                loose);
-    expect_valid(mesh);
-    EXPECT_GT(split, 0u);
-    EXPECT_LE(farthest, 0.5 * h);
-    EXPECT_EQ(loose, 1u);
-    EXPECT_EQ(connected_components(mesh).count, 2u);
-}
-
-// The same path sampled as a haptic device samples it: each movement (0.05 s) in 50 steps of a
-// millisecond, 951 steps of about 0.04 mean edge lengths. A step's sweeps are slivers, and the
-// selection, the snapping and the degeneracy removal's edits of 50 steps meet where one step's
-// would: the bone must come apart as it does at the recorded rate.
-TEST(SnapCutFemur, TheShaftCutAtAHapticRateSeparatesTheStaticFemur) {
-    const std::string femur = make_femur();
-    ASSERT_FALSE(femur.empty()) << "tools/make-data femur failed";
-    Mesh mesh = read_mesh(femur);
-    const double h = sxk::mean_edge_length(mesh);
-    PluginHost host;
-    ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
-    auto session =
-        snapcut::SnapCutSession::make(mesh, {}, {host.service<degeneracy::DegeneracyService>().value()}).value();
+// The recorded femur path with each sample moved by `moved`, each movement in `steps` steps (the
+// handle and the tip interpolated linearly; the samples themselves kept exactly).
+template <class Move>
+std::vector<Scalpel> femur_path(int steps, Move moved) {
     const std::array<int, 1> columns{6};
     const ToolPath recorded = read_tool_path(SXK_TEST_DATA_DIR "/paths/femur-shaft.path", columns);
     std::vector<Scalpel> path;
     for (std::size_t i = 0; i < recorded.samples.size(); ++i) {
         const auto& v = recorded.samples[i].values;
-        const Scalpel sample{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+        const Scalpel sample{moved(v[0], v[1], v[2]), moved(v[3], v[4], v[5])};
         if (i > 0) {
             const Scalpel previous = path.back();
-            for (int j = 1; j < 50; ++j) {
-                const double s = j / 50.0;
+            for (int j = 1; j < steps; ++j) {
+                const double s = double(j) / steps;
                 Scalpel between;
                 for (std::size_t k = 0; k < 3; ++k) {
                     between.handle[k] = previous.handle[k] + s * (sample.handle[k] - previous.handle[k]);
@@ -224,20 +182,66 @@ TEST(SnapCutFemur, TheShaftCutAtAHapticRateSeparatesTheStaticFemur) {
         }
         path.push_back(sample);
     }
-    double farthest = 0;
-    std::size_t loose = 0, dissected = 0;
+    return path;
+}
+
+// The recorded path through the static femur, each movement in `steps` steps: what the cut did.
+struct StaticCut {
+    double h = 0, farthest = 0;  // the mean edge length; the farthest corner of the cut's faces
+    std::size_t steps = 0, split = 0, dissected = 0, loose = 0, pieces = 0;
+};
+
+StaticCut cut_the_static_femur(int steps) {
+    const std::string femur = make_femur();
+    EXPECT_FALSE(femur.empty()) << "tools/make-data femur failed";
+    StaticCut cut;
+    if (femur.empty()) return cut;
+    Mesh mesh = read_mesh(femur);
+    cut.h = sxk::mean_edge_length(mesh);
+    PluginHost host;
+    EXPECT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
+    auto session =
+        snapcut::SnapCutSession::make(mesh, {}, {host.service<degeneracy::DegeneracyService>().value()}).value();
+    const std::vector<Scalpel> path = femur_path(steps, [](double x, double y, double z) { return Point{x, y, z}; });
+    cut.steps = path.size();
     for (std::size_t i = 0; i < path.size(); ++i) {
-        ASSERT_TRUE(session->cut(path[i])) << "step " << i;
-        farthest = std::max({farthest, session->last_step().placement_error, session->last_step().incision_error});
-        loose += session->last_step().loose_pieces.size();
-        dissected += session->last_step().faces_dissected;
+        EXPECT_TRUE(session->cut(path[i])) << "step " << i;
+        const auto& r = session->last_step();
+        cut.farthest = std::max({cut.farthest, r.placement_error, r.incision_error});
+        cut.loose += r.loose_pieces.size();
+        cut.split += r.edges_split;
+        cut.dissected += r.faces_dissected;
     }
-    std::printf("[ femur    ] at 1 kHz: %zu steps, %zu faces dissected, farthest corner %.3g h, %zu loose pieces\n",
-                path.size(), dissected, farthest / h, loose);
     expect_valid(mesh);
-    EXPECT_LE(farthest, 0.5 * h);
-    EXPECT_EQ(loose, 1u);
-    EXPECT_EQ(connected_components(mesh).count, 2u);
+    cut.pieces = connected_components(mesh).count;
+    return cut;
+}
+
+// The same path through the static femur (what `sxk cut snap` does with it; docs/snapcut.md
+// measures the written cut with tools/incision-distance): valid, in two pieces, every corner of
+// the cut within half an edge of the sweeps. Splitting by the distance to the sweeps so far alone,
+// without the rest of the movement, left the bone in one piece here.
+TEST(SnapCutFemur, TheShaftCutThroughTheStaticFemurSeparatesItWithinHalfAnEdge) {
+    const StaticCut cut = cut_the_static_femur(1);
+    std::printf("[ femur    ] static: %zu edges split, farthest corner %.3g h, %zu loose pieces\n", cut.split,
+                cut.farthest / cut.h, cut.loose);
+    EXPECT_GT(cut.split, 0u);
+    EXPECT_LE(cut.farthest, 0.5 * cut.h);
+    EXPECT_EQ(cut.loose, 1u);
+    EXPECT_EQ(cut.pieces, 2u);
+}
+
+// The same path sampled as a haptic device samples it: each movement (0.05 s) in 50 steps of a
+// millisecond, 951 steps of about 0.04 mean edge lengths. A step's sweeps are slivers, and the
+// selection, the snapping and the degeneracy removal's edits of 50 steps meet where one step's
+// would: the bone must come apart as it does at the recorded rate.
+TEST(SnapCutFemur, TheShaftCutAtAHapticRateSeparatesTheStaticFemur) {
+    const StaticCut cut = cut_the_static_femur(50);
+    std::printf("[ femur    ] at 1 kHz: %zu steps, %zu faces dissected, farthest corner %.3g h, %zu loose pieces\n",
+                cut.steps, cut.dissected, cut.farthest / cut.h, cut.loose);
+    EXPECT_LE(cut.farthest, 0.5 * cut.h);
+    EXPECT_EQ(cut.loose, 1u);
+    EXPECT_EQ(cut.pieces, 2u);
 }
 
 // Through cuts of the shaft at other heights, tilts and directions, each sampled at another rate:
@@ -251,8 +255,6 @@ TEST(SnapCutFemur, RandomThroughCutsOfTheShaftSeparateItAtAnyRate) {
     const Mesh original = read_mesh(femur);
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
-    const std::array<int, 1> columns{6};
-    const ToolPath recorded = read_tool_path(SXK_TEST_DATA_DIR "/paths/femur-shaft.path", columns);
     const std::uint64_t seed = seed_for("SnapCutFemur.RandomThroughCutsOfTheShaftSeparateItAtAnyRate");
     std::mt19937_64 random(seed);
     const std::array<int, 6> rates{1, 2, 5, 10, 25, 50};
@@ -267,24 +269,7 @@ TEST(SnapCutFemur, RandomThroughCutsOfTheShaftSeparateItAtAnyRate) {
             return Point{-0.066 + dx * std::cos(turn) - dy * std::sin(turn),
                          0.065 + dx * std::sin(turn) + dy * std::cos(turn), z + raise + tilt * dx};
         };
-        std::vector<Scalpel> path;
-        for (std::size_t i = 0; i < recorded.samples.size(); ++i) {
-            const auto& v = recorded.samples[i].values;
-            const Scalpel sample{moved(v[0], v[1], v[2]), moved(v[3], v[4], v[5])};
-            if (i > 0) {
-                const Scalpel previous = path.back();
-                for (int j = 1; j < steps; ++j) {
-                    const double s = double(j) / steps;
-                    Scalpel between;
-                    for (std::size_t k = 0; k < 3; ++k) {
-                        between.handle[k] = previous.handle[k] + s * (sample.handle[k] - previous.handle[k]);
-                        between.tip[k] = previous.tip[k] + s * (sample.tip[k] - previous.tip[k]);
-                    }
-                    path.push_back(between);
-                }
-            }
-            path.push_back(sample);
-        }
+        const std::vector<Scalpel> path = femur_path(steps, moved);
         Mesh mesh = original;
         auto session =
             snapcut::SnapCutSession::make(mesh, {}, {host.service<degeneracy::DegeneracyService>().value()}).value();
