@@ -32,10 +32,6 @@ double triangle_area(const Point& a, const Point& b, const Point& c) {
     return 0.5 * norm(cross(b - a, c - a));
 }
 
-double tetrahedron_volume(std::span<const Point> p) {
-    return std::abs(dot(cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0])) / 6.0;
-}
-
 // The vertices of the face opposite vertex i of a tetrahedron.
 std::array<Point, 3> face_opposite(std::span<const Point> p, std::size_t i) {
     std::array<Point, 3> face;
@@ -45,6 +41,17 @@ std::array<Point, 3> face_opposite(std::span<const Point> p, std::size_t i) {
 }
 
 }  // namespace
+
+double tetrahedron_volume(std::span<const Point> p) {
+    return std::abs(dot(cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0])) / 6.0;
+}
+
+double mean_element_volume(const Mesh& mesh, Positions positions) {
+    if (mesh.element_count() == 0) return 0;
+    double sum = 0;
+    for (const ElementId t : elements(mesh)) sum += tetrahedron_volume(element_points(mesh, t, positions));
+    return sum / double(mesh.element_count());
+}
 
 double aspect_ratio(std::span<const Point> p) {
     const double longest = max_edge(p);

@@ -132,22 +132,26 @@ std::uint32_t CutMarks::add_sweep(const Sweep& sweep) {
     return index;
 }
 
-bool CutMarks::near_sweeps(const Point& p, double distance) const {
+template <class Visit>
+bool CutMarks::for_sweeps_near(const Point& p, double distance, Visit visit) const {
     const Point low{p[0] - distance, p[1] - distance, p[2] - distance};
     const Point high{p[0] + distance, p[1] + distance, p[2] + distance};
     for (auto it = m_sweep_tree->tree.qbegin(bgi::intersects(SweepTree::box(low, high)));
          it != m_sweep_tree->tree.qend(); ++it)
-        if (distance_to_sweep(m_sweeps[it->second], p) <= distance) return true;
+        if (visit(distance_to_sweep(m_sweeps[it->second], p))) return true;
     return false;
 }
 
+bool CutMarks::near_sweeps(const Point& p, double distance) const {
+    return for_sweeps_near(p, distance, [distance](double d) { return d <= distance; });
+}
+
 double CutMarks::distance_to_sweeps(const Point& p, double at_most) const {
-    const Point low{p[0] - at_most, p[1] - at_most, p[2] - at_most};
-    const Point high{p[0] + at_most, p[1] + at_most, p[2] + at_most};
     double nearest = at_most;
-    for (auto it = m_sweep_tree->tree.qbegin(bgi::intersects(SweepTree::box(low, high)));
-         it != m_sweep_tree->tree.qend(); ++it)
-        nearest = std::min(nearest, distance_to_sweep(m_sweeps[it->second], p));
+    for_sweeps_near(p, at_most, [&nearest](double d) {
+        nearest = std::min(nearest, d);
+        return false;
+    });
     return nearest;
 }
 

@@ -194,6 +194,10 @@ private:
     std::vector<Sweep> m_sweeps;
     struct SweepTree;  // the sweeps by their boxes (Boost.Geometry rtree)
     std::unique_ptr<SweepTree> m_sweep_tree;
+    // Calls visit(the distance from p) for each sweep whose box comes within `distance` of p, until
+    // one returns true; whether one did.
+    template <class Visit>
+    bool for_sweeps_near(const Point& p, double distance, Visit visit) const;
     // The sweeps whose boxes meet the box [low, high], oldest first.
     std::vector<std::uint32_t> sweeps_meeting_box(const Point& low, const Point& high) const;
     // Marks {u, v} (when it has no mark) and puts the elements around the edge (those of u's star

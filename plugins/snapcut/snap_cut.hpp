@@ -121,8 +121,9 @@ struct CutStepReport {
     // (placement), and of a face the step opened, right after the dissection (incision: a face
     // opens once the faces around its corners close up, which may take a few steps after the
     // sweep that selected it). On a deforming body each sweep is where the blade went in the
-    // shape of its time: the relaxations since have moved the material a little. Each also relative to the corner's own mesh size: the distance over the mean
-    // length of the edges at the corner (the femur's interior edges are up to 7 times its mean).
+    // shape of its time: the relaxations since have moved the material a little. Each also
+    // relative to the corner's own mesh size: the distance over the mean length of the edges at
+    // the corner (the femur's interior edges are up to 7 times its mean).
     double placement_error = 0, placement_error_local = 0;
     double incision_error = 0, incision_error_local = 0;
     std::size_t nodes_snapped = 0;

@@ -74,23 +74,6 @@ double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) 
     return longest;
 }
 
-// The volume of element t in the reference positions: the material it holds.
-double volume(const Mesh& mesh, ElementId t) {
-    const auto p = element_points(mesh, t, Positions::reference);
-    double e[3][3];
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t k = 0; k < 3; ++k) e[i][k] = p[i + 1][k] - p[0][k];
-    return std::abs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-           6;
-}
-
-double mean_element_volume(const Mesh& mesh) {
-    double sum = 0;
-    for (const ElementId t : elements(mesh)) sum += volume(mesh, t);
-    return mesh.element_count() > 0 ? sum / double(mesh.element_count()) : 0;
-}
-
 // The mean length of the edges at v, deformed positions: the mesh's size where v is.
 double mean_edge_at(const Mesh& mesh, VertexId v) {
     std::vector<VertexId> neighbours;
@@ -197,7 +180,7 @@ SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServ
       m_options(options),
       m_services(services),
       m_index(mesh, Positions::deformed),
-      m_element_volume(mean_element_volume(mesh)),
+      m_element_volume(mean_element_volume(mesh, Positions::reference)),
       m_split_beyond(options.split_beyond > 0
                          ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
                          : 0) {}
@@ -467,7 +450,7 @@ bool SnapCutSession::crumb(std::span<const ElementId> piece) const {
     const double most = double(m_options.largest_crumb) * m_element_volume;
     double material = 0;
     for (const ElementId t : piece)
-        if ((material += volume(mesh(), t)) > most) return false;
+        if ((material += tetrahedron_volume(element_points(mesh(), t, Positions::reference))) > most) return false;
     return true;
 }
 
