@@ -414,8 +414,23 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         const std::size_t edited_before = elements_edited_in_step().size();
         auto removed = m_services.degeneracy->remove_among(mesh, around, removal);
         if (!removed) return removed.refusal().prefixed("snapcut: degeneracy removal: ");
-        m_marks.mark_from_earlier_sweeps(mesh, elements_edited_in_step().subspan(edited_before),
-                                         far_rules ? &swept : nullptr);
+        const std::span<const ElementId> remade = elements_edited_in_step().subspan(edited_before);
+        m_marks.mark_from_earlier_sweeps(mesh, remade, far_rules ? &swept : nullptr);
+        // a collapse moves a node of the cut faces around it: measured again where the removal
+        // left them (the corner at 0.785 h of docs/snapcut.md "At a haptic device's rate" was
+        // measured at 0.447 h before its collapse)
+        corners.clear();
+        for (const ElementId t : remade) {
+            if (!mesh.is_element(t)) continue;
+            for (int i = 0; i < mesh.element_vertex_count(); ++i) {
+                const FaceId f = mesh.face(t, i);
+                if (mesh.mate(f) != invalid_id) continue;
+                const Simplex face = mesh.face_simplex(f);
+                if (mesh.face_label(face) != m_options.cut_label) continue;
+                corners.insert(corners.end(), face.vertices().begin(), face.vertices().end());
+            }
+        }
+        note_distances(std::move(corners), sweep_index, ahead, m_last.incision_error, m_last.incision_error_local);
         m_last.degeneracy_removal_ran = true;
         m_last.degenerates_found += removed->found;
         m_last.collapses += removed->collapses;
