@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -46,12 +48,27 @@ TEST(ReorderVertices, RenumberedKeepsOrientationAndLabels) {
     cube.face_labels()[Simplex(+1, {0, 1, 4})] = 5;
     std::vector<VertexId> reverse(cube.vertex_count());
     for (VertexId v = 0; v < reverse.size(); ++v) reverse[v] = static_cast<VertexId>(reverse.size() - 1 - v);
+    for (ElementId t : elements(cube)) cube.set_label(t, static_cast<int>(t.value()) + 1);
     const Mesh result = renumbered(cube, reverse);
     ASSERT_TRUE(result.validate().ok()) << result.validate().reason();
-    std::vector<int> labels_before, labels_after;
-    for (ElementId t : elements(cube)) labels_before.push_back(cube.label(t));
-    for (ElementId t : elements(result)) labels_after.push_back(result.label(t));
-    EXPECT_EQ(labels_after, labels_before);
+    // each element keeps its orientation and label, wherever it now is in the element order
+    std::map<Simplex, int> before, after;
+    for (ElementId t : elements(cube)) {
+        Simplex mapped = cube.simplex(t);
+        std::array<VertexId, 4> vertices{};
+        for (int j = 0; j < 4; ++j) vertices[static_cast<std::size_t>(j)] = reverse[mapped.vertex(j)];
+        before[Simplex(mapped.sign(), vertices)] = cube.label(t);
+    }
+    for (ElementId t : elements(result)) after[result.simplex(t)] = result.label(t);
+    EXPECT_EQ(after, before);
+    // and the elements come in the order of their lowest vertex
+    VertexId last = 0;
+    for (ElementId t : elements(result)) {
+        const Simplex s = result.simplex(t);
+        const VertexId lowest = *std::min_element(s.vertices().begin(), s.vertices().end());
+        EXPECT_GE(lowest, last) << "element " << t;
+        last = lowest;
+    }
     const VertexId n = static_cast<VertexId>(reverse.size() - 1);
     EXPECT_EQ(result.face_labels().at(Simplex(+1, {n - 4, n - 1, n})), 5);
 }

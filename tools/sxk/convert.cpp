@@ -1,5 +1,6 @@
 // sxk convert IN OUT [--reorient] [--reorder] [--gmsh-version 22|41]: the formats follow the
-// extensions; --reorder renumbers the vertices by reverse Cuthill-McKee before writing.
+// extensions; --reorder renumbers the vertices by reverse Cuthill-McKee and orders the elements by
+// their lowest vertex before writing.
 #include <memory>
 
 #include "cli.hpp"
@@ -57,7 +58,8 @@ void add_convert_command(CLI::App& app, Context& context) {
     command->add_option("IN", options->input, "Input mesh file")->required();
     command->add_option("OUT", options->output, "Output mesh file")->required();
     command->add_flag("--reorient", options->reorient, "Flip inverted elements instead of refusing the input");
-    command->add_flag("--reorder", options->reorder, "Renumber vertices by reverse Cuthill-McKee (smaller bandwidth)");
+    command->add_flag("--reorder", options->reorder,
+                      "Renumber vertices by reverse Cuthill-McKee (smaller bandwidth), elements by their lowest vertex");
     command->add_option("--gmsh-version", options->gmsh_version, "Gmsh ASCII format version of a .msh output")
         ->check(CLI::IsMember({22, 41}))
         ->capture_default_str();
