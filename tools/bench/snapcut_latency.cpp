@@ -6,9 +6,11 @@
 // several runs of the cut on fresh copies, and their ratio between the meshes - the peer is the
 // small femur, as a step must cost the same on a mesh 6 times larger.
 //
-//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=MESH.ele [NAME=MESH.ele ...]
+//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=[reordered:]MESH.ele [NAME=...]
 //
-// The first mesh is the peer of the others. --substeps N replays each movement of the path as N
+// The first mesh is the peer of the others. `reordered:` renumbers a mesh as `sxk convert
+// --reorder` does (Cuthill-McKee vertices, elements by their lowest vertex) before it is cut:
+// TetGen's numbering against a cache-friendly one (docs/performance.md "snapcut"). --substeps N replays each movement of the path as N
 // movements (handle and tip interpolated linearly); --rate HZ as many as a device sampling at HZ
 // takes over the movement's time in the path (--rate 1000: a haptic loop's steps). A step then
 // moves the blade a fraction of an element; its work follows the faces it crosses, and "per
@@ -27,6 +29,7 @@
 #include "degeneracy_plugin.hpp"
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
+#include "sxk/ops/reorder_vertices.hpp"
 #include "sxk/tool_path.hpp"
 
 namespace {
@@ -131,7 +134,8 @@ void line(const std::string& name, const char* unit, double ours, double peer, c
 }  // namespace
 
 int main(int argc, char** argv) {
-    const char* usage = "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=MESH.ele [NAME=MESH.ele ...]\n";
+    const char* usage =
+        "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=[reordered:]MESH.ele [NAME=...]\n";
     int first_mesh = 2;
     int substeps = 1;  // per movement
     double rate = 0;   // samples per second of the path's time column (0: by substeps)
@@ -177,9 +181,13 @@ int main(int argc, char** argv) {
         for (int i = first_mesh; i < argc; ++i) {
             const std::string arg = argv[i];
             const auto equals = arg.find('=');
-            const std::string name = arg.substr(0, equals), file = arg.substr(equals + 1);
-            std::fprintf(stderr, "snapcut_latency: reading %s\n", file.c_str());
-            const Mesh mesh = sxk::read_mesh(file);
+            const std::string name = arg.substr(0, equals);
+            std::string file = arg.substr(equals + 1);
+            const bool reorder = file.starts_with("reordered:");
+            if (reorder) file = file.substr(std::string("reordered:").size());
+            std::fprintf(stderr, "snapcut_latency: reading %s%s\n", file.c_str(), reorder ? " (reordered)" : "");
+            Mesh mesh = sxk::read_mesh(file);
+            if (reorder) mesh = sxk::renumbered(mesh, sxk::cuthill_mckee_order(mesh));
             all.push_back(measure(name, mesh, path));
         }
         const Figures& peer = all.front();
