@@ -15,10 +15,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <set>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/fixtures.hpp"
@@ -203,12 +206,71 @@ double farthest_cut_corner(const Mesh& mesh, std::span<const snapcut::Sweep> swe
     return farthest;
 }
 
+double distance_to_sweeps(const Point& p, std::span<const snapcut::Sweep> sweeps) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const snapcut::Sweep& sweep : sweeps) nearest = std::min(nearest, snapcut::distance_to_sweep(sweep, p));
+    return nearest;
+}
+
+// Where a cut left the bone joined: a breadth-first search through the faces from the element
+// lowest along the bone (z) to the highest, and of the faces on its way the one nearest the
+// sweeps (its farthest corner), with each corner's distance, whether it was snapped and which of
+// the face's edges carry a mark. Empty when the search does not get through. What a failing
+// through cut prints: each kind of hole the cuts at 1 kHz left was found from this.
+std::string where_the_bridge_is(const Mesh& mesh, const snapcut::CutMarks& marks) {
+    const auto height = [&](ElementId t) {
+        double z = 0;
+        for (const VertexId v : mesh.simplex(t).vertices()) z += mesh.deformed(v)[2];
+        return z;
+    };
+    ElementId low = invalid_id, high = invalid_id;
+    for (const ElementId t : elements(mesh)) {
+        if (low == invalid_id || height(t) < height(low)) low = t;
+        if (high == invalid_id || height(t) > height(high)) high = t;
+    }
+    std::map<ElementId, ElementId> came_from{{low, low}};
+    std::vector<ElementId> queue{low};
+    for (std::size_t next = 0; next < queue.size() && !came_from.contains(high); ++next)
+        for (int i = 0; i < 4; ++i) {
+            const FaceId mate = mesh.mate(mesh.face(queue[next], i));
+            if (mate == invalid_id) continue;
+            const ElementId across = mesh.face_element(mate);
+            if (came_from.emplace(across, queue[next]).second) queue.push_back(across);
+        }
+    if (!came_from.contains(high)) return "";
+    const std::span<const snapcut::Sweep> sweeps = marks.sweeps();
+    std::optional<Simplex> nearest;
+    double nearest_distance = std::numeric_limits<double>::infinity();
+    for (ElementId t = high; t != low; t = came_from.at(t)) {
+        std::vector<VertexId> shared;
+        const Simplex a = mesh.simplex(t), b = mesh.simplex(came_from.at(t));
+        for (const VertexId v : a.vertices())
+            if (b.contains(v)) shared.push_back(v);
+        double farthest = 0;
+        for (const VertexId v : shared) farthest = std::max(farthest, distance_to_sweeps(mesh.deformed(v), sweeps));
+        if (farthest < nearest_distance) nearest_distance = farthest, nearest = Simplex(+1, shared);
+    }
+    std::string report = "the bone is joined across face";
+    for (const VertexId v : nearest->vertices()) {
+        report += " " + std::to_string(v) + " (" + std::to_string(distance_to_sweeps(mesh.deformed(v), sweeps));
+        report += marks.snapped(v) ? ", snapped)" : ")";
+    }
+    report += "; marked edges:";
+    for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j)
+            if (const auto mark = marks.mark(nearest->vertex(i), nearest->vertex(j)))
+                report += " " + std::to_string(nearest->vertex(i)) + "-" + std::to_string(nearest->vertex(j)) +
+                          " (at " + std::to_string(mark->node) + ", sweep " + std::to_string(mark->sweep) + ")";
+    return report;
+}
+
 // The recorded path through the static femur, each movement in `steps` steps: what the cut did.
 struct StaticCut {
     double h = 0, farthest = 0;  // the mean edge length; the farthest corner of the cut's faces
     double incision = 0;         // the farthest the steps reported (CutStepReport::incision_error)
     double left = 0;             // the farthest corner of the cut faces of the result
     std::size_t steps = 0, split = 0, dissected = 0, loose = 0, pieces = 0;
+    std::string bridge;          // where_the_bridge_is, when the bone stayed in one piece
 };
 
 StaticCut cut_the_static_femur(int steps) {
@@ -236,6 +298,7 @@ StaticCut cut_the_static_femur(int steps) {
     expect_valid(mesh);
     cut.pieces = connected_components(mesh).count;
     cut.left = farthest_cut_corner(mesh, session->marks().sweeps());
+    if (cut.pieces == 1) cut.bridge = where_the_bridge_is(mesh, session->marks());
     return cut;
 }
 
@@ -245,13 +308,14 @@ StaticCut cut_the_static_femur(int steps) {
 // without the rest of the movement, left the bone in one piece here.
 TEST(SnapCutFemur, TheShaftCutThroughTheStaticFemurSeparatesItWithinHalfAnEdge) {
     const StaticCut cut = cut_the_static_femur(1);
-    std::printf("[ femur    ] static: %zu edges split, farthest corner %.3g h (%.3g h in the result), %zu loose pieces\n",
+    std::printf("[ femur    ] static: %zu edges split, farthest corner %.3g h (%.3g h in the result), %zu loose "
+                "pieces\n",
                 cut.split, cut.farthest / cut.h, cut.left / cut.h, cut.loose);
     EXPECT_GT(cut.split, 0u);
     EXPECT_LE(cut.farthest, 0.5 * cut.h);
     EXPECT_LE(cut.left, cut.incision * (1 + 1e-12)) << "a corner of the cut farther than any step reported";
     EXPECT_EQ(cut.loose, 1u);
-    EXPECT_EQ(cut.pieces, 2u);
+    EXPECT_EQ(cut.pieces, 2u) << cut.bridge;
 }
 
 // The same path sampled as a haptic device samples it: each movement (0.05 s) in 50 steps of a
@@ -266,7 +330,7 @@ TEST(SnapCutFemur, TheShaftCutAtAHapticRateSeparatesTheStaticFemur) {
     EXPECT_LE(cut.farthest, 0.5 * cut.h);
     EXPECT_LE(cut.left, cut.incision * (1 + 1e-12)) << "a corner of the cut farther than any step reported";
     EXPECT_EQ(cut.loose, 1u);
-    EXPECT_EQ(cut.pieces, 2u);
+    EXPECT_EQ(cut.pieces, 2u) << cut.bridge;
 }
 
 // Through cuts of the shaft at other heights, tilts and directions, each sampled at another rate:
@@ -312,7 +376,8 @@ TEST(SnapCutFemur, RandomThroughCutsOfTheShaftSeparateItAtAnyRate) {
                     "dissected, %zu pieces, farthest corner %.3g (reported %.3g)\n",
                     cut, turn * 180 / std::numbers::pi, raise, tilt, steps, dissected, pieces, left, incision);
         expect_valid(mesh);
-        EXPECT_EQ(pieces, 2u) << "seed " << seed << ", cut " << cut;
+        EXPECT_EQ(pieces, 2u) << "seed " << seed << ", cut " << cut << ": "
+                              << (pieces == 1 ? where_the_bridge_is(mesh, session->marks()) : "");
         EXPECT_EQ(loose, 1u) << "seed " << seed << ", cut " << cut;
         EXPECT_LE(left, incision * (1 + 1e-12)) << "seed " << seed << ", cut " << cut
                                                 << ": a corner of the cut farther than any step reported";
