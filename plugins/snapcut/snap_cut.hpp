@@ -121,8 +121,8 @@ struct CutStepReport {
     // (placement), and of a face the step opened, right after the dissection (incision: a face
     // opens once the faces around its corners close up, which may take a few steps after the
     // sweep that selected it), and again of the cut faces the degeneracy removal remade, after
-    // it (a collapse may move a corner of the cut). On a deforming body each sweep is where the blade went in the
-    // shape of its time: the relaxations since have moved the material a little. Each also
+    // it (a collapse may move a corner of the cut). On a deforming body each sweep is where the
+    // blade went in the shape of its time: the relaxations since have moved the material a little. Each also
     // relative to the corner's own mesh size: the distance over the mean length of the edges at
     // the corner (the femur's interior edges are up to 7 times its mean).
     double placement_error = 0, placement_error_local = 0;

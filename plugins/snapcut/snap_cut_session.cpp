@@ -417,8 +417,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         const std::span<const ElementId> remade = elements_edited_in_step().subspan(edited_before);
         m_marks.mark_from_earlier_sweeps(mesh, remade, far_rules ? &swept : nullptr);
         // a collapse moves a node of the cut faces around it: measured again where the removal
-        // left them (the corner at 0.785 h of docs/snapcut.md "At a haptic device's rate" was
-        // measured at 0.447 h before its collapse)
+        // left them (a corner the session had measured at 0.447 h ended at 0.785 h: docs/snapcut.md
+        // "What is not done yet")
         corners.clear();
         for (const ElementId t : remade) {
             if (!mesh.is_element(t)) continue;

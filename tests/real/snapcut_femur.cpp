@@ -250,6 +250,7 @@ std::string where_the_bridge_is(const Mesh& mesh, const snapcut::CutMarks& marks
         for (const VertexId v : shared) farthest = std::max(farthest, distance_to_sweeps(mesh.deformed(v), sweeps));
         if (farthest < nearest_distance) nearest_distance = farthest, nearest = Simplex(+1, shared);
     }
+    if (!nearest) return "";
     std::string report = "the bone is joined across face";
     for (const VertexId v : nearest->vertices()) {
         report += " " + std::to_string(v) + " (" + std::to_string(distance_to_sweeps(mesh.deformed(v), sweeps));

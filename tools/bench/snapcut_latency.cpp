@@ -10,11 +10,12 @@
 //
 // The first mesh is the peer of the others. `reordered:` renumbers a mesh as `sxk convert
 // --reorder` does (Cuthill-McKee vertices, elements by their lowest vertex) before it is cut:
-// TetGen's numbering against a cache-friendly one (docs/performance.md "snapcut"). --substeps N replays each movement of the path as N
-// movements (handle and tip interpolated linearly); --rate HZ as many as a device sampling at HZ
-// takes over the movement's time in the path (--rate 1000: a haptic loop's steps). A step then
-// moves the blade a fraction of an element; its work follows the faces it crosses, and "per
-// dissected face" compares the meshes at equal work.
+// TetGen's numbering against a cache-friendly one (docs/performance.md "snapcut").
+// --substeps N replays each movement of the path as N movements (handle and tip interpolated
+// linearly); --rate HZ as many as a device sampling at HZ takes over the movement's time in the
+// path (--rate 1000: a haptic loop's steps). A step then moves the blade a fraction of an
+// element; its work follows the faces it crosses, and "per dissected face" compares the meshes
+// at equal work.
 //
 // stdout: JSON lines (CONTRIBUTING.md "Benchmarks"); stderr: a table per mesh.
 #include <algorithm>

@@ -16,8 +16,8 @@
 //   element labels and face labels mapped, built with assign_elements. The elements are ordered
 //   by their lowest new vertex id (ties in `mesh`'s id order): near in memory what is near in the
 //   vertex order (a cut's step on the 1.2M femur: docs/performance.md "snapcut"); FaceIds are not
-//   preserved. Watchers are not copied. new_of_old must be a permutation of size vertex_count() (std::invalid_argument
-//   otherwise: a programming error, not an input refusal).
+//   preserved. Watchers are not copied. new_of_old must be a permutation of size vertex_count()
+//   (std::invalid_argument otherwise: a programming error, not an input refusal).
 #pragma once
 
 #include <span>
