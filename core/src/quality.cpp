@@ -2,6 +2,7 @@
 #include "sxk/quality.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -46,10 +47,21 @@ double tetrahedron_volume(std::span<const Point> p) {
     return std::abs(dot(cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0])) / 6.0;
 }
 
+double element_volume(const Mesh& mesh, ElementId t, Positions positions) {
+    // the corners in place, not element_points' vector: mean_element_volume runs over every
+    // element when a snap cut begins (1.2M allocations on the large femur)
+    std::array<Point, 4> corners{};
+    const Simplex& s = mesh.simplex(t);
+    for (int j = 0; j < 4; ++j)
+        corners[static_cast<std::size_t>(j)] =
+            positions == Positions::reference ? mesh.reference(s.vertex(j)) : mesh.deformed(s.vertex(j));
+    return tetrahedron_volume(corners);
+}
+
 double mean_element_volume(const Mesh& mesh, Positions positions) {
     if (mesh.element_count() == 0) return 0;
     double sum = 0;
-    for (const ElementId t : elements(mesh)) sum += tetrahedron_volume(element_points(mesh, t, positions));
+    for (const ElementId t : elements(mesh)) sum += element_volume(mesh, t, positions);
     return sum / double(mesh.element_count());
 }
 

@@ -71,6 +71,9 @@ struct Scalpel {
 // (handle to tip), length = the blade's length. (A zero-length blade gives axes[2] = z.)
 ToolPose to_pose(const Scalpel& scalpel);
 Scalpel scalpel_of(const ToolPose& pose);
+// The pose a fraction s of the way from `from` to `to` (handle and tip interpolated linearly;
+// s = 1 gives `to` exactly): a recorded path's movement replayed in smaller steps.
+Scalpel between(const Scalpel& from, const Scalpel& to, double s);
 
 struct Options {
     bool snap = true;                  // move the selected faces' corners onto the sweep (§3.2.2)
@@ -122,9 +125,9 @@ struct CutStepReport {
     // opens once the faces around its corners close up, which may take a few steps after the
     // sweep that selected it), and again of the cut faces the degeneracy removal remade, after
     // it (a collapse may move a corner of the cut). On a deforming body each sweep is where the
-    // blade went in the shape of its time: the relaxations since have moved the material a little. Each also
-    // relative to the corner's own mesh size: the distance over the mean length of the edges at
-    // the corner (the femur's interior edges are up to 7 times its mean).
+    // blade went in the shape of its time: the relaxations since have moved the material a
+    // little. Each also relative to the corner's own mesh size: the distance over the mean length
+    // of the edges at the corner (the femur's interior edges are up to 7 times its mean).
     double placement_error = 0, placement_error_local = 0;
     double incision_error = 0, incision_error_local = 0;
     std::size_t nodes_snapped = 0;

@@ -153,6 +153,16 @@ ToolPose to_pose(const Scalpel& scalpel) {
     return pose;
 }
 
+Scalpel between(const Scalpel& from, const Scalpel& to, double s) {
+    if (s == 1) return to;
+    Scalpel pose;
+    for (std::size_t k = 0; k < 3; ++k) {
+        pose.handle[k] = from.handle[k] + s * (to.handle[k] - from.handle[k]);
+        pose.tip[k] = from.tip[k] + s * (to.tip[k] - from.tip[k]);
+    }
+    return pose;
+}
+
 Scalpel scalpel_of(const ToolPose& pose) {
     Scalpel scalpel{pose.position, pose.position};
     for (std::size_t i = 0; i < 3; ++i) scalpel.handle[i] -= pose.length * pose.axes[2][i];
@@ -465,7 +475,7 @@ bool SnapCutSession::crumb(std::span<const ElementId> piece) const {
     const double most = double(m_options.largest_crumb) * m_element_volume;
     double material = 0;
     for (const ElementId t : piece)
-        if ((material += tetrahedron_volume(element_points(mesh(), t, Positions::reference))) > most) return false;
+        if ((material += element_volume(mesh(), t, Positions::reference)) > most) return false;
     return true;
 }
 

@@ -175,19 +175,19 @@ std::vector<Scalpel> femur_path(int steps, Move moved) {
         const Scalpel sample{moved(v[0], v[1], v[2]), moved(v[3], v[4], v[5])};
         if (i > 0) {
             const Scalpel previous = path.back();
-            for (int j = 1; j < steps; ++j) {
-                const double s = double(j) / steps;
-                Scalpel between;
-                for (std::size_t k = 0; k < 3; ++k) {
-                    between.handle[k] = previous.handle[k] + s * (sample.handle[k] - previous.handle[k]);
-                    between.tip[k] = previous.tip[k] + s * (sample.tip[k] - previous.tip[k]);
-                }
-                path.push_back(between);
-            }
+            for (int j = 1; j < steps; ++j) path.push_back(snapcut::between(previous, sample, double(j) / steps));
         }
         path.push_back(sample);
     }
     return path;
+}
+
+// The distance from p to the nearest of `sweeps`, every one measured (not the session's tree: the
+// tests check what the session reports against it).
+double distance_to_sweeps(const Point& p, std::span<const snapcut::Sweep> sweeps) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const snapcut::Sweep& sweep : sweeps) nearest = std::min(nearest, snapcut::distance_to_sweep(sweep, p));
+    return nearest;
 }
 
 // The farthest corner of the cut faces of `mesh` from the nearest of `sweeps`: a corner the steps
@@ -197,19 +197,8 @@ double farthest_cut_corner(const Mesh& mesh, std::span<const snapcut::Sweep> swe
     std::set<VertexId> corners;
     for (const Simplex& face : cut_faces(mesh)) corners.insert(face.vertices().begin(), face.vertices().end());
     double farthest = 0;
-    for (const VertexId v : corners) {
-        double nearest = std::numeric_limits<double>::infinity();
-        for (const snapcut::Sweep& sweep : sweeps)
-            nearest = std::min(nearest, snapcut::distance_to_sweep(sweep, mesh.deformed(v)));
-        farthest = std::max(farthest, nearest);
-    }
+    for (const VertexId v : corners) farthest = std::max(farthest, distance_to_sweeps(mesh.deformed(v), sweeps));
     return farthest;
-}
-
-double distance_to_sweeps(const Point& p, std::span<const snapcut::Sweep> sweeps) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const snapcut::Sweep& sweep : sweeps) nearest = std::min(nearest, snapcut::distance_to_sweep(sweep, p));
-    return nearest;
 }
 
 // Where a cut left the bone joined: a breadth-first search through the faces from the element

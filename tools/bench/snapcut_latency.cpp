@@ -164,16 +164,8 @@ int main(int argc, char** argv) {
         std::vector<Scalpel> path{samples.front()};
         for (std::size_t i = 1; i < samples.size(); ++i) {
             const int parts = rate > 0 ? std::max(1, int(std::lround((times[i] - times[i - 1]) * rate))) : substeps;
-            for (int j = 1; j <= parts; ++j) {
-                const double s = double(j) / parts;
-                Scalpel between;
-                for (std::size_t k = 0; k < 3; ++k) {
-                    between.handle[k] = samples[i - 1].handle[k] + s * (samples[i].handle[k] - samples[i - 1].handle[k]);
-                    between.tip[k] = samples[i - 1].tip[k] + s * (samples[i].tip[k] - samples[i - 1].tip[k]);
-                }
-                if (j == parts) between = samples[i];  // the sample itself, not a rounding of it
-                path.push_back(between);
-            }
+            for (int j = 1; j <= parts; ++j)
+                path.push_back(sxk::snapcut::between(samples[i - 1], samples[i], double(j) / parts));
         }
         const std::string how = rate > 0         ? " (at " + std::to_string(std::lround(rate)) + " Hz)"
                                 : substeps == 1 ? ""

@@ -37,10 +37,11 @@ SXK_API double relative_distance_to_hull(std::span<const Point> face, const Poin
 // mesh without elements. Linear in the elements (pairs bucketed by their lower vertex).
 SXK_API double mean_edge_length(const Mesh& mesh, Positions positions = Positions::reference);
 
-// The volume of a tetrahedron (4 points, unsigned), and the mean over a 3D mesh's elements in the
-// given positions (0 for a mesh without elements): the material a piece of the mesh holds, in
-// elements' worth.
+// The volume of a tetrahedron (4 points, unsigned), of a 3D mesh's element t, and the mean over a
+// 3D mesh's elements (0 for a mesh without elements), in the given positions: the material a
+// piece of the mesh holds, in elements' worth.
 SXK_API double tetrahedron_volume(std::span<const Point> tetrahedron);
+SXK_API double element_volume(const Mesh& mesh, ElementId t, Positions positions = Positions::reference);
 SXK_API double mean_element_volume(const Mesh& mesh, Positions positions = Positions::reference);
 
 // The positions of element t's vertices in canonical order.
