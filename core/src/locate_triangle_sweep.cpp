@@ -84,16 +84,18 @@ TriangleHits hit_by(const SpatialIndex::Trees& trees, const Mesh& mesh, const Po
                     const Point& c, Positions positions, TriangleHitsOf what) {
     std::vector<std::uint32_t> candidates;  // entry keys
     TriangleHits hits;
-    const auto& element_boxes = detail::element_tree<D>(trees);
-    gather<D>(element_boxes, a, b, c, 0, candidates);
-    detail::sort_unique(candidates);
-    for (const std::uint32_t candidate : candidates)
-        element_boxes.any_member(candidate, [&](ElementId t) {
-            if (triangle_meets_element(mesh, t, a, b, c, positions)) hits.elements.push_back(t);
-            return false;
-        });
-    detail::sort_unique(hits.elements);
-    if (what == TriangleHitsOf::elements) return hits;
+    if (what != TriangleHitsOf::boundary_faces) {
+        const auto& element_boxes = detail::element_tree<D>(trees);
+        gather<D>(element_boxes, a, b, c, 0, candidates);
+        detail::sort_unique(candidates);
+        for (const std::uint32_t candidate : candidates)
+            element_boxes.any_member(candidate, [&](ElementId t) {
+                if (triangle_meets_element(mesh, t, a, b, c, positions)) hits.elements.push_back(t);
+                return false;
+            });
+        detail::sort_unique(hits.elements);
+        if (what == TriangleHitsOf::elements) return hits;
+    }
     candidates.clear();
     const auto& face_boxes = detail::face_tree<D>(trees);
     gather<D>(face_boxes, a, b, c, 0, candidates);

@@ -66,6 +66,27 @@ bool collinear_meets(const std::array<Kernel::Point_3, 3>& t, const std::array<K
     return CGAL::do_intersect(Kernel::Segment_3(t[from], t[to]), k);
 }
 
+// A plane through an edge of T with T's third corner on one side and every corner of K strictly
+// on the other: T and K are apart. The plane passes through the edge and the edge's first end
+// moved along T's normal (in doubles): any plane through the edge will do, so the rounded point
+// takes nothing from the signs' exactness. The elements around the nodes a cut snapped lie along
+// the blade's sliver, mostly behind it, straddling its plane: here they are told apart by 5 to 15
+// signs instead of the 17 and more of the tests below (docs/performance.md "snapcut_latency").
+bool beyond_an_edge(const std::array<Kernel::Point_3, 3>& t, const std::array<Kernel::Point_3, 4>& p) {
+    const Kernel::Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    for (std::size_t x = 0; x < 3; ++x) {
+        const Kernel::Point_3& from = t[x];
+        const Kernel::Point_3& to = t[(x + 1) % 3];
+        const Kernel::Point_3 lifted = from + normal;
+        const int third = orientation_sign(from, to, lifted, t[(x + 2) % 3]);
+        if (third == 0) continue;  // the lifted point fell on the edge's line or T's plane: no plane
+        bool apart = true;
+        for (std::size_t i = 0; i < 4 && apart; ++i) apart = orientation_sign(from, to, lifted, p[i]) == -third;
+        if (apart) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, const Point& p0, const Point& p1,
@@ -84,6 +105,7 @@ bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, 
         below += side[i] < 0;
     }
     if (above == 4 || below == 4) return false;
+    if (above + below > 0 && beyond_an_edge(t, p)) return false;
     const int volume = orientation_sign(p[0], p[1], p[2], p[3]);
     if (volume == 0) return false;  // a flat tetrahedron: no element to meet (as the index has it)
     if (above + below == 0) return collinear_meets(t, p);

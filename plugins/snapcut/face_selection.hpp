@@ -52,11 +52,13 @@
 //
 // Where the sweep is searched. The thesis tests the whole boundary for collisions and walks from
 // those and from the incomplete tetrahedra. Here the candidates are the elements whose closed
-// simplex meets the sweep triangle (SpatialIndex::elements_hit_by_triangle: an R-tree query and
-// an exact test each): every tetrahedron with an edge the sweep crosses is among them, the
-// incomplete ones it completes included (a tetrahedron gains a mark only through an edge the
-// sweep crosses), and nothing else is looked at. The incomplete tetrahedra are those of the last
-// sweep's candidates with one or two marked corners, kept for the report.
+// simplex meets the sweep triangle: followed from those the blade lay in before the sweep
+// through the edges it crosses (blade_track.hpp, close_over_crossed_edges below), or asked of the
+// spatial index (SpatialIndex::elements_hit_by_triangle: an R-tree query and an exact test each)
+// when there is nothing to follow. Every tetrahedron with an edge the sweep crosses is among
+// them, the incomplete ones it completes included (a tetrahedron gains a mark only through an
+// edge the sweep crosses), and nothing else is looked at. The incomplete tetrahedra are those of
+// the last sweep's candidates with one or two marked corners, kept for the report.
 #pragma once
 
 #include <cstddef>
@@ -157,11 +159,11 @@ public:
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
     // dissection is recorded with its original's).
     void add_snapped(VertexId v, const Point& was);
-    // Every element with a snapped corner that may meet the sweep as the selection sees it
-    // (selection_position), sorted, each once: in the stars of the snapped nodes within the reach
+    // Every element with a snapped corner that meets the sweep as the selection sees it
+    // (selection_position), sorted, each once: of the stars of the snapped nodes within the reach
     // of the sweep (the longest edge of such an element), the elements that reach from the node
     // as far as the sweep is (an element lies in the ball about any of its corners through its
-    // farthest corner).
+    // farthest corner), and of those the ones the exact test finds meeting it.
     std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep) const;
     // Makes the reach at least `length` (the longest edge around a node about to be snapped).
     void extend_reach(double length) { m_reach = std::max(m_reach, length); }
@@ -235,6 +237,13 @@ struct Selection {
     std::size_t edges_hit = 0;        // edges this sweep marked
     std::size_t elements_searched = 0;
 };
+
+// The live elements of `roots` and, until none is added, those around every edge of one of them
+// that the sweep crosses (as the selection sees the mesh, marked or not), sorted, each once. From
+// the elements a blade lay in before the sweep, where its ends went and where the sweep meets the
+// boundary, these are the elements the sweep meets (blade_track.hpp).
+std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
+                                                std::span<const ElementId> roots);
 
 // Processes sweep `sweep_index` of `marks` against the tetrahedra `candidates` (what the sweep
 // meets; dead ids are skipped): marks the edges it crosses, selects the

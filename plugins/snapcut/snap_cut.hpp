@@ -71,6 +71,8 @@ struct Scalpel {
 // (handle to tip), length = the blade's length. (A zero-length blade gives axes[2] = z.)
 ToolPose to_pose(const Scalpel& scalpel);
 Scalpel scalpel_of(const ToolPose& pose);
+// The same handle and tip, exactly.
+bool same_blade(const Scalpel& a, const Scalpel& b);
 // The pose a fraction s of the way from `from` to `to` (handle and tip interpolated linearly;
 // s = 1 gives `to` exactly): a recorded path's movement replayed in smaller steps.
 Scalpel between(const Scalpel& from, const Scalpel& to, double s);
@@ -107,13 +109,18 @@ struct Options {
     bool remove_loose_pieces = false;
     // With a simulation: CG iterations after each step (a frame's worth; warm started).
     std::size_t relax_iterations = 100;
+    // Find a sweep's elements from those the blade lay in before it (blade_track.hpp); false:
+    // ask the spatial index along the whole blade every sweep. The cut is the same either way
+    // (tests/plugins/snapcut_track_test.cpp); following costs less on large meshes.
+    bool follow_blade = true;
 };
 
 // What one step did (thesis §3.3's figures, per step).
 struct CutStepReport {
     std::size_t sweeps = 0;            // sweep triangles processed (0 for the first pose)
     std::size_t repeats = 0;           // sweeps processed again after the removal edited the mesh
-    std::size_t elements_searched = 0; // elements the sweeps met (index) or left incomplete
+    std::size_t elements_searched = 0; // elements the sweeps met (followed or from the index), and
+                                       // those carried marks may have completed
     std::size_t edges_hit = 0;         // edges the sweeps crossed for the first time
     std::size_t edges_split = 0;       // of those, split where crossed (Options::split_beyond)
     std::size_t splits_refused = 0;    // far crossings split_edge refused (left as they were)
@@ -165,6 +172,13 @@ struct CutServices {
     elasticity::Simulation* simulation = nullptr;
 };
 
+class BladeTrack;  // blade_track.hpp
+
+// A sweep's blade before and after it (the movement's: the tip moves, then the handle).
+struct BladeMove {
+    Scalpel from, to;
+};
+
 class SnapCutSession final : public ToolSession {
 public:
     // Tetrahedral meshes in space only (refused by make otherwise). Builds a SpatialIndex over the
@@ -196,13 +210,18 @@ protected:
     void step_taken_back() override;
 
 private:
-    // `ahead`: the sweeps of the same movement that come after this one.
-    Outcome<Done> cut_sweep(const Sweep& sweep, std::span<const Sweep> ahead, StepReport& report);
+    // `ahead`: the sweeps of the same movement that come after this one; `blade`: the blade
+    // before and after the sweep (none for sweep()'s triangle).
+    Outcome<Done> cut_sweep(const Sweep& sweep, std::span<const Sweep> ahead, const BladeMove* blade,
+                            StepReport& report);
     // One selection, snap, dissection and removal of sweep `sweep_index`, among the elements the
     // sweep meets and those carried marks may have completed (CutMarks::pending), or among the
     // latter only (whole_sweep false); `edited`: the removal changed the mesh.
-    Outcome<Done> cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, bool whole_sweep,
-                            StepReport& report, bool& edited);
+    Outcome<Done> cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, const BladeMove* blade,
+                            bool whole_sweep, StepReport& report, bool& edited);
+    // The elements sweep `sweep_index` meets (a round over the whole sweep): followed from the
+    // blade's (blade_track.hpp) when the track follows it, else asked of the index.
+    std::vector<ElementId> elements_met(std::uint32_t sweep_index, const BladeMove* blade);
     // The distance from p to the surface the blade swept: the sweeps up to sweep_index and
     // `ahead` (the rest of this movement).
     double distance_to_swept_surface(const Point& p, std::uint32_t sweep_index, std::span<const Sweep> ahead) const;
@@ -222,6 +241,7 @@ private:
     Options m_options;
     CutServices m_services;
     SpatialIndex m_index;  // deformed positions: where the scalpel meets the mesh
+    std::unique_ptr<BladeTrack> m_track;  // the elements the blade lies in
     double m_element_volume = 0;  // the mean element volume when the session began (reference)
     double m_split_beyond = 0;    // Options::split_beyond in lengths (0: never split)
     CutMarks m_marks;

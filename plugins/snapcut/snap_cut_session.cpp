@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 
+#include "blade_track.hpp"
 #include "degeneracy_service.hpp"
 #include "elasticity_service.hpp"
 #include "loose_pieces.hpp"
@@ -142,6 +143,8 @@ void SnapCutSession::relax(StepReport& report) {
     m_last.seconds_relax = seconds_since(start);
 }
 
+bool same_blade(const Scalpel& a, const Scalpel& b) { return a.handle == b.handle && a.tip == b.tip; }
+
 ToolPose to_pose(const Scalpel& scalpel) {
     ToolPose pose;
     pose.position = scalpel.tip;
@@ -190,6 +193,7 @@ SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServ
       m_options(options),
       m_services(services),
       m_index(mesh, Positions::deformed),
+      m_track(std::make_unique<BladeTrack>(mesh)),
       m_element_volume(mean_element_volume(mesh, Positions::reference)),
       m_split_beyond(options.split_beyond > 0
                          ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
@@ -214,6 +218,7 @@ Outcome<StepReport> SnapCutSession::sweep(const Point& a, const Point& b, const 
 }
 
 void SnapCutSession::step_taken_back() {
+    m_track->forget();  // the blade goes back to where it was, the mesh with it
     if (m_undo.empty()) return;
     m_marks.restore(m_undo.back().marks);
     m_scalpel = m_undo.back().scalpel;
@@ -234,16 +239,27 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
         // sweep with collinear corners (the scalpel stood still, or slid along itself) sweeps no
         // area and is skipped
         std::vector<Sweep> sweeps;
+        std::vector<BladeMove> blades;
         if (m_swept) {
             sweeps.push_back(*m_swept);
+            m_track->forget();  // a triangle from anywhere: nothing to follow
         } else {
             const Scalpel& was = *m_scalpel;
+            const Scalpel turned{was.handle, next.tip};
             sweeps = {Sweep{was.handle, was.tip, next.tip}, Sweep{was.handle, next.tip, next.handle}};
+            blades = {BladeMove{was, turned}, BladeMove{turned, next}};
         }
         for (std::size_t i = 0; i < sweeps.size(); ++i) {
             const Sweep& sweep = sweeps[i];
-            if (collinear(sweep.a, sweep.b, sweep.c)) continue;
-            if (Outcome<Done> done = cut_sweep(sweep, std::span<const Sweep>(sweeps).subspan(i + 1), report); !done) {
+            const BladeMove* blade = blades.empty() ? nullptr : &blades[i];
+            if (collinear(sweep.a, sweep.b, sweep.c)) {
+                // no area swept; but a blade that slid along itself may lie in other elements
+                if (blade != nullptr && !same_blade(blade->from, blade->to)) m_track->forget();
+                continue;
+            }
+            if (Outcome<Done> done = cut_sweep(sweep, std::span<const Sweep>(sweeps).subspan(i + 1), blade, report);
+                !done) {
+                m_track->forget();
                 m_marks.restore(undo.marks);
                 m_seeds.clear();
                 m_last.seconds = seconds_since(start);
@@ -251,6 +267,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             }
         }
         if (Outcome<Done> settled = settle_loose_pieces(); !settled) {
+            m_track->forget();
             m_marks.restore(undo.marks);
             m_last.seconds = seconds_since(start);
             return settled.refusal();
@@ -268,7 +285,8 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     return Done{};
 }
 
-Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, std::span<const Sweep> ahead, StepReport& report) {
+Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, std::span<const Sweep> ahead, const BladeMove* blade,
+                                        StepReport& report) {
     ++m_last.sweeps;
     const std::uint32_t sweep_index = m_marks.add_sweep(sweep);
     // The degeneracy removal's collapses replace edges, and with them the marks of the sweeps
@@ -284,7 +302,8 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, std::span<const Swee
     bool whole_sweep = true;
     for (int round = 0; round < 3; ++round) {
         bool edited = false;
-        if (Outcome<Done> done = cut_round(sweep_index, ahead, whole_sweep, report, edited); !done) return done;
+        if (Outcome<Done> done = cut_round(sweep_index, ahead, blade, whole_sweep, report, edited); !done)
+            return done;
         if (edited) {
             whole_sweep = true;
             ++m_last.repeats;
@@ -297,23 +316,47 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, std::span<const Swee
     return Done{};
 }
 
-Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, bool whole_sweep,
-                                        StepReport& report, bool& edited) {
-    Mesh& mesh = this->mesh();
+std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, const BladeMove* blade) {
+    const Mesh& mesh = this->mesh();
     const Sweep sweep = m_marks.sweeps()[sweep_index];
+    // The selection sees snapped nodes where they were before the cut moved them, the index and
+    // the track where they are: an element may meet the sweep only as the selection sees it, and
+    // then it has a snapped corner within reach of the sweep (CutMarks::elements_near). So those
+    // are candidates too.
+    std::vector<ElementId> met = m_marks.elements_near(mesh, sweep);
+    std::vector<ElementId> roots;
+    if (!m_options.follow_blade) blade = nullptr;
+    if (blade != nullptr && m_track->follows(blade->from)) {
+        roots = m_track->roots(m_index, m_marks, blade->from, blade->to, sweep);
+    } else if (blade != nullptr && m_track->follows(blade->to)) {
+        // a later round: the sweep again, the elements the last one's edits made among them
+        roots = m_track->take_fresh(mesh, m_marks, sweep);
+        roots.insert(roots.end(), m_track->met().begin(), m_track->met().end());
+    } else {
+        const std::vector<ElementId> hits =
+            m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
+        met.insert(met.end(), hits.begin(), hits.end());
+        std::sort(met.begin(), met.end());
+        met.erase(std::unique(met.begin(), met.end()), met.end());
+        if (blade == nullptr) return met;
+        m_track->start(blade->to);
+        return m_track->set_met(std::move(met));
+    }
+    roots.insert(roots.end(), met.begin(), met.end());
+    return m_track->set_met(close_over_crossed_edges(mesh, m_marks, sweep, roots));
+}
+
+Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead,
+                                        const BladeMove* blade, bool whole_sweep, StepReport& report, bool& edited) {
+    Mesh& mesh = this->mesh();
 
     // 1. select (§3.2.1) among the elements the sweep meets (face_selection.hpp: they include
-    // every incomplete tetrahedron this sweep can complete). The selection sees snapped nodes
-    // where they were before the cut moved them, the index where they are: an element may meet
-    // the sweep only as the selection sees it, and then it has a snapped corner within reach of
-    // the sweep (CutMarks::elements_near). So those are candidates too.
+    // every incomplete tetrahedron this sweep can complete)
     auto phase = Clock::now();
     std::vector<ElementId> candidates;
     std::vector<ElementId> incomplete;  // the sweep's, kept by a partial round
     if (whole_sweep) {
-        candidates = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
-        const std::vector<ElementId> around = m_marks.elements_near(mesh, sweep);
-        candidates.insert(candidates.end(), around.begin(), around.end());
+        candidates = elements_met(sweep_index, blade);
     } else {
         incomplete = m_marks.incomplete();
     }
@@ -335,6 +378,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         if (far.split > 0) report.actions.push_back("split " + std::to_string(far.split) + " far crossings");
     }
     const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates, far_rules ? &swept : nullptr);
+    m_track->settle(mesh, m_marks, candidates);  // what the blade now lies in, for the next sweep
     if (!whole_sweep) {
         std::vector<ElementId> merged;
         std::set_union(incomplete.begin(), incomplete.end(), m_marks.incomplete().begin(), m_marks.incomplete().end(),
@@ -368,7 +412,9 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     std::vector<VertexId> touched;  // whose stars the degeneracy removal looks at
     if (m_options.snap) {
         for (const NodeToSnap& node : nodes) m_marks.extend_reach(longest_edge_around(mesh, m_marks, node.node));
+        m_track->watch_moves(false);  // the selection, and the track, see snapped nodes where they were
         SnapResult snapped = snap_nodes(mesh, nodes, m_marks.sweeps(), m_options.min_snap_aspect_ratio);
+        m_track->watch_moves(true);
         for (std::size_t i = 0; i < snapped.snapped.size(); ++i)
             m_marks.add_snapped(snapped.snapped[i], snapped.snapped_from[i]);
         m_last.nodes_snapped += snapped.snapped.size();

@@ -173,6 +173,9 @@ inline void expect_index_agrees(const SpatialIndex& index, std::mt19937_64& rng,
         const TriangleHits elements_only = index.elements_hit_by_triangle(x, y, z, TriangleHitsOf::elements);
         EXPECT_EQ(elements_only.elements, scanned.elements);
         EXPECT_TRUE(elements_only.boundary_faces.empty());
+        const TriangleHits faces_only = index.elements_hit_by_triangle(x, y, z, TriangleHitsOf::boundary_faces);
+        EXPECT_TRUE(faces_only.elements.empty());
+        EXPECT_EQ(faces_only.boundary_faces, faces);
         // the box spanned by x and y, against every element's vertices
         Point low{}, high{};
         for (std::size_t k = 0; k < 3; ++k) {

@@ -303,6 +303,9 @@ TEST(SpatialIndex, LongObliqueTrianglesMeetWhatAScanFinds) {
         const TriangleHits elements_only = index.elements_hit_by_triangle(a, b, c, TriangleHitsOf::elements);
         EXPECT_EQ(elements_only.elements, scanned.elements) << "triangle " << i;
         EXPECT_TRUE(elements_only.boundary_faces.empty()) << "triangle " << i;
+        const TriangleHits faces_only = index.elements_hit_by_triangle(a, b, c, TriangleHitsOf::boundary_faces);
+        EXPECT_TRUE(faces_only.elements.empty()) << "triangle " << i;
+        EXPECT_EQ(faces_only.boundary_faces, faces) << "triangle " << i;
     }
     EXPECT_TRUE(mesh.validate().ok());
 }

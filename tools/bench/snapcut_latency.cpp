@@ -6,11 +6,13 @@
 // several runs of the cut on fresh copies, and their ratio between the meshes - the peer is the
 // small femur, as a step must cost the same on a mesh 6 times larger.
 //
-//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=[reordered:]MESH.ele [NAME=...]
+//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=[index:][reordered:]MESH.ele [NAME=...]
 //
 // The first mesh is the peer of the others. `reordered:` renumbers a mesh as `sxk convert
 // --reorder` does (Cuthill-McKee vertices, elements by their lowest vertex) before it is cut:
-// TetGen's numbering against a cache-friendly one (docs/performance.md "snapcut").
+// TetGen's numbering against a cache-friendly one (docs/performance.md "snapcut"). `index:` cuts
+// it asking the spatial index along the whole blade every sweep (Options::follow_blade false)
+// instead of following the blade through the elements.
 // --substeps N replays each movement of the path as N movements (handle and tip interpolated
 // linearly); --rate HZ as many as a device sampling at HZ takes over the movement's time in the
 // path (--rate 1000: a haptic loop's steps). A step then moves the blade a fraction of an
@@ -62,7 +64,8 @@ struct Figures {
     double per_face = 0;  // ms of cutting steps per dissected face
 };
 
-Figures measure(const std::string& name, const Mesh& original, const std::vector<Scalpel>& path) {
+Figures measure(const std::string& name, const Mesh& original, const std::vector<Scalpel>& path,
+                const sxk::snapcut::Options& options) {
     Figures f;
     f.name = name;
     f.elements = original.element_count();
@@ -70,7 +73,8 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     for (int run = 0; run < runs; ++run) {
         Mesh mesh = original;
         const auto start = std::chrono::steady_clock::now();
-        auto session = sxk::snapcut::SnapCutSession::make(mesh, {}, {sxk::degeneracy::linked_in_service(), nullptr}).value();
+        auto session =
+            sxk::snapcut::SnapCutSession::make(mesh, options, {sxk::degeneracy::linked_in_service(), nullptr}).value();
         f.index_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::size_t dissected = 0;
         const std::size_t first = step.size();
@@ -136,7 +140,7 @@ void line(const std::string& name, const char* unit, double ours, double peer, c
 
 int main(int argc, char** argv) {
     const char* usage =
-        "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=[reordered:]MESH.ele [NAME=...]\n";
+        "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=[index:][reordered:]MESH.ele [NAME=...]\n";
     int first_mesh = 2;
     int substeps = 1;  // per movement
     double rate = 0;   // samples per second of the path's time column (0: by substeps)
@@ -176,12 +180,19 @@ int main(int argc, char** argv) {
             const auto equals = arg.find('=');
             const std::string name = arg.substr(0, equals);
             std::string file = arg.substr(equals + 1);
-            const bool reorder = file.starts_with("reordered:");
-            if (reorder) file = file.substr(std::string("reordered:").size());
-            std::fprintf(stderr, "snapcut_latency: reading %s%s\n", file.c_str(), reorder ? " (reordered)" : "");
+            const auto prefixed = [&file](const std::string& prefix) {
+                if (!file.starts_with(prefix)) return false;
+                file = file.substr(prefix.size());
+                return true;
+            };
+            sxk::snapcut::Options options;
+            options.follow_blade = !prefixed("index:");
+            const bool reorder = prefixed("reordered:");
+            std::fprintf(stderr, "snapcut_latency: reading %s%s%s\n", file.c_str(), reorder ? " (reordered)" : "",
+                         options.follow_blade ? "" : " (the index every sweep)");
             Mesh mesh = sxk::read_mesh(file);
             if (reorder) mesh = sxk::renumbered(mesh, sxk::cuthill_mckee_order(mesh));
-            all.push_back(measure(name, mesh, path));
+            all.push_back(measure(name, mesh, path, options));
         }
         const Figures& peer = all.front();
         for (const Figures& f : all) {

@@ -81,8 +81,9 @@ struct TriangleHits {
 };
 
 // What elements_hit_by_triangle looks for: a cutter that only selects among the elements skips
-// the boundary faces' tree (an eighth of the query's time on the femur's scalpel sweeps).
-enum class TriangleHitsOf { elements_and_boundary_faces, elements };
+// the boundary faces' tree (an eighth of the query's time on the femur's scalpel sweeps); one
+// that follows its blade through the elements asks only where the sweep meets the boundary.
+enum class TriangleHitsOf { elements_and_boundary_faces, elements, boundary_faces };
 
 // The point of the boundary nearest a query. barycentric[j] weighs face_simplex(face).vertex(j),
 // j < d (a boundary face has d vertices).
@@ -146,7 +147,8 @@ public:
     std::vector<ElementId> elements_crossed(const Point& a, const Point& b) const;
 
     // The elements whose closed simplex meets the closed triangle (a, b, c), and the boundary
-    // faces it meets (exactly; none with TriangleHitsOf::elements), sorted by id. A degenerate
+    // faces it meets (exactly; no faces with TriangleHitsOf::elements, no elements with
+    // TriangleHitsOf::boundary_faces), sorted by id. A degenerate
     // triangle (collinear corners) is the segment between its two farthest corners. Candidates:
     // the elements whose boxes meet the boxes of pieces of the triangle.
     TriangleHits elements_hit_by_triangle(const Point& a, const Point& b, const Point& c,

@@ -1,0 +1,89 @@
+// Following the blade: the elements a scalpel's blade lies in, kept from one sweep to the next
+// (docs/snapcut.md "Following the blade").
+//
+// The elements a segment meets change only where the segment passes over an edge of the mesh or
+// one of its ends passes through a face. So the elements a sweep from blade B to blade B' meets,
+// as the selection sees them (CutMarks::selection_position), are found without asking the
+// spatial index along the blade's whole length:
+//
+//        the elements B lies in (kept here)                    ─┐
+//        those the blade's ends pass through (two short        │ roots
+//          segment queries) and those behind the boundary      │
+//          faces the sweep meets (where it enters the mesh)    │
+//        those an edit made or changed, or whose corners moved, ─┘
+//          since, that the sweep meets (Watcher events)
+//        then, until nothing is added, the elements around every edge the sweep crosses
+//          (close_over_crossed_edges, face_selection.hpp)
+//
+// and of those, the ones B' lies in are kept for the next sweep. The elements with a corner the
+// cut snapped (seen where they were before the snap) are CutMarks::elements_near's, asked every
+// sweep. The index is asked along the whole blade only when there is nothing to follow: the
+// first movement, a movement that does not start where the last ended (a path of swept
+// triangles), after a step was taken back or refused, after the blade slid along itself, or
+// after more than a few hundred vertices moved (a simulation's frame). On the 1.2M femur at 1 kHz
+// the index's query was about a third of the selection's time (docs/performance.md "Following the
+// blade"). A round of the same sweep after the removal edited the mesh selects among what the
+// first round met (met()) and what the edits made.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "face_selection.hpp"
+#include "snap_cut.hpp"
+#include "sxk/locate.hpp"
+#include "sxk/watcher.hpp"
+
+namespace sxk::snapcut {
+
+class BladeTrack final : public Watcher {
+public:
+    explicit BladeTrack(Mesh& mesh);
+    ~BladeTrack() override;
+    BladeTrack(const BladeTrack&) = delete;
+    BladeTrack& operator=(const BladeTrack&) = delete;
+
+    // Whether the track holds the elements `blade` lies in.
+    bool follows(const Scalpel& blade) const;
+    // Forgets the blade: the next sweep asks the index.
+    void forget();
+    // Starts following at `blade` (settle then keeps those of the sweep's elements it lies in).
+    void start(const Scalpel& blade);
+    // The roots of a sweep that moves the blade from where it is followed (follows(from)) to
+    // `to`: see above (of the elements edits made, those the sweep meets). `to` is then the
+    // blade followed.
+    std::vector<ElementId> roots(const SpatialIndex& index, const CutMarks& marks, const Scalpel& from,
+                                 const Scalpel& to, const Sweep& sweep);
+    // The elements edits made or changed since the last roots that the sweep meets (a sweep's
+    // later rounds select among those and what they lead to).
+    std::vector<ElementId> take_fresh(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep);
+    // The elements the sweep met (its first round's, set_met returns them): a later round of the
+    // same sweep selects among them again, as a round over the whole sweep does.
+    const std::vector<ElementId>& met() const { return m_met; }
+    const std::vector<ElementId>& set_met(std::vector<ElementId> met) { return m_met = std::move(met); }
+    // Keeps the live elements of `searched` (what the round selected among) that the followed
+    // blade meets as the selection sees them.
+    void settle(const Mesh& mesh, const CutMarks& marks, std::span<const ElementId> searched);
+    // While false, moves of vertices are the cut's own snaps: the selection sees snapped nodes
+    // where they were, so nothing it follows moved.
+    void watch_moves(bool watch) { m_watch_moves = watch; }
+
+    // ---- Watcher ------------------------------------------------------------------------------
+    void init(const Mesh& mesh) override;
+    void element_added(const Mesh& mesh, ElementId element) override;
+    void element_changed(const Mesh& mesh, ElementId element, const Simplex& was) override;
+    void vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) override;
+
+private:
+    Mesh& m_mesh;
+    bool m_following = false;
+    bool m_watch_moves = true;
+    Scalpel m_blade;
+    std::vector<ElementId> m_inside;  // the elements the blade lies in (sorted; some may be dead)
+    std::vector<ElementId> m_fresh;   // made, changed or moved by edits since the last roots
+    std::vector<ElementId> m_met;     // what the last sweep met (set_met)
+};
+
+}  // namespace sxk::snapcut
