@@ -79,33 +79,34 @@ void gather(const detail::BoxTree<D>& boxes, const Point& a, const Point& b, con
     for (const auto& value : found) out.push_back(value.second);
 }
 
+// The members of `boxes` that `meets` (the exact test against the triangle), sorted: the
+// candidates are the members of the entries whose boxes meet pieces of the triangle.
+template <int D, class Id, class Meets>
+void members_meeting(const detail::BoxTree<D>& boxes, const Point& a, const Point& b, const Point& c, Meets meets,
+                     std::vector<Id>& out) {
+    std::vector<std::uint32_t> candidates;  // entry keys
+    gather<D>(boxes, a, b, c, 0, candidates);
+    detail::sort_unique(candidates);
+    for (const std::uint32_t candidate : candidates)
+        boxes.any_member(candidate, [&](Id id) {
+            if (meets(id)) out.push_back(id);
+            return false;
+        });
+    detail::sort_unique(out);
+}
+
 template <int D>
 TriangleHits hit_by(const SpatialIndex::Trees& trees, const Mesh& mesh, const Point& a, const Point& b,
                     const Point& c, Positions positions, TriangleHitsOf what) {
-    std::vector<std::uint32_t> candidates;  // entry keys
     TriangleHits hits;
-    if (what != TriangleHitsOf::boundary_faces) {
-        const auto& element_boxes = detail::element_tree<D>(trees);
-        gather<D>(element_boxes, a, b, c, 0, candidates);
-        detail::sort_unique(candidates);
-        for (const std::uint32_t candidate : candidates)
-            element_boxes.any_member(candidate, [&](ElementId t) {
-                if (triangle_meets_element(mesh, t, a, b, c, positions)) hits.elements.push_back(t);
-                return false;
-            });
-        detail::sort_unique(hits.elements);
-        if (what == TriangleHitsOf::elements) return hits;
-    }
-    candidates.clear();
-    const auto& face_boxes = detail::face_tree<D>(trees);
-    gather<D>(face_boxes, a, b, c, 0, candidates);
-    detail::sort_unique(candidates);
-    for (const std::uint32_t candidate : candidates)
-        face_boxes.any_member(candidate, [&](FaceId f) {
-            if (triangle_meets_face(mesh, f, a, b, c, positions)) hits.boundary_faces.push_back(f);
-            return false;
-        });
-    detail::sort_unique(hits.boundary_faces);
+    if (what != TriangleHitsOf::boundary_faces)
+        members_meeting<D, ElementId>(
+            detail::element_tree<D>(trees), a, b, c,
+            [&](ElementId t) { return triangle_meets_element(mesh, t, a, b, c, positions); }, hits.elements);
+    if (what != TriangleHitsOf::elements)
+        members_meeting<D, FaceId>(
+            detail::face_tree<D>(trees), a, b, c,
+            [&](FaceId f) { return triangle_meets_face(mesh, f, a, b, c, positions); }, hits.boundary_faces);
     return hits;
 }
 

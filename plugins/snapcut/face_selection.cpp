@@ -96,18 +96,20 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
                 farthest2 = std::max(farthest2, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                                                     (p[2] - q[2]) * (p[2] - q[2]));
             }
-            if (!(d2 <= farthest2 * margin)) continue;
-            // of the elements that may reach the sweep, those that do as the selection sees them
-            const Simplex& s = mesh.simplex(t);
-            if (triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, selection_position(mesh, s.vertex(0)),
-                                           selection_position(mesh, s.vertex(1)),
-                                           selection_position(mesh, s.vertex(2)),
-                                           selection_position(mesh, s.vertex(3))))
-                near.push_back(t);
+            if (d2 <= farthest2 * margin) near.push_back(t);
         }
     }
+    // of the elements that may reach the sweep, those that do as the selection sees them, each
+    // tested once (an element along the incision is in the stars of two or three snapped nodes)
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
+    std::erase_if(near, [&](ElementId t) {
+        const Simplex& s = mesh.simplex(t);
+        return !triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, selection_position(mesh, s.vertex(0)),
+                                           selection_position(mesh, s.vertex(1)),
+                                           selection_position(mesh, s.vertex(2)),
+                                           selection_position(mesh, s.vertex(3)));
+    });
     return near;
 }
 
@@ -183,6 +185,8 @@ std::vector<std::uint32_t> CutMarks::sweeps_meeting_box(const Point& low, const 
 
 void CutMarks::add_snapped(VertexId v, const Point& was) {
     if (!m_unsnapped.emplace(v, was).second) return;
+    if (v >= m_is_snapped.size()) m_is_snapped.resize(std::size_t{v} + 1, 0);
+    m_is_snapped[v] = 1;
     m_snapped_order.push_back(v);
     m_tree->tree.insert(SnappedTree::value(was, v));
 }
@@ -198,6 +202,7 @@ void CutMarks::restore(const Checkpoint& checkpoint) {
         m_mark_order.pop_back();
     }
     while (m_snapped_order.size() > checkpoint.snapped) {
+        m_is_snapped[m_snapped_order.back()] = 0;
         const auto found = m_unsnapped.find(m_snapped_order.back());
         m_tree->tree.remove(SnappedTree::value(found->second, found->first));
         m_unsnapped.erase(found);
