@@ -20,23 +20,13 @@ void sort_unique(std::vector<ElementId>& ids) {
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
 
-// Live element t meets the closed triangle (a, b, c) (collinear: the segment between its
-// farthest corners) as the selection sees the mesh.
-bool meets(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b, const Point& c) {
-    const Simplex& s = mesh.simplex(t);
-    return triangle_meets_tetrahedron(a, b, c, marks.selection_position(mesh, s.vertex(0)),
-                                      marks.selection_position(mesh, s.vertex(1)),
-                                      marks.selection_position(mesh, s.vertex(2)),
-                                      marks.selection_position(mesh, s.vertex(3)));
-}
-
 // Appends the live elements of `fresh` that the sweep meets (an edit far from the sweep makes
 // elements it must not select among) and empties it.
 void take_met(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep, std::vector<ElementId>& fresh,
               std::vector<ElementId>& out) {
     sort_unique(fresh);
     for (const ElementId t : fresh)
-        if (mesh.is_element(t) && meets(mesh, marks, t, sweep.a, sweep.b, sweep.c)) out.push_back(t);
+        if (mesh.is_element(t) && meets_as_selected(mesh, marks, t, sweep.a, sweep.b, sweep.c)) out.push_back(t);
     fresh.clear();
 }
 
@@ -91,7 +81,7 @@ void BladeTrack::settle(const Mesh& mesh, const CutMarks& marks, std::span<const
     if (!m_following) return;
     std::vector<ElementId> inside;
     for (const ElementId t : searched)
-        if (mesh.is_element(t) && meets(mesh, marks, t, m_blade.handle, m_blade.tip, m_blade.tip)) inside.push_back(t);
+        if (mesh.is_element(t) && meets_as_selected(mesh, marks, t, m_blade.handle, m_blade.tip, m_blade.tip)) inside.push_back(t);
     std::vector<ElementId> merged;
     merged.reserve(m_inside.size() + inside.size());
     std::set_union(m_inside.begin(), m_inside.end(), inside.begin(), inside.end(), std::back_inserter(merged));

@@ -76,9 +76,11 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     // triangle keeps those within reach, and of their stars the elements that reach as far
     // (816 elements searched per step on the 213k femur before, 403 after), each with a margin
     // for the rounding. Those are mostly the elements along the incision just cut, behind the
-    // blade: on the 1.2M femur at 1 kHz about 470 a sweep, of which the exact test keeps about 32
-    // (the sweep itself meets about 70 elements). Handed on untested they were most of what
-    // the selection searched (docs/performance.md "Following the blade").
+    // blade: on the 1.2M femur at 1 kHz about 470 a sweep, of which about 32 meet it (the sweep
+    // itself meets about 70 elements). They are handed on untested all the same: the "corners
+    // snapped elsewhere" rule completes some of those the sweep does not meet, and with only
+    // those that meet it, 2 random through cuts of the femur in 10 stayed joined across a face of
+    // three snapped corners (docs/performance.md "Following the blade").
     constexpr double margin = 1 + 1e-9;
     std::vector<ElementId> near, around;
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
@@ -99,17 +101,8 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
             if (d2 <= farthest2 * margin) near.push_back(t);
         }
     }
-    // of the elements that may reach the sweep, those that do as the selection sees them, each
-    // tested once (an element along the incision is in the stars of two or three snapped nodes)
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
-    std::erase_if(near, [&](ElementId t) {
-        const Simplex& s = mesh.simplex(t);
-        return !triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, selection_position(mesh, s.vertex(0)),
-                                           selection_position(mesh, s.vertex(1)),
-                                           selection_position(mesh, s.vertex(2)),
-                                           selection_position(mesh, s.vertex(3)));
-    });
     return near;
 }
 
@@ -231,6 +224,15 @@ VertexId nearer_end(const Mesh& mesh, const CutMarks& marks, VertexId u, VertexI
 }
 
 }  // namespace
+
+bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b,
+                       const Point& c) {
+    const Simplex& s = mesh.simplex(t);
+    return triangle_meets_tetrahedron(a, b, c, marks.selection_position(mesh, s.vertex(0)),
+                                      marks.selection_position(mesh, s.vertex(1)),
+                                      marks.selection_position(mesh, s.vertex(2)),
+                                      marks.selection_position(mesh, s.vertex(3)));
+}
 
 std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
                                                 std::span<const ElementId> roots) {

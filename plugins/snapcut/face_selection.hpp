@@ -159,11 +159,11 @@ public:
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
     // dissection is recorded with its original's).
     void add_snapped(VertexId v, const Point& was);
-    // Every element with a snapped corner that meets the sweep as the selection sees it
-    // (selection_position), sorted, each once: of the stars of the snapped nodes within the reach
+    // Every element with a snapped corner that may meet the sweep as the selection sees it
+    // (selection_position), sorted, each once: in the stars of the snapped nodes within the reach
     // of the sweep (the longest edge of such an element), the elements that reach from the node
     // as far as the sweep is (an element lies in the ball about any of its corners through its
-    // farthest corner), and of those the ones the exact test finds meeting it.
+    // farthest corner).
     std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep) const;
     // Makes the reach at least `length` (the longest edge around a node about to be snapped).
     void extend_reach(double length) { m_reach = std::max(m_reach, length); }
@@ -240,6 +240,11 @@ struct Selection {
     std::size_t edges_hit = 0;        // edges this sweep marked
     std::size_t elements_searched = 0;
 };
+
+// Live element t meets the closed triangle (a, b, c) (collinear corners: the segment between the
+// two farthest) as the selection sees the mesh (CutMarks::selection_position), exactly.
+bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b,
+                       const Point& c);
 
 // The live elements of `roots` and, until none is added, those around every edge of one of them
 // that the sweep crosses (as the selection sees the mesh, marked or not), sorted, each once. From
