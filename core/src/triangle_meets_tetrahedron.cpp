@@ -18,6 +18,7 @@
 // between them lies in the slice and leaves T), so an edge of T meets K: either a corner of T is
 // in K or the edge crosses a face of K. Conversely each of those is a common point.
 #include <array>
+#include <cmath>
 
 #include "cgal_kernel.hpp"
 #include "sxk/predicates.hpp"
@@ -78,6 +79,9 @@ bool beyond_an_edge(const std::array<Kernel::Point_3, 3>& t, const std::array<Ke
         const Kernel::Point_3& from = t[x];
         const Kernel::Point_3& to = t[(x + 1) % 3];
         const Kernel::Point_3 lifted = from + normal;
+        // corners so far apart that the normal overflows (fuzz/corpus/snapcut): no plane from it,
+        // and the exact signs must not see an infinite point
+        if (!std::isfinite(lifted.x()) || !std::isfinite(lifted.y()) || !std::isfinite(lifted.z())) return false;
         const int third = orientation_sign(from, to, lifted, t[(x + 2) % 3]);
         if (third == 0) continue;  // the lifted point fell on the edge's line or T's plane: no plane
         bool apart = true;
