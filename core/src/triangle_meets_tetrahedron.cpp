@@ -72,7 +72,8 @@ bool collinear_meets(const std::array<Kernel::Point_3, 3>& t, const std::array<K
 // moved along T's normal (in doubles): any plane through the edge will do, so the rounded point
 // takes nothing from the signs' exactness. The elements around the nodes a cut snapped lie along
 // the blade's sliver, mostly behind it, straddling its plane: here they are told apart by 5 to 15
-// signs instead of the 17 and more of the tests below (docs/performance.md "snapcut_latency").
+// signs instead of the 17 and more of the tests below (docs/performance.md "Following the
+// blade").
 bool beyond_an_edge(const std::array<Kernel::Point_3, 3>& t, const std::array<Kernel::Point_3, 4>& p) {
     const Kernel::Vector_3 normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
     for (std::size_t x = 0; x < 3; ++x) {

@@ -71,17 +71,18 @@ std::vector<ElementId> BladeTrack::roots(const SpatialIndex& index, const CutMar
     return roots;
 }
 
-std::vector<ElementId> BladeTrack::take_fresh(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep) {
-    std::vector<ElementId> met;
-    take_met(mesh, marks, sweep, m_fresh, met);
-    return met;
+std::vector<ElementId> BladeTrack::roots_again(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep) {
+    std::vector<ElementId> roots = m_met;
+    take_met(mesh, marks, sweep, m_fresh, roots);
+    return roots;
 }
 
-void BladeTrack::settle(const Mesh& mesh, const CutMarks& marks, std::span<const ElementId> searched) {
+void BladeTrack::settle(const Mesh& mesh, const CutMarks& marks) {
     if (!m_following) return;
     std::vector<ElementId> inside;
-    for (const ElementId t : searched)
-        if (mesh.is_element(t) && meets_as_selected(mesh, marks, t, m_blade.handle, m_blade.tip, m_blade.tip)) inside.push_back(t);
+    for (const ElementId t : m_met)
+        if (mesh.is_element(t) && meets_as_selected(mesh, marks, t, m_blade.handle, m_blade.tip, m_blade.tip))
+            inside.push_back(t);
     std::vector<ElementId> merged;
     merged.reserve(m_inside.size() + inside.size());
     std::set_union(m_inside.begin(), m_inside.end(), inside.begin(), inside.end(), std::back_inserter(merged));

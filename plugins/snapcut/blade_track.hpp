@@ -23,7 +23,7 @@
 // after more than a few hundred vertices moved (a simulation's frame). On the 1.2M femur at 1 kHz
 // the index's query was about a third of the selection's time (docs/performance.md "Following the
 // blade"). A round of the same sweep after the removal edited the mesh selects among what the
-// first round met (met()) and what the edits made.
+// first round met and what the edits made.
 #pragma once
 
 #include <cstddef>
@@ -56,16 +56,15 @@ public:
     // blade followed.
     std::vector<ElementId> roots(const SpatialIndex& index, const CutMarks& marks, const Scalpel& from,
                                  const Scalpel& to, const Sweep& sweep);
-    // The elements edits made or changed since the last roots that the sweep meets (a sweep's
-    // later rounds select among those and what they lead to).
-    std::vector<ElementId> take_fresh(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep);
-    // The elements the sweep met (its first round's, set_met returns them): a later round of the
-    // same sweep selects among them again, as a round over the whole sweep does.
-    const std::vector<ElementId>& met() const { return m_met; }
-    const std::vector<ElementId>& set_met(std::vector<ElementId> met) { return m_met = std::move(met); }
-    // Keeps the live elements of `searched` (what the round selected among) that the followed
-    // blade meets as the selection sees them.
-    void settle(const Mesh& mesh, const CutMarks& marks, std::span<const ElementId> searched);
+    // The roots of a later round of the sweep the last roots were for: what that sweep met
+    // (set_met), and the elements edits made or changed since that it meets (a round over the
+    // whole sweep again, after the removal edited the mesh).
+    std::vector<ElementId> roots_again(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep);
+    // What the sweep met, as the session found it.
+    void set_met(std::vector<ElementId> met) { m_met = std::move(met); }
+    // Keeps the live elements the sweep met (set_met) that the followed blade meets as the
+    // selection sees them.
+    void settle(const Mesh& mesh, const CutMarks& marks);
     // While false, moves of vertices are the cut's own snaps: the selection sees snapped nodes
     // where they were, so nothing it follows moved.
     void watch_moves(bool watch) { m_watch_moves = watch; }

@@ -327,28 +327,26 @@ std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, c
     // track closes over and keeps (testing the others' edges and membership cost 1.5 ms a step
     // on the 1.2M femur).
     const std::vector<ElementId> near = m_marks.elements_near(mesh, sweep);
-    std::vector<ElementId> met;  // what the sweep meets, for the track
     if (!m_options.follow_blade) blade = nullptr;
-    const bool follows_from = blade != nullptr && m_track->follows(blade->from);
-    if (follows_from || (blade != nullptr && m_track->follows(blade->to))) {
-        // the first round of a followed sweep, or a later round (the sweep again, the elements
-        // the last one's edits made among them)
-        std::vector<ElementId> roots;
-        if (follows_from) {
-            roots = m_track->roots(m_index, m_marks, blade->from, blade->to, sweep);
-        } else {
-            roots = m_track->take_fresh(mesh, m_marks, sweep);
-            roots.insert(roots.end(), m_track->met().begin(), m_track->met().end());
-        }
-        for (const ElementId t : near)
-            if (meets_as_selected(mesh, m_marks, t, sweep.a, sweep.b, sweep.c)) roots.push_back(t);
-        met = close_over_crossed_edges(mesh, m_marks, sweep, roots);
-    } else {
+    std::vector<ElementId> met;  // what the sweep meets, for the track
+    if (blade == nullptr) {
         met = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
-        if (blade != nullptr) {
+    } else {
+        for (const ElementId t : near)
+            if (meets_as_selected(mesh, m_marks, t, sweep.a, sweep.b, sweep.c)) met.push_back(t);
+        if (m_track->follows(blade->from) || m_track->follows(blade->to)) {
+            // the first round of a followed sweep, or a later round (the sweep again, and the
+            // elements the last one's edits made)
+            std::vector<ElementId> roots = m_track->follows(blade->from)
+                                               ? m_track->roots(m_index, m_marks, blade->from, blade->to, sweep)
+                                               : m_track->roots_again(mesh, m_marks, sweep);
+            roots.insert(roots.end(), met.begin(), met.end());
+            met = close_over_crossed_edges(mesh, m_marks, sweep, roots);
+        } else {
             m_track->start(blade->to);
-            for (const ElementId t : near)
-                if (meets_as_selected(mesh, m_marks, t, sweep.a, sweep.b, sweep.c)) met.push_back(t);
+            const std::vector<ElementId> hits =
+                m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
+            met.insert(met.end(), hits.begin(), hits.end());
             std::sort(met.begin(), met.end());
             met.erase(std::unique(met.begin(), met.end()), met.end());
         }
@@ -395,7 +393,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates, far_rules ? &swept : nullptr);
     // what the blade now lies in, for the next sweep, of what the sweep met (the elements the
     // far crossings' splits made come to the track as fresh ones)
-    if (whole_sweep) m_track->settle(mesh, m_marks, m_track->met());
+    if (whole_sweep) m_track->settle(mesh, m_marks);
     if (!whole_sweep) {
         std::vector<ElementId> merged;
         std::set_union(incomplete.begin(), incomplete.end(), m_marks.incomplete().begin(), m_marks.incomplete().end(),
