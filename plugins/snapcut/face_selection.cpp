@@ -77,11 +77,7 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     // (816 elements searched per step on the 213k femur before, 403 after), each with a margin
     // for the rounding. Those are mostly the elements along the incision just cut, behind the
     // blade: on the 1.2M femur at 1 kHz about 470 a sweep, of which about 32 meet it (the sweep
-    // itself meets about 70 elements). They are handed on untested all the same: the "corners
-    // snapped elsewhere" rule completes some of those the sweep does not meet, and with only
-    // those that meet it, two random through cuts of the femur (seeds 3408219504 and 220917740,
-    // cut 4 of 8 each) stayed joined across a face of three snapped corners (docs/performance.md
-    // "Following the blade").
+    // itself meets about 70 elements); the session keeps those (look_again covers the others).
     constexpr double margin = 1 + 1e-9;
     std::vector<ElementId> near, around;
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
@@ -186,7 +182,7 @@ void CutMarks::add_snapped(VertexId v, const Point& was) {
 }
 
 CutMarks::Checkpoint CutMarks::checkpoint() const {
-    return {m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), m_incomplete, m_pending};
+    return {m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), m_incomplete, m_pending, m_look_again};
 }
 
 void CutMarks::restore(const Checkpoint& checkpoint) {
@@ -208,6 +204,7 @@ void CutMarks::restore(const Checkpoint& checkpoint) {
     }
     m_incomplete = checkpoint.incomplete;
     m_pending = checkpoint.pending;
+    m_look_again = checkpoint.look_again;
 }
 
 namespace {

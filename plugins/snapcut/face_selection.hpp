@@ -57,7 +57,9 @@
 // spatial index (SpatialIndex::elements_hit_by_triangle: an R-tree query and an exact test each)
 // when there is nothing to follow. Every tetrahedron with an edge the sweep crosses is among
 // them, the incomplete ones it completes included (a tetrahedron gains a mark only through an
-// edge the sweep crosses), and nothing else is looked at. The incomplete tetrahedra are those of
+// edge the sweep crosses), and besides them only the elements whose count of corners on the cut
+// changed since the last selection: the "corners snapped elsewhere" rule may complete those
+// wherever the sweep is (CutMarks::pending and look_again). The incomplete tetrahedra are those of
 // the last sweep's candidates with one or two marked corners, kept for the report.
 #pragma once
 
@@ -150,6 +152,17 @@ public:
     const std::vector<ElementId>& pending() const { return m_pending; }
     std::vector<ElementId> take_pending() { return std::exchange(m_pending, {}); }
 
+    // Elements the "corners snapped elsewhere" rule (select_faces) may have completed wherever the
+    // sweep is: those around nodes snapped since the last selection and those edits made. A
+    // tetrahedron a sweep does not meet gains no mark from it, so the count of its corners on the
+    // cut changes only when a corner is snapped, a mark is carried over (pending) or the element
+    // is remade: the next selection looks at these once, and at no other element the sweep does
+    // not meet (take_look_again empties the list).
+    void look_again(std::span<const ElementId> elements) {
+        m_look_again.insert(m_look_again.end(), elements.begin(), elements.end());
+    }
+    std::vector<ElementId> take_look_again() { return std::exchange(m_look_again, {}); }
+
     // The last sweep's candidates with one or two marked corners (sorted).
     const std::vector<ElementId>& incomplete() const { return m_incomplete; }
     void set_incomplete(std::vector<ElementId> incomplete) { m_incomplete = std::move(incomplete); }
@@ -174,7 +187,7 @@ public:
 
     struct Checkpoint {
         std::size_t marks = 0, snapped = 0, sweeps = 0;
-        std::vector<ElementId> incomplete, pending;
+        std::vector<ElementId> incomplete, pending, look_again;
     };
     Checkpoint checkpoint() const;
     // Forgets everything added since `checkpoint` (which must be older than any later one used).
@@ -212,6 +225,7 @@ private:
     void settle_pending();
     std::vector<ElementId> m_incomplete;
     std::vector<ElementId> m_pending;
+    std::vector<ElementId> m_look_again;
 };
 
 // Where the blade has swept: the sweeps so far (those of `marks`) and the rest of the movement

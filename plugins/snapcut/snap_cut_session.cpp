@@ -321,42 +321,31 @@ std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, c
     const Sweep sweep = m_marks.sweeps()[sweep_index];
     // The selection sees snapped nodes where they were before the cut moved them, the index and
     // the track where they are: an element may meet the sweep only as the selection sees it, and
-    // then it has a snapped corner within reach of the sweep (CutMarks::elements_near). So those
-    // are candidates too, all of them (the "corners snapped elsewhere" rule completes some that
-    // the sweep does not meet, face_selection.cpp); of them, those the sweep meets are what the
-    // track closes over and keeps (testing the others' edges and membership cost 1.5 ms a step
-    // on the 1.2M femur).
-    const std::vector<ElementId> near = m_marks.elements_near(mesh, sweep);
+    // then it has a snapped corner within reach of the sweep (CutMarks::elements_near). Of those,
+    // the ones the sweep meets are candidates; the others the selection has looked at already
+    // when they last changed (CutMarks::look_again).
+    std::vector<ElementId> met;  // what the sweep meets
+    for (const ElementId t : m_marks.elements_near(mesh, sweep))
+        if (meets_as_selected(mesh, m_marks, t, sweep.a, sweep.b, sweep.c)) met.push_back(t);
     if (!m_options.follow_blade) blade = nullptr;
-    std::vector<ElementId> met;  // what the sweep meets, for the track
-    if (blade == nullptr) {
-        met = m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
+    if (blade != nullptr && (m_track->follows(blade->from) || m_track->follows(blade->to))) {
+        // the first round of a followed sweep, or a later round (the sweep again, and the
+        // elements the last one's edits made)
+        std::vector<ElementId> roots = m_track->follows(blade->from)
+                                           ? m_track->roots(m_index, m_marks, blade->from, blade->to, sweep)
+                                           : m_track->roots_again(mesh, m_marks, sweep);
+        roots.insert(roots.end(), met.begin(), met.end());
+        met = close_over_crossed_edges(mesh, m_marks, sweep, roots);
     } else {
-        for (const ElementId t : near)
-            if (meets_as_selected(mesh, m_marks, t, sweep.a, sweep.b, sweep.c)) met.push_back(t);
-        if (m_track->follows(blade->from) || m_track->follows(blade->to)) {
-            // the first round of a followed sweep, or a later round (the sweep again, and the
-            // elements the last one's edits made)
-            std::vector<ElementId> roots = m_track->follows(blade->from)
-                                               ? m_track->roots(m_index, m_marks, blade->from, blade->to, sweep)
-                                               : m_track->roots_again(mesh, m_marks, sweep);
-            roots.insert(roots.end(), met.begin(), met.end());
-            met = close_over_crossed_edges(mesh, m_marks, sweep, roots);
-        } else {
-            m_track->start(blade->to);
-            const std::vector<ElementId> hits =
-                m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
-            met.insert(met.end(), hits.begin(), hits.end());
-            std::sort(met.begin(), met.end());
-            met.erase(std::unique(met.begin(), met.end()), met.end());
-        }
+        if (blade != nullptr) m_track->start(blade->to);
+        const std::vector<ElementId> hits =
+            m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
+        met.insert(met.end(), hits.begin(), hits.end());
     }
-    std::vector<ElementId> candidates = met;
-    candidates.insert(candidates.end(), near.begin(), near.end());
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    if (blade != nullptr) m_track->set_met(std::move(met));
-    return candidates;
+    std::sort(met.begin(), met.end());
+    met.erase(std::unique(met.begin(), met.end()), met.end());
+    if (blade != nullptr) m_track->set_met(met);
+    return met;
 }
 
 Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead,
@@ -366,6 +355,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     // 1. select (§3.2.1) among the elements the sweep meets (face_selection.hpp: they include
     // every incomplete tetrahedron this sweep can complete)
     auto phase = Clock::now();
+    const std::size_t edited_at_start = elements_edited_in_step().size();
     std::vector<ElementId> candidates;
     std::vector<ElementId> incomplete;  // the sweep's, kept by a partial round
     if (whole_sweep) {
@@ -373,10 +363,12 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     } else {
         incomplete = m_marks.incomplete();
     }
-    // and the elements whose edges took marks over from the last round's edits (they may be
-    // complete now, wherever the sweep is)
+    // and the elements whose edges took marks over from the last round's edits, whose corners
+    // were snapped or that edits made (they may be complete now, wherever the sweep is)
     const std::vector<ElementId> pending = m_marks.take_pending();
     candidates.insert(candidates.end(), pending.begin(), pending.end());
+    const std::vector<ElementId> look_again = m_marks.take_look_again();
+    candidates.insert(candidates.end(), look_again.begin(), look_again.end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     // crossed edges whose nearer end is far from where the blade has swept get a node of their
@@ -525,6 +517,9 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     phase = Clock::now();
     const std::vector<ElementId> seeds = stars_of(mesh, touched);
     m_seeds.insert(m_seeds.end(), seeds.begin(), seeds.end());
+    // which the next selection looks at again, with what this round's edits made
+    m_marks.look_again(seeds);
+    m_marks.look_again(elements_edited_in_step().subspan(edited_at_start));
     for (const FaceId f : dissected->opened)
         if (mesh.is_face(f)) m_seeds.push_back(mesh.face_element(f));
     m_last.seconds_pieces += seconds_since(phase);
