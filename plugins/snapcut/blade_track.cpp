@@ -81,7 +81,7 @@ void BladeTrack::settle(const Mesh& mesh, const CutMarks& marks) {
     if (!m_following) return;
     std::vector<ElementId> inside;
     for (const ElementId t : m_met)
-        if (mesh.is_element(t) && meets_as_selected(mesh, marks, t, m_blade.handle, m_blade.tip, m_blade.tip))
+        if (mesh.is_element(t) && meets_as_selected(mesh, marks, t, m_blade.handle, m_blade.tip))
             inside.push_back(t);
     std::vector<ElementId> merged;
     merged.reserve(m_inside.size() + inside.size());

@@ -232,6 +232,14 @@ bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, con
                                       marks.selection_position(mesh, s.vertex(3)));
 }
 
+bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b) {
+    const Simplex& s = mesh.simplex(t);
+    return segment_meets_tetrahedron(a, b, marks.selection_position(mesh, s.vertex(0)),
+                                     marks.selection_position(mesh, s.vertex(1)),
+                                     marks.selection_position(mesh, s.vertex(2)),
+                                     marks.selection_position(mesh, s.vertex(3)));
+}
+
 std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
                                                 std::span<const ElementId> roots) {
     std::vector<ElementId> found;

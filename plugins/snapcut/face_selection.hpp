@@ -259,6 +259,8 @@ struct Selection {
 // two farthest) as the selection sees the mesh (CutMarks::selection_position), exactly.
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b,
                        const Point& c);
+// Live element t meets the closed segment [a, b] (a blade) as the selection sees the mesh, exactly.
+bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b);
 
 // The live elements of `roots` and, until none is added, those around every edge of one of them
 // that the sweep crosses (as the selection sees the mesh, marked or not), sorted, each once. From

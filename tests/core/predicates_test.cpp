@@ -153,5 +153,52 @@ TEST(Predicates, TriangleMeetsTetrahedronAgreesWithCgalOnDegenerateConfiguration
     EXPECT_LT(meeting, tetrahedra * 9 / 10);
 }
 
+TEST(Predicates, SegmentMeetsTetrahedronOnItsClosureAndDegenerateInputs) {
+    const Point p{0, 0, 0}, q{1, 0, 0}, r{0, 1, 0}, s{0, 0, 1};
+    EXPECT_TRUE(segment_meets_tetrahedron({0.2, 0.2, -1}, {0.2, 0.2, 3}, p, q, r, s));     // through it
+    EXPECT_TRUE(segment_meets_tetrahedron({0.1, 0.1, 0.1}, {5, 5, 5}, p, q, r, s));        // an end inside
+    EXPECT_TRUE(segment_meets_tetrahedron({1, 0, 0}, {2, 0, 0}, p, q, r, s));              // touches a corner
+    EXPECT_TRUE(segment_meets_tetrahedron({-1, 0, 0}, {2, 0, 0}, p, q, r, s));             // along an edge
+    EXPECT_TRUE(segment_meets_tetrahedron({-1, 0.5, 0}, {2, 0.5, 0}, p, q, r, s));         // across a face, in it
+    EXPECT_TRUE(segment_meets_tetrahedron({0.5, -1, 0.5}, {0.5, 1, 0.5}, p, q, r, s));     // through an edge
+    EXPECT_FALSE(segment_meets_tetrahedron({1, 1e-300, 0}, {2, 0, 0}, p, q, r, s));        // just misses it
+    EXPECT_FALSE(segment_meets_tetrahedron({0.6, 0.6, -1}, {0.6, 0.6, 3}, p, q, r, s));    // passes beside it
+    EXPECT_TRUE(segment_meets_tetrahedron({0.1, 0.1, 0.1}, {0.1, 0.1, 0.1}, p, q, r, s));  // a point inside
+    EXPECT_FALSE(segment_meets_tetrahedron({2, 2, 2}, {2, 2, 2}, p, q, r, s));             // a point outside
+    EXPECT_FALSE(segment_meets_tetrahedron({0.2, 0.2, -1}, {0.2, 0.2, 3}, p, q, r, {1, 1, 0}));  // flat
+}
+
+// segment_meets_tetrahedron against CGAL's do_intersect, on grid corners as above (nudged by a
+// unit in the last place now and then), points included.
+TEST(Predicates, SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    const std::uint64_t seed = test::seed_for("Predicates.SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations");
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<int> coordinate(-2, 2);
+    std::bernoulli_distribution nudge(0.1);
+    auto draw = [&] {
+        Point x{};
+        for (double& v : x) {
+            v = coordinate(rng);
+            if (nudge(rng)) v = std::nextafter(v, nudge(rng) ? 3.0 : -3.0);
+        }
+        return x;
+    };
+    auto cgal = [](const Point& x) { return K::Point_3(x[0], x[1], x[2]); };
+    int tetrahedra = 0, meeting = 0;
+    for (int round = 0; round < 200000; ++round) {
+        const Point a = draw(), b = draw(), p = draw(), q = draw(), r = draw(), s = draw();
+        if (orient3d(p, q, r, s) == Sign::zero) continue;  // CGAL's test needs a proper tetrahedron
+        const K::Tetrahedron_3 k(cgal(p), cgal(q), cgal(r), cgal(s));
+        const bool expected =
+            a == b ? !k.has_on_unbounded_side(cgal(a)) : CGAL::do_intersect(K::Segment_3(cgal(a), cgal(b)), k);
+        ASSERT_EQ(segment_meets_tetrahedron(a, b, p, q, r, s), expected) << "round " << round;
+        ++tetrahedra;
+        meeting += expected;
+    }
+    EXPECT_GT(meeting, tetrahedra / 10);
+    EXPECT_LT(meeting, tetrahedra * 9 / 10);
+}
+
 }  // namespace
 }  // namespace sxk

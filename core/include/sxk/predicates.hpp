@@ -54,6 +54,12 @@ SXK_API bool segment_meets_triangle(const Point& a, const Point& b, const Point&
 SXK_API bool triangle_meets_tetrahedron(const Point& a, const Point& b, const Point& c, const Point& p0,
                                         const Point& p1, const Point& p2, const Point& p3);
 
+// The closed segment [a, b] meets the closed tetrahedron (p0, p1, p2, p3), exactly, by orientation
+// signs: the elements a scalpel's blade lies in. a = b is a point; a flat tetrahedron meets
+// nothing (as in triangle_meets_tetrahedron).
+SXK_API bool segment_meets_tetrahedron(const Point& a, const Point& b, const Point& p0, const Point& p1,
+                                       const Point& p2, const Point& p3);
+
 // Exact orientation of element t in the chosen positions, taking the simplex sign into account:
 // positive means the element is correctly oriented (counter-clockwise triangle, positive
 // volume tetrahedron). Only defined when topological == ambient dimension; for triangle
