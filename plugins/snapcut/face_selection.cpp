@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 #include "sxk/locate.hpp"
 #include "sxk/predicates.hpp"
@@ -60,6 +61,68 @@ double squared_distance_to_sweep(const Sweep& sweep, const Point& p) {
 
 double distance_to_sweep(const Sweep& sweep, const Point& p) { return std::sqrt(squared_distance_to_sweep(sweep, p)); }
 
+namespace {
+
+// Planes that certainly part a tetrahedron from a sweep triangle, in doubles: the triangle's own
+// plane and, square to it, one through each edge with the third corner on the inner side. A
+// tetrahedron whose corners all lie beyond one of them by more than `margin` (a billionth of the
+// plane's scale, a million times the rounding of a dot product) is apart from the triangle; any
+// other goes on to the exact test (triangle_meets_tetrahedron, which tries the same planes with
+// exact signs). Most elements around the snapped nodes near a sweep lie behind its old blade:
+// told apart here by four dot products instead of up to twenty orientation signs.
+class SweepPlanes {
+public:
+    SweepPlanes(const Sweep& sweep, double reach) : m_origin{sweep.a, sweep.a, sweep.b, sweep.c} {
+        const Point& a = sweep.a;
+        const Point& b = sweep.b;
+        const Point& c = sweep.c;
+        const auto minus = [](const Point& x, const Point& y) { return Point{x[0] - y[0], x[1] - y[1], x[2] - y[2]}; };
+        const auto cross = [](const Point& x, const Point& y) {
+            return Point{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+        };
+        const Point normal = cross(minus(b, a), minus(c, a));
+        m_normal = {normal, cross(normal, minus(b, a)), cross(normal, minus(c, b)), cross(normal, minus(a, c))};
+        double extent = reach;
+        for (const Point* x : {&b, &c})
+            for (std::size_t k = 0; k < 3; ++k) extent = std::max(extent, std::abs((*x)[k] - a[k]) + reach);
+        for (std::size_t i = 0; i < 4; ++i) {
+            const Point& m = m_normal[i];
+            m_margin[i] = 1e-9 * (std::abs(m[0]) + std::abs(m[1]) + std::abs(m[2])) * 3 * extent;
+        }
+        // the edge planes' inner side holds the third corner (a, b and c turn counter-clockwise
+        // about the normal); a sweep so thin that rounding could put it outside (its angles near
+        // 1e-16) keeps no edge plane
+        const std::array<const Point*, 4> third{nullptr, &c, &a, &b};
+        for (std::size_t i = 1; i < 4; ++i)
+            if (!(height(i, *third[i]) > m_margin[i])) m_margin[i] = std::numeric_limits<double>::infinity();
+    }
+    // The tetrahedron with these corners lies certainly apart from the triangle.
+    bool apart(const std::array<Point, 4>& corners) const {
+        for (std::size_t i = 0; i < 4; ++i) {
+            int below = 0, above = 0;
+            for (const Point& x : corners) {
+                const double f = height(i, x);
+                below += f < -m_margin[i];
+                above += f > m_margin[i];
+            }
+            if (below == 4 || (i == 0 && above == 4)) return true;
+        }
+        return false;
+    }
+
+private:
+    double height(std::size_t i, const Point& x) const {
+        const Point& o = m_origin[i];
+        const Point& m = m_normal[i];
+        return m[0] * (x[0] - o[0]) + m[1] * (x[1] - o[1]) + m[2] * (x[2] - o[2]);
+    }
+    std::array<Point, 4> m_origin;  // a point of each plane
+    std::array<Point, 4> m_normal{};
+    std::array<double, 4> m_margin{};
+};
+
+}  // namespace
+
 CutMarks::CutMarks() : m_tree(std::make_unique<SnappedTree>()), m_sweep_tree(std::make_unique<SweepTree>()) {}
 CutMarks::~CutMarks() = default;
 
@@ -79,7 +142,9 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     // blade: on the 1.2M femur at 1 kHz about 470 a sweep, of which about 32 meet it (the sweep
     // itself meets about 70 elements); the session keeps those (look_again covers the others).
     constexpr double margin = 1 + 1e-9;
+    const SweepPlanes planes(sweep, m_reach);
     std::vector<ElementId> near, around;
+    std::array<Point, 4> corners{};
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
          it != m_tree->tree.qend(); ++it) {
         const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
@@ -90,12 +155,12 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
         collect_star(mesh, v, mesh.vertex_element(v), around);
         for (const ElementId t : around) {
             double farthest2 = 0;
-            for (const VertexId corner : mesh.simplex(t).vertices()) {
-                const Point& q = selection_position(mesh, corner);
+            for (std::size_t k = 0; k < 4; ++k) {
+                const Point& q = corners[k] = selection_position(mesh, mesh.simplex(t).vertex(static_cast<int>(k)));
                 farthest2 = std::max(farthest2, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                                                     (p[2] - q[2]) * (p[2] - q[2]));
             }
-            if (d2 <= farthest2 * margin) near.push_back(t);
+            if (d2 <= farthest2 * margin && !planes.apart(corners)) near.push_back(t);
         }
     }
     std::sort(near.begin(), near.end());

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <random>
 #include <set>
 
 #include "face_selection.hpp"
@@ -135,6 +137,57 @@ TEST(SnapCutCrumbs, ATetrahedronTheCutWouldCloseOffKeepsItsLowestFaceClosed) {
     EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 4), plane);
     // and a half is a crumb when crumbs may be that large: one face of the plane stays closed
     EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 24).size(), plane.size() - 1);
+}
+
+// CutMarks::elements_near hands the selection every element with a snapped corner that meets the
+// sweep as the selection sees it (where its snapped corners were), whatever else it leaves out:
+// its planes in doubles part only elements that are apart from the sweep. Random sweeps through a
+// 6 x 6 x 6 Kuhn cube whose nodes were snapped from random places up to a fifth of an edge away,
+// slivers as thin as a haptic step's among them, checked against the exact test of every element
+// around a snapped node.
+TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSweep) {
+    const std::uint64_t seed = seed_for("SnapCutMarks.ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSweep");
+    std::mt19937_64 random(seed);
+    const Mesh mesh = make_kuhn_cube(6).value();
+    CutMarks marks;
+    std::uniform_real_distribution<double> inside(0, 6), nudge(-0.2, 0.2), unit(-1, 1);
+    std::bernoulli_distribution snap(0.3);
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        if (!snap(random)) continue;
+        const Point& at = mesh.deformed(v);
+        marks.add_snapped(v, Point{at[0] + nudge(random), at[1] + nudge(random), at[2] + nudge(random)});
+    }
+    const auto distance = [](const Point& x, const Point& y) {
+        return std::sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]));
+    };
+    double reach = 0;  // the longest edge around a snapped node, as the selection sees it
+    for (const ElementId t : elements(mesh))
+        for (const VertexId u : mesh.simplex(t).vertices())
+            for (const VertexId w : mesh.simplex(t).vertices())
+                if (marks.snapped(u))
+                    reach = std::max(reach, distance(marks.selection_position(mesh, u), marks.selection_position(mesh, w)));
+    marks.extend_reach(reach);
+    std::size_t meeting = 0, handed = 0;
+    for (int round = 0; round < 300; ++round) {
+        const Point a{inside(random), inside(random), inside(random)};
+        const Point b{inside(random), inside(random), inside(random)};
+        const double width = std::pow(10.0, -3 * std::uniform_real_distribution<double>(0, 1)(random));
+        const Point c{b[0] + width * unit(random), b[1] + width * unit(random), b[2] + width * unit(random)};
+        const snapcut::Sweep sweep{a, b, c};
+        const std::vector<ElementId> near = marks.elements_near(mesh, sweep);
+        handed += near.size();
+        for (const ElementId t : elements(mesh)) {
+            const auto corners = mesh.simplex(t).vertices();
+            const bool snapped_corner =
+                std::any_of(corners.begin(), corners.end(), [&](VertexId v) { return marks.snapped(v); });
+            if (!snapped_corner || !snapcut::meets_as_selected(mesh, marks, t, a, b, c)) continue;
+            ++meeting;
+            ASSERT_TRUE(std::binary_search(near.begin(), near.end(), t))
+                << "element " << t << " meets sweep " << round << " but is not near it (seed " << seed << ")";
+        }
+    }
+    EXPECT_GT(meeting, 1000u);  // the sweeps do meet elements around snapped nodes
+    EXPECT_LT(handed, 3 * meeting) << "the planes part most of those that do not";
 }
 
 }  // namespace
