@@ -10,7 +10,9 @@
 // elements: those whose closed simplex meets it (elements_hit_by_triangle), their neighbours
 // across a face that it misses, and up to 200 others with a corner in its box (the kind of
 // candidate the index's boxes give). Timed: each test over each set, best of 5 passes; both
-// answers must agree pair by pair.
+// answers must agree pair by pair. Then the moved blade (a segment) against the first two sets:
+// segment_meets_tetrahedron against CGAL's do_intersect and against the collinear triangle the
+// snap cutter's blade track asked before.
 // stdout: JSON lines (CONTRIBUTING.md "Benchmarks"); stderr: a summary.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
@@ -186,9 +188,43 @@ int main(int argc, char** argv) {
                  "next to them, %.0f / %.0f in the boxes\n",
                  mesh.element_count(), sweeps, blade, move, tetrahedra.size(), misses.size(), boxes.size(),
                  ours_tet[0], peer_tet[0], ours_tet[1], peer_tet[1], ours_tet[2], peer_tet[2]);
+    // The moved blade (handle, moved) against the same elements: what the snap cutter's blade
+    // track asks of every element a sweep met (segment_meets_tetrahedron), against CGAL's test and
+    // against the collinear triangle (handle, moved, moved) the track asked before
+    auto ours_segment = [](const TetrahedronPair& p) {
+        return sxk::segment_meets_tetrahedron(p.triangle[0], p.triangle[2], p.corners[0], p.corners[1], p.corners[2],
+                                              p.corners[3]);
+    };
+    auto peer_segment = [](const TetrahedronPair& p) {
+        return CGAL::do_intersect(K::Segment_3(cgal(p.triangle[0]), cgal(p.triangle[2])),
+                                  K::Tetrahedron_3(cgal(p.corners[0]), cgal(p.corners[1]), cgal(p.corners[2]),
+                                                   cgal(p.corners[3])));
+    };
+    auto collinear_triangle = [](const TetrahedronPair& p) {
+        return sxk::triangle_meets_tetrahedron(p.triangle[0], p.triangle[2], p.triangle[2], p.corners[0], p.corners[1],
+                                               p.corners[2], p.corners[3]);
+    };
+    std::array<double, 2> ours_seg{}, peer_seg{}, collinear_seg{};
+    std::vector<char> collinear;
+    for (std::size_t k = 0; k < 2; ++k) {
+        ours_seg[k] = time_per_pair(*sets[k], ours_segment, ours);
+        peer_seg[k] = time_per_pair(*sets[k], peer_segment, peer);
+        collinear_seg[k] = time_per_pair(*sets[k], collinear_triangle, collinear);
+        if (ours != peer || collinear != peer) {
+            std::fprintf(stderr, "sweep_tests: segment/tetrahedron answers differ from CGAL's\n");
+            return 1;
+        }
+    }
+    std::fprintf(stderr,
+                 "sweep_tests: the moved blade, ns per test, ours / CGAL / a collinear triangle: %.0f / %.0f / %.0f "
+                 "on the elements meeting the slivers, %.0f / %.0f / %.0f next to them\n",
+                 ours_seg[0], peer_seg[0], collinear_seg[0], ours_seg[1], peer_seg[1], collinear_seg[1]);
     const char* tetrahedron_peer = "CGAL do_intersect(Triangle_3, Tetrahedron_3)";
     line("triangle meets tetrahedron (elements meeting a sliver)", ours_tet[0], peer_tet[0], tetrahedron_peer);
     line("triangle meets tetrahedron (their neighbours, missed)", ours_tet[1], peer_tet[1], tetrahedron_peer);
     line("triangle meets tetrahedron (in the sliver's box)", ours_tet[2], peer_tet[2], tetrahedron_peer);
+    const char* segment_peer = "CGAL do_intersect(Segment_3, Tetrahedron_3)";
+    line("segment meets tetrahedron (elements meeting a sliver)", ours_seg[0], peer_seg[0], segment_peer);
+    line("segment meets tetrahedron (their neighbours, missed)", ours_seg[1], peer_seg[1], segment_peer);
     return 0;
 }
