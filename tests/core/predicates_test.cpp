@@ -118,6 +118,26 @@ TEST(Predicates, TriangleMeetsTetrahedronOnItsClosureAndDegenerateInputs) {
     EXPECT_FALSE(triangle_meets_tetrahedron({-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}, p, q, r, {1, 1, 0}));  // flat
 }
 
+// Points of the small integer grid [-2, 2]^3, now and then nudged by a unit in the last place:
+// configurations drawn from it are degenerate somewhere more often than not.
+class GridPoints {
+public:
+    explicit GridPoints(std::uint64_t seed) : m_random(seed) {}
+    Point operator()() {
+        Point x{};
+        for (double& v : x) {
+            v = m_coordinate(m_random);
+            if (m_nudge(m_random)) v = std::nextafter(v, m_nudge(m_random) ? 3.0 : -3.0);
+        }
+        return x;
+    }
+
+private:
+    std::mt19937_64 m_random;
+    std::uniform_int_distribution<int> m_coordinate{-2, 2};
+    std::bernoulli_distribution m_nudge{0.1};
+};
+
 // triangle_meets_tetrahedron (orientation signs) against CGAL's do_intersect (the peer it
 // replaces), on corners drawn from a small integer grid, where most configurations are
 // degenerate somewhere (a corner in a face's plane, an edge in the triangle's plane, crossings
@@ -125,17 +145,7 @@ TEST(Predicates, TriangleMeetsTetrahedronOnItsClosureAndDegenerateInputs) {
 TEST(Predicates, TriangleMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     const std::uint64_t seed = test::seed_for("Predicates.TriangleMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations");
-    std::mt19937_64 rng(seed);
-    std::uniform_int_distribution<int> coordinate(-2, 2);
-    std::bernoulli_distribution nudge(0.1);
-    auto draw = [&] {
-        Point x{};
-        for (double& v : x) {
-            v = coordinate(rng);
-            if (nudge(rng)) v = std::nextafter(v, nudge(rng) ? 3.0 : -3.0);
-        }
-        return x;
-    };
+    GridPoints draw(seed);
     auto cgal = [](const Point& x) { return K::Point_3(x[0], x[1], x[2]); };
     int tetrahedra = 0, meeting = 0;
     for (int round = 0; round < 200000; ++round) {
@@ -173,17 +183,7 @@ TEST(Predicates, SegmentMeetsTetrahedronOnItsClosureAndDegenerateInputs) {
 TEST(Predicates, SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     const std::uint64_t seed = test::seed_for("Predicates.SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations");
-    std::mt19937_64 rng(seed);
-    std::uniform_int_distribution<int> coordinate(-2, 2);
-    std::bernoulli_distribution nudge(0.1);
-    auto draw = [&] {
-        Point x{};
-        for (double& v : x) {
-            v = coordinate(rng);
-            if (nudge(rng)) v = std::nextafter(v, nudge(rng) ? 3.0 : -3.0);
-        }
-        return x;
-    };
+    GridPoints draw(seed);
     auto cgal = [](const Point& x) { return K::Point_3(x[0], x[1], x[2]); };
     int tetrahedra = 0, meeting = 0;
     for (int round = 0; round < 200000; ++round) {
