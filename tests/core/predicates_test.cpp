@@ -182,7 +182,8 @@ TEST(Predicates, SegmentMeetsTetrahedronOnItsClosureAndDegenerateInputs) {
 // unit in the last place now and then), points included.
 TEST(Predicates, SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-    const std::uint64_t seed = test::seed_for("Predicates.SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations");
+    const std::uint64_t seed =
+        test::seed_for("Predicates.SegmentMeetsTetrahedronAgreesWithCgalOnDegenerateConfigurations");
     GridPoints draw(seed);
     auto cgal = [](const Point& x) { return K::Point_3(x[0], x[1], x[2]); };
     int tetrahedra = 0, meeting = 0;

@@ -165,7 +165,8 @@ TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSwe
         for (const VertexId u : mesh.simplex(t).vertices())
             for (const VertexId w : mesh.simplex(t).vertices())
                 if (marks.snapped(u))
-                    reach = std::max(reach, distance(marks.selection_position(mesh, u), marks.selection_position(mesh, w)));
+                    reach = std::max(reach, distance(marks.selection_position(mesh, u),
+                                                     marks.selection_position(mesh, w)));
     marks.extend_reach(reach);
     std::size_t meeting = 0, handed = 0;
     for (int round = 0; round < 300; ++round) {

@@ -345,11 +345,8 @@ TEST(SnapCutFemur, TheShaftCutAtAHapticRateSeparatesTheStaticFemur) {
     EXPECT_EQ(cut.pieces, 2u) << cut.bridge;
 }
 
-// Through cuts of the shaft at other heights, tilts and directions, each sampled at another rate:
-// the recorded path turned about the bone's axis by up to 15 degrees, raised or lowered by up to
-// 0.15 (a sixth of the bone) and tilted by up to 0.2, each movement in 1 to 50 steps. Every cut
-// must leave the static femur in exactly two pieces (before the selection completed tetrahedra
-// from the corners already on the cut, 9 of 20 such cuts left it in one).
+// A through cut of the shaft: two pieces, one of them loose, every corner of the cut within what
+// the steps reported.
 void expect_separated(const ShaftCut& how, const StaticCut& cut, const std::string& which) {
     std::printf("[ femur    ] %s: turned %.1f degrees, raised %.3f, tilted %.2f, %d steps a movement: %zu faces "
                 "dissected, %zu pieces, farthest corner %.3g (reported %.3g)\n",
@@ -361,6 +358,11 @@ void expect_separated(const ShaftCut& how, const StaticCut& cut, const std::stri
                                                     << ": a corner of the cut farther than any step reported";
 }
 
+// Through cuts of the shaft at other heights, tilts and directions, each sampled at another rate:
+// the recorded path turned about the bone's axis by up to 15 degrees, raised or lowered by up to
+// 0.15 (a sixth of the bone) and tilted by up to 0.2, each movement in 1 to 50 steps. Every cut
+// must leave the static femur in exactly two pieces (before the selection completed tetrahedra
+// from the corners already on the cut, 9 of 20 such cuts left it in one).
 TEST(SnapCutFemur, RandomThroughCutsOfTheShaftSeparateItAtAnyRate) {
     const std::uint64_t seed = seed_for("SnapCutFemur.RandomThroughCutsOfTheShaftSeparateItAtAnyRate");
     std::mt19937_64 random(seed);
@@ -371,7 +373,8 @@ TEST(SnapCutFemur, RandomThroughCutsOfTheShaftSeparateItAtAnyRate) {
         how.raise = std::uniform_real_distribution<double>(-0.15, 0.15)(random);
         how.tilt = std::uniform_real_distribution<double>(-0.2, 0.2)(random);
         how.steps = rates[std::uniform_int_distribution<std::size_t>(0, rates.size() - 1)(random)];
-        expect_separated(how, cut_the_static_femur(how), "seed " + std::to_string(seed) + ", cut " + std::to_string(cut));
+        const std::string which = "seed " + std::to_string(seed) + ", cut " + std::to_string(cut);
+        expect_separated(how, cut_the_static_femur(how), which);
     }
 }
 
