@@ -21,10 +21,9 @@
 // whole blade only when there is nothing to follow: the first movement, a movement that does not
 // start where the last ended (a path of swept triangles), after a step was taken back or
 // refused, after the blade slid along itself, or after more than a few hundred vertices moved (a
-// simulation's frame). On the 1.2M femur at 1 kHz
-// the index's query was about a third of the selection's time (docs/performance.md "Following the
-// blade"). A round of the same sweep after the removal edited the mesh selects among what the
-// first round met and what the edits made.
+// simulation's frame). On the 1.2M femur at 1 kHz the index's query was about a third of the
+// selection's time (docs/performance.md "Following the blade"). A round of the same sweep after
+// the removal edited the mesh selects among what the first round met and what the edits made.
 #pragma once
 
 #include <cstddef>

@@ -140,11 +140,12 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     // (816 elements searched per step on the 213k femur before, 403 after), each with a margin
     // for the rounding. Those are mostly the elements along the incision just cut, behind the
     // blade: on the 1.2M femur at 1 kHz about 470 a sweep, of which about 32 meet it (the sweep
-    // itself meets about 70 elements); the session keeps those (look_again covers the others).
+    // itself meets about 70 elements): the planes part most of the others, the exact test the
+    // rest (the selection looks at those it does not meet only when they change:
+    // CutMarks::look_again).
     constexpr double margin = 1 + 1e-9;
     const SweepPlanes planes(sweep, m_reach);
     std::vector<ElementId> near, around;
-    std::array<Point, 4> corners{};
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
          it != m_tree->tree.qend(); ++it) {
         const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
@@ -154,17 +155,21 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
         around.clear();
         collect_star(mesh, v, mesh.vertex_element(v), around);
         for (const ElementId t : around) {
+            const std::array<Point, 4> corners = selection_corners(mesh, t);
             double farthest2 = 0;
-            for (std::size_t k = 0; k < 4; ++k) {
-                const Point& q = corners[k] = selection_position(mesh, mesh.simplex(t).vertex(static_cast<int>(k)));
+            for (const Point& q : corners)
                 farthest2 = std::max(farthest2, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                                                     (p[2] - q[2]) * (p[2] - q[2]));
-            }
             if (d2 <= farthest2 * margin && !planes.apart(corners)) near.push_back(t);
         }
     }
+    // an element with several snapped corners is in several stars: tested once
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
+    std::erase_if(near, [&](ElementId t) {
+        const std::array<Point, 4> corners = selection_corners(mesh, t);
+        return !triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, corners[0], corners[1], corners[2], corners[3]);
+    });
     return near;
 }
 
@@ -290,19 +295,13 @@ VertexId nearer_end(const Mesh& mesh, const CutMarks& marks, VertexId u, VertexI
 
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b,
                        const Point& c) {
-    const Simplex& s = mesh.simplex(t);
-    return triangle_meets_tetrahedron(a, b, c, marks.selection_position(mesh, s.vertex(0)),
-                                      marks.selection_position(mesh, s.vertex(1)),
-                                      marks.selection_position(mesh, s.vertex(2)),
-                                      marks.selection_position(mesh, s.vertex(3)));
+    const std::array<Point, 4> p = marks.selection_corners(mesh, t);
+    return triangle_meets_tetrahedron(a, b, c, p[0], p[1], p[2], p[3]);
 }
 
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b) {
-    const Simplex& s = mesh.simplex(t);
-    return segment_meets_tetrahedron(a, b, marks.selection_position(mesh, s.vertex(0)),
-                                     marks.selection_position(mesh, s.vertex(1)),
-                                     marks.selection_position(mesh, s.vertex(2)),
-                                     marks.selection_position(mesh, s.vertex(3)));
+    const std::array<Point, 4> p = marks.selection_corners(mesh, t);
+    return segment_meets_tetrahedron(a, b, p[0], p[1], p[2], p[3]);
 }
 
 std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,

@@ -65,6 +65,7 @@
 
 #include <cstddef>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -172,17 +173,23 @@ public:
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
     // dissection is recorded with its original's).
     void add_snapped(VertexId v, const Point& was);
-    // Every element with a snapped corner that may meet the sweep as the selection sees it
+    // Every element with a snapped corner that meets the sweep as the selection sees it
     // (selection_position), sorted, each once: in the stars of the snapped nodes within the reach
     // of the sweep (the longest edge of such an element), the elements that reach from the node
     // as far as the sweep is (an element lies in the ball about any of its corners through its
-    // farthest corner).
+    // farthest corner), not parted from it by its planes in doubles, and met in the exact test.
     std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep) const;
     // Makes the reach at least `length` (the longest edge around a node about to be snapped).
     void extend_reach(double length) { m_reach = std::max(m_reach, length); }
     // Where the selection sees v: where it was before this cut snapped it, else where it is.
     const Point& selection_position(const Mesh& mesh, VertexId v) const {
         return snapped(v) ? m_unsnapped.find(v)->second : mesh.deformed(v);
+    }
+    // The corners of element t where the selection sees them.
+    std::array<Point, 4> selection_corners(const Mesh& mesh, ElementId t) const {
+        const Simplex& s = mesh.simplex(t);
+        return {selection_position(mesh, s.vertex(0)), selection_position(mesh, s.vertex(1)),
+                selection_position(mesh, s.vertex(2)), selection_position(mesh, s.vertex(3))};
     }
 
     struct Checkpoint {

@@ -321,12 +321,9 @@ std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, c
     const Sweep sweep = m_marks.sweeps()[sweep_index];
     // The selection sees snapped nodes where they were before the cut moved them, the index and
     // the track where they are: an element may meet the sweep only as the selection sees it, and
-    // then it has a snapped corner within reach of the sweep (CutMarks::elements_near). Of those,
-    // the ones the sweep meets are candidates; the others the selection has looked at already
-    // when they last changed (CutMarks::look_again).
-    std::vector<ElementId> met;  // what the sweep meets
-    for (const ElementId t : m_marks.elements_near(mesh, sweep))
-        if (meets_as_selected(mesh, m_marks, t, sweep.a, sweep.b, sweep.c)) met.push_back(t);
+    // then it has a snapped corner within reach of the sweep (CutMarks::elements_near: those the
+    // sweep meets; the selection looks at the others when they change, CutMarks::look_again).
+    std::vector<ElementId> met = m_marks.elements_near(mesh, sweep);  // what the sweep meets
     if (!m_options.follow_blade) blade = nullptr;
     if (blade != nullptr && (m_track->follows(blade->from) || m_track->follows(blade->to))) {
         // the first round of a followed sweep, or a later round (the sweep again, and the
