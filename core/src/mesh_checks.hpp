@@ -79,8 +79,20 @@ namespace sxk {
 // (every hull face is reused), and the new elements around each touched vertex are
 // face-connected among themselves, so every path through star(v) across the old elements can be
 // rerouted across the new ones: that gives (b).
+//
+// `change` is change_elements on the same terms. Dissection (ops/dissect.cpp) proves both. (a)
+// Every element it changes gets a copy of a split vertex, a vertex in no element before, so no
+// changed element and no face holding a copy exists in an element that stays; a face without a
+// copy keeps the vertices and orientation it had, and a valid mesh has it only there. (b) Two
+// elements sharing a face that is not cut are in the same (x, C)-class of every vertex x of that
+// face, so both get the same substitute for each of its vertices and stay mates: the classes,
+// the new stars, are face-connected by construction, and the star of a vertex outside the cut
+// (none of its faces is cut) keeps every adjacency it had.
 class ProvenEdit {
 public:
+    static Outcome<Done> change(Mesh& mesh, std::span<const ElementSubstitution> substitution) {
+        return mesh.change_elements(substitution, Mesh::StarChecksProof{});
+    }
     static Outcome<std::vector<ElementId>> replace(Mesh& mesh, std::span<const ElementId> old_elements,
                                                    std::span<const Simplex> new_simplexes,
                                                    std::span<const int> labels,

@@ -387,6 +387,9 @@ public:
     // have the same vertices, a resulting face would exist twice with the same orientation, or
     // the star of a vertex would no longer be face-connected.
     Outcome<Done> change_elements(std::span<const ElementSubstitution> substitution);
+    // The same without the checks that walk vertex stars, for an operation that proved them
+    // (dissection: ProvenEdit::change, core/src/mesh_checks.hpp).
+    Outcome<Done> change_elements(std::span<const ElementSubstitution> substitution, StarChecksProof proof);
 
     // ---- checking -----------------------------------------------------------------------------
     // Checks invariants 7.1-7.5, that no element or face is represented twice, vertex anchors,
@@ -442,6 +445,8 @@ private:
     };
     friend class EditJournal;
     friend class detail::UndoLog;
+    // change_elements' body; proven == true skips the star walks, as for replace_elements_impl.
+    Outcome<Done> change_elements_impl(std::span<const ElementSubstitution> substitution, bool proven);
     // replace_elements' body. proven == true skips the checks that walk vertex stars (a new
     // face or element already in an element that stays, invariant 7.4; pinched stars): only
     // with a StarChecksProof.

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "mesh_checks.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk {
@@ -156,7 +157,8 @@ Outcome<DissectResult> dissect(Mesh& mesh, std::span<const Simplex> cut_faces, c
         const std::array<double, 1> whole{1.0};
         (void)mesh.add_interpolated_vertex(parent, whole);  // original < vertex_count(): cannot refuse
     }
-    auto changed = mesh.change_elements(changes);
+    // the star walks of change_elements are proven (mesh_checks.hpp, ProvenEdit)
+    auto changed = ProvenEdit::change(mesh, changes);
     if (!changed.ok()) {
         // cannot happen on a valid mesh (see the header); the copies are in no element yet
         for (std::size_t i = 0; i < result.new_vertices.size(); ++i) (void)mesh.remove_last_vertex();
