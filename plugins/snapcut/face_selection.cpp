@@ -63,6 +63,16 @@ double distance_to_sweep(const Sweep& sweep, const Point& p) { return std::sqrt(
 
 namespace {
 
+// The squared distance from p to the farthest of `corners`: an element lies in the ball about p
+// through its farthest corner when p is one of its corners.
+double squared_farthest_corner(const std::array<Point, 4>& corners, const Point& p) {
+    double farthest2 = 0;
+    for (const Point& q : corners)
+        farthest2 = std::max(farthest2, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                            (p[2] - q[2]) * (p[2] - q[2]));
+    return farthest2;
+}
+
 // Planes that certainly part a tetrahedron from a sweep triangle, in doubles: the triangle's own
 // plane and, square to it, one through each edge with the third corner on the inner side. A
 // tetrahedron whose corners all lie beyond one of them by more than `margin` (a billionth of the
@@ -136,9 +146,10 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
                   std::max({sweep.a[2], sweep.b[2], sweep.c[2]}) + m_reach);
     // The box around the sweep holds the snapped nodes of a slab as tall as the blade is tilted
     // (the whole incision's rim on the femur, docs/performance.md "snapcut"); the distance to the
-    // triangle keeps those within reach, and of their stars the elements that reach as far
-    // (816 elements searched per step on the 213k femur before, 403 after), each with a margin
-    // for the rounding. Those are mostly the elements along the incision just cut, behind the
+    // triangle keeps those whose stars reach as far (their own radius: about half of the nodes the
+    // largest radius would keep on the 1.2M femur), and of their stars the elements that reach as
+    // far (816 elements searched per step on the 213k femur before, 403 after), each with a
+    // margin for the rounding. Those are mostly the elements along the incision just cut, behind the
     // blade: on the 1.2M femur at 1 kHz about 470 a sweep, of which about 32 meet it (the sweep
     // itself meets about 70 elements): the planes part most of the others, the exact test the
     // rest (the selection looks at those it does not meet only when they change:
@@ -149,18 +160,14 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     for (auto it = m_tree->tree.qbegin(bgi::intersects(bg::model::box<Position>(low, high)));
          it != m_tree->tree.qend(); ++it) {
         const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
-        const double d2 = squared_distance_to_sweep(sweep, p);
-        if (!(d2 <= m_reach * m_reach * margin)) continue;
         const VertexId v = it->second;
+        const double d2 = squared_distance_to_sweep(sweep, p);
+        if (!(d2 <= m_radius[v] * m_radius[v] * margin)) continue;  // add_snapped sized m_radius
         around.clear();
         collect_star(mesh, v, mesh.vertex_element(v), around);
         for (const ElementId t : around) {
             const std::array<Point, 4> corners = selection_corners(mesh, t);
-            double farthest2 = 0;
-            for (const Point& q : corners)
-                farthest2 = std::max(farthest2, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                                                    (p[2] - q[2]) * (p[2] - q[2]));
-            if (d2 <= farthest2 * margin && !planes.apart(corners)) near.push_back(t);
+            if (d2 <= squared_farthest_corner(corners, p) * margin && !planes.apart(corners)) near.push_back(t);
         }
     }
     // an element with several snapped corners is in several stars: tested once
@@ -243,12 +250,43 @@ std::vector<std::uint32_t> CutMarks::sweeps_meeting_box(const Point& low, const 
     return found;
 }
 
-void CutMarks::add_snapped(VertexId v, const Point& was) {
+void CutMarks::widen(VertexId v, double radius) {
+    if (v >= m_radius.size()) m_radius.resize(std::size_t{v} + 1, 0.0);
+    m_radius[v] = std::max(m_radius[v], radius);
+    m_reach = std::max(m_reach, radius);
+}
+
+void CutMarks::cover_star(const Mesh& mesh, VertexId v) {
+    std::vector<ElementId> around;
+    collect_star(mesh, v, mesh.vertex_element(v), around);
+    double radius = 0;
+    for (const ElementId t : around)
+        radius = std::max(radius, std::sqrt(squared_farthest_corner(selection_corners(mesh, t), selection_position(mesh, v))));
+    widen(v, radius);
+}
+
+void CutMarks::cover_elements(const Mesh& mesh, std::span<const ElementId> elements) {
+    for (const ElementId t : elements) {
+        if (!mesh.is_element(t)) continue;
+        const std::array<Point, 4> corners = selection_corners(mesh, t);
+        for (int i = 0; i < 4; ++i)
+            if (const VertexId v = mesh.simplex(t).vertex(i); snapped(v))
+                widen(v, std::sqrt(squared_farthest_corner(corners, corners[static_cast<std::size_t>(i)])));
+    }
+}
+
+void CutMarks::cover_all(const Mesh& mesh) {
+    for (const VertexId v : m_snapped_order)
+        if (mesh.vertex_element(v) != invalid_id) cover_star(mesh, v);
+}
+
+void CutMarks::add_snapped(const Mesh& mesh, VertexId v, const Point& was) {
     if (!m_unsnapped.emplace(v, was).second) return;
     if (v >= m_is_snapped.size()) m_is_snapped.resize(std::size_t{v} + 1, 0);
     m_is_snapped[v] = 1;
     m_snapped_order.push_back(v);
     m_tree->tree.insert(SnappedTree::value(was, v));
+    cover_star(mesh, v);
 }
 
 CutMarks::Checkpoint CutMarks::checkpoint() const {

@@ -171,16 +171,23 @@ public:
     // Nodes moved onto the sweep once already: they stay where the cut put them.
     bool snapped(VertexId v) const { return v < m_is_snapped.size() && m_is_snapped[v] != 0; }
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
-    // dissection is recorded with its original's).
-    void add_snapped(VertexId v, const Point& was);
+    // dissection is recorded with its original's), and covers its star (radius).
+    void add_snapped(const Mesh& mesh, VertexId v, const Point& was);
     // Every element with a snapped corner that meets the sweep as the selection sees it
-    // (selection_position), sorted, each once: in the stars of the snapped nodes within the reach
-    // of the sweep (the longest edge of such an element), the elements that reach from the node
-    // as far as the sweep is (an element lies in the ball about any of its corners through its
-    // farthest corner), not parted from it by its planes in doubles, and met in the exact test.
+    // (selection_position), sorted, each once: in the stars of the snapped nodes whose own reach
+    // (radius) comes as near as the sweep, the elements that reach from the node as far as the
+    // sweep is (an element lies in the ball about any of its corners through its farthest
+    // corner), not parted from it by its planes in doubles, and met in the exact test.
     std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep) const;
-    // Makes the reach at least `length` (the longest edge around a node about to be snapped).
-    void extend_reach(double length) { m_reach = std::max(m_reach, length); }
+    // How far a snapped node's star reaches from the node, as the selection sees both; it only
+    // grows, and must grow whenever the star comes to reach farther (elements_near misses the
+    // star otherwise): widened to the whole star when the node is snapped (add_snapped), to the
+    // elements each edit makes or changes (cover_elements), to every star when the simulation
+    // moves the nodes (cover_all).
+    double radius(VertexId v) const { return v < m_radius.size() ? m_radius[v] : 0.0; }
+    void cover_star(const Mesh& mesh, VertexId v);
+    void cover_elements(const Mesh& mesh, std::span<const ElementId> elements);
+    void cover_all(const Mesh& mesh);
     // Where the selection sees v: where it was before this cut snapped it, else where it is.
     const Point& selection_position(const Mesh& mesh, VertexId v) const {
         return snapped(v) ? m_unsnapped.find(v)->second : mesh.deformed(v);
@@ -215,7 +222,9 @@ private:
     std::vector<VertexId> m_snapped_order;
     struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)
     std::unique_ptr<SnappedTree> m_tree;
-    double m_reach = 0;  // only grows: a larger reach finds more candidates, never fewer
+    std::vector<double> m_radius;  // per vertex id, radius(v)
+    double m_reach = 0;            // the largest radius: how far from the sweep the tree is asked
+    void widen(VertexId v, double radius);
     std::vector<Sweep> m_sweeps;
     struct SweepTree;  // the sweeps by their boxes (Boost.Geometry rtree)
     std::unique_ptr<SweepTree> m_sweep_tree;

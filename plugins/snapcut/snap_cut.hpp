@@ -173,6 +173,7 @@ struct CutServices {
 };
 
 class BladeTrack;  // blade_track.hpp
+class MovedNodes;  // moved_nodes.hpp
 
 // A sweep's blade before and after it (the movement's: the tip moves, then the handle).
 struct BladeMove {
@@ -242,6 +243,7 @@ private:
     CutServices m_services;
     SpatialIndex m_index;  // deformed positions: where the scalpel meets the mesh
     std::unique_ptr<BladeTrack> m_track;  // the elements the blade lies in
+    std::unique_ptr<MovedNodes> m_moves;  // moved since the selection last looked (CutMarks::radius)
     double m_element_volume = 0;  // the mean element volume when the session began (reference)
     double m_split_beyond = 0;    // Options::split_beyond in lengths (0: never split)
     CutMarks m_marks;

@@ -9,6 +9,7 @@
 #include "degeneracy_service.hpp"
 #include "elasticity_service.hpp"
 #include "loose_pieces.hpp"
+#include "moved_nodes.hpp"
 #include "node_snapping.hpp"
 #include "snap_cut.hpp"
 #include "split_far_crossings.hpp"
@@ -60,19 +61,6 @@ std::vector<Simplex> labelled_faces_around(const Mesh& mesh, std::span<const Sim
     std::sort(cut.begin(), cut.end());
     cut.erase(std::unique(cut.begin(), cut.end()), cut.end());
     return cut;
-}
-
-// The longest edge, as the selection sees it, of the elements around v.
-double longest_edge_around(const Mesh& mesh, const CutMarks& marks, VertexId v) {
-    double longest = 0;
-    for (const ElementId t : star(mesh, v)) {
-        const Simplex s = mesh.simplex(t);
-        for (int i = 0; i < 4; ++i)
-            for (int j = i + 1; j < 4; ++j)
-                longest = std::max(longest, length(marks.selection_position(mesh, s.vertex(i)),
-                                                   marks.selection_position(mesh, s.vertex(j))));
-    }
-    return longest;
 }
 
 // The mean length of the edges at v, deformed positions: the mesh's size where v is.
@@ -194,6 +182,7 @@ SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServ
       m_services(services),
       m_index(mesh, Positions::deformed),
       m_track(std::make_unique<BladeTrack>(mesh)),
+      m_moves(std::make_unique<MovedNodes>(mesh)),
       m_element_volume(mean_element_volume(mesh, Positions::reference)),
       m_split_beyond(options.split_beyond > 0
                          ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
@@ -352,6 +341,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     // 1. select (§3.2.1) among the elements the sweep meets (face_selection.hpp: they include
     // every incomplete tetrahedron this sweep can complete)
     auto phase = Clock::now();
+    m_moves->cover(mesh, m_marks);
     const std::size_t edited_at_start = elements_edited_in_step().size();
     std::vector<ElementId> candidates;
     std::vector<ElementId> incomplete;  // the sweep's, kept by a partial round
@@ -415,12 +405,11 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
                 nodes.end());
     std::vector<VertexId> touched;  // whose stars the degeneracy removal looks at
     if (m_options.snap) {
-        for (const NodeToSnap& node : nodes) m_marks.extend_reach(longest_edge_around(mesh, m_marks, node.node));
         m_track->watch_moves(false);  // the selection, and the track, see snapped nodes where they were
         SnapResult snapped = snap_nodes(mesh, nodes, m_marks.sweeps(), m_options.min_snap_aspect_ratio);
         m_track->watch_moves(true);
         for (std::size_t i = 0; i < snapped.snapped.size(); ++i)
-            m_marks.add_snapped(snapped.snapped[i], snapped.snapped_from[i]);
+            m_marks.add_snapped(mesh, snapped.snapped[i], snapped.snapped_from[i]);
         m_last.nodes_snapped += snapped.snapped.size();
         m_last.nodes_partly_snapped += snapped.partly;
         m_last.nodes_refused += snapped.refused.size();
@@ -452,7 +441,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     for (const auto& [original, copy] : dissected->new_vertices) {
         touched.push_back(original);
         touched.push_back(copy);
-        if (m_marks.snapped(original)) m_marks.add_snapped(copy, m_marks.selection_position(mesh, original));
+        if (m_marks.snapped(original)) m_marks.add_snapped(mesh, copy, m_marks.selection_position(mesh, original));
     }
     corners.clear();
     for (const FaceId f : dissected->opened) {
@@ -504,10 +493,6 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
                                  std::to_string(removed->collapses) + " collapses, " +
                                  std::to_string(removed->cut_free) + " cut free");
     }
-    // the removal's collapses may lengthen edges around snapped nodes: the reach follows
-    for (const VertexId v : touched)
-        if (m_marks.snapped(v) && mesh.vertex_element(v) != invalid_id)
-            m_marks.extend_reach(longest_edge_around(mesh, m_marks, v));
     m_last.seconds_degeneracy += seconds_since(phase);
 
     // 5. both sides of the new cut faces: where the step's loose pieces are looked for
@@ -517,6 +502,9 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     // which the next selection looks at again, with what this round's edits made
     m_marks.look_again(seeds);
     m_marks.look_again(elements_edited_in_step().subspan(edited_at_start));
+    // the round's edits (the removal's collapses above all) may make a snapped node's star reach
+    // farther
+    m_marks.cover_elements(mesh, elements_edited_in_step().subspan(edited_at_start));
     for (const FaceId f : dissected->opened)
         if (mesh.is_face(f)) m_seeds.push_back(mesh.face_element(f));
     m_last.seconds_pieces += seconds_since(phase);

@@ -10,6 +10,7 @@
 
 #include "face_selection.hpp"
 #include "loose_pieces.hpp"
+#include "moved_nodes.hpp"
 #include "snapcut_fixture.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/ops/dissect.hpp"
@@ -92,7 +93,7 @@ TEST(SnapCutMarks, NewEdgesTakeTheMarkOfAnEarlierSweepWhenTheirNearerEndIsOnTheC
     const Point was = mesh.deformed(v);
     const Point on_plane{1.3, 1, 1};
     ASSERT_TRUE(mesh.move_vertices(std::span(&v, 1), std::span(&on_plane, 1), PositionSet::both));
-    marks.add_snapped(v, was);
+    marks.add_snapped(mesh, v, was);
     const auto split = split_edge(mesh, v, kuhn2_vertex(2, 1, 1));  // m at x = 1.65
     ASSERT_TRUE(split) << split.reason();
     const VertexId m = split->vertex;
@@ -155,19 +156,11 @@ TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSwe
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
         if (!snap(random)) continue;
         const Point& at = mesh.deformed(v);
-        marks.add_snapped(v, Point{at[0] + nudge(random), at[1] + nudge(random), at[2] + nudge(random)});
+        marks.add_snapped(mesh, v, Point{at[0] + nudge(random), at[1] + nudge(random), at[2] + nudge(random)});
     }
-    const auto distance = [](const Point& x, const Point& y) {
-        return std::sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]));
-    };
-    double reach = 0;  // the longest edge around a snapped node, as the selection sees it
-    for (const ElementId t : elements(mesh))
-        for (const VertexId u : mesh.simplex(t).vertices())
-            for (const VertexId w : mesh.simplex(t).vertices())
-                if (marks.snapped(u))
-                    reach = std::max(reach, distance(marks.selection_position(mesh, u),
-                                                     marks.selection_position(mesh, w)));
-    marks.extend_reach(reach);
+    // a node snapped after its neighbour moved the neighbour's star as the selection sees it (the
+    // cutter snaps a node from where the selection sees it, so there it does not)
+    marks.cover_all(mesh);
     std::size_t meeting = 0, handed = 0;
     for (int round = 0; round < 300; ++round) {
         const Point a{inside(random), inside(random), inside(random)};
@@ -189,6 +182,37 @@ TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSwe
     }
     EXPECT_GT(meeting, 1000u);  // the sweeps do meet elements around snapped nodes
     EXPECT_LT(handed, 3 * meeting) << "the planes part most of those that do not";
+}
+
+// A snapped node's star reaches farther as the selection sees it when a neighbour moves away (a
+// simulation frame, the caller's own move): elements_near then misses the elements of the star
+// that meet a sweep beyond the node's radius, until the moves widen it (MovedNodes::cover).
+TEST(SnapCutMarks, ElementsNearFollowTheNeighboursOfASnappedNodeWhenTheyMove) {
+    Mesh mesh = make_kuhn_cube(4).value();  // vertex (i, j, k) is (5 k + j) 5 + i
+    const VertexId v = (5 * 2 + 2) * 5 + 2, w = (5 * 3 + 3) * 5 + 3;  // (2, 2, 2) and (3, 3, 3): an edge
+    CutMarks marks;
+    snapcut::MovedNodes moves(mesh);
+    marks.add_snapped(mesh, v, mesh.deformed(v));
+    EXPECT_NEAR(marks.radius(v), std::sqrt(3.0), 1e-12);  // the longest edges of the Kuhn cube
+    const Point moved{3.4, 3.4, 3.4};
+    ASSERT_TRUE(mesh.move_vertices(std::span(&w, 1), std::span(&moved, 1), PositionSet::both));
+    // a small triangle square to edge v-w, across it near w: 2.3 from v, beyond the radius
+    const double at = 2 + 0.95 * 1.4, size = 0.05;
+    const Point e1{size / std::sqrt(2.0), -size / std::sqrt(2.0), 0};
+    const Point e2{size / std::sqrt(6.0), size / std::sqrt(6.0), -2 * size / std::sqrt(6.0)};
+    const snapcut::Sweep sweep{{at + e1[0], at + e1[1], at + e1[2]},
+                               {at + e2[0], at + e2[1], at + e2[2]},
+                               {at - e1[0] - e2[0], at - e1[1] - e2[1], at - e1[2] - e2[2]}};
+    std::vector<ElementId> meeting;  // the elements of v's star the sweep meets: those at edge v-w
+    for (const ElementId t : star(mesh, v))
+        if (snapcut::meets_as_selected(mesh, marks, t, sweep.a, sweep.b, sweep.c)) meeting.push_back(t);
+    std::sort(meeting.begin(), meeting.end());
+    ASSERT_FALSE(meeting.empty());
+    EXPECT_TRUE(marks.elements_near(mesh, sweep).empty()) << "the radius before the move does not reach";
+    moves.cover(mesh, marks);
+    EXPECT_NEAR(marks.radius(v), 1.4 * std::sqrt(3.0), 1e-12);
+    EXPECT_EQ(marks.elements_near(mesh, sweep), meeting);
+    expect_valid(mesh);
 }
 
 }  // namespace

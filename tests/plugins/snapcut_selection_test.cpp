@@ -121,12 +121,12 @@ TEST(SnapCutSelection, ACheckpointTakesBackWhatCameAfterIt) {
     const Mesh mesh = make_kuhn_cube(2).value();
     CutMarks marks;
     (void)select_plane(mesh, marks, 1.3);
-    marks.add_snapped(kuhn2_vertex(1, 1, 1), mesh.deformed(kuhn2_vertex(1, 1, 1)));
+    marks.add_snapped(mesh, kuhn2_vertex(1, 1, 1), mesh.deformed(kuhn2_vertex(1, 1, 1)));
     const CutMarks::Checkpoint checkpoint = marks.checkpoint();
     const std::size_t marked = marks.mark_count();
     const std::vector<ElementId> incomplete = marks.incomplete();
     (void)select_plane(mesh, marks, 0.4);
-    marks.add_snapped(kuhn2_vertex(0, 1, 1), mesh.deformed(kuhn2_vertex(0, 1, 1)));
+    marks.add_snapped(mesh, kuhn2_vertex(0, 1, 1), mesh.deformed(kuhn2_vertex(0, 1, 1)));
     ASSERT_GT(marks.mark_count(), marked);
     marks.restore(checkpoint);
     EXPECT_EQ(marks.mark_count(), marked);
