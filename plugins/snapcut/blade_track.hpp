@@ -60,6 +60,9 @@ public:
     // (set_met), and the elements edits made or changed since that it meets (a round over the
     // whole sweep again, after the removal edited the mesh).
     std::vector<ElementId> roots_again(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep);
+    // The elements the followed blade lies in as the selection sees them (sorted; some may be
+    // dead or remade since): the next `roots` hands every live one over as a root.
+    const std::vector<ElementId>& inside() const { return m_inside; }
     // What the sweep met, as the session found it.
     void set_met(std::vector<ElementId> met) { m_met = std::move(met); }
     // Keeps the live elements the sweep met (set_met) that the followed blade meets as the

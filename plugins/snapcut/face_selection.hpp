@@ -177,8 +177,11 @@ public:
     // (selection_position), sorted, each once: in the stars of the snapped nodes whose own reach
     // (radius) comes as near as the sweep, the elements that reach from the node as far as the
     // sweep is (an element lies in the ball about any of its corners through its farthest
-    // corner), not parted from it by its planes in doubles, and met in the exact test.
-    std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep) const;
+    // corner), not parted from it by its planes in doubles, and met in the exact test. Those in
+    // `known` (sorted: elements the caller has already, such as the ones the blade the sweep
+    // starts from lies in) are left out untested.
+    std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep,
+                                         std::span<const ElementId> known = {}) const;
     // How far a snapped node's star reaches from the node, as the selection sees both; it only
     // grows, and must grow whenever the star comes to reach farther (elements_near misses the
     // star otherwise): widened to the whole star when the node is snapped (add_snapped), to the

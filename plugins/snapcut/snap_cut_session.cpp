@@ -312,12 +312,16 @@ std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, c
     // the track where they are: an element may meet the sweep only as the selection sees it, and
     // then it has a snapped corner within reach of the sweep (CutMarks::elements_near: those the
     // sweep meets; the selection looks at the others when they change, CutMarks::look_again).
-    std::vector<ElementId> met = m_marks.elements_near(mesh, sweep);  // what the sweep meets
     if (!m_options.follow_blade) blade = nullptr;
-    if (blade != nullptr && (m_track->follows(blade->from) || m_track->follows(blade->to))) {
+    // what the sweep meets, less the elements the blade it starts from lies in: roots below
+    const bool from_followed = blade != nullptr && m_track->follows(blade->from);
+    std::vector<ElementId> met =
+        m_marks.elements_near(mesh, sweep, from_followed ? std::span<const ElementId>(m_track->inside())
+                                                         : std::span<const ElementId>());
+    if (blade != nullptr && (from_followed || m_track->follows(blade->to))) {
         // the first round of a followed sweep, or a later round (the sweep again, and the
         // elements the last one's edits made)
-        std::vector<ElementId> roots = m_track->follows(blade->from)
+        std::vector<ElementId> roots = from_followed
                                            ? m_track->roots(m_index, m_marks, blade->from, blade->to, sweep)
                                            : m_track->roots_again(mesh, m_marks, sweep);
         roots.insert(roots.end(), met.begin(), met.end());

@@ -170,6 +170,10 @@ TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSwe
         const snapcut::Sweep sweep{a, b, c};
         const std::vector<ElementId> near = marks.elements_near(mesh, sweep);
         handed += near.size();
+        // the elements the caller has (every other one here) are left out, and only those
+        std::vector<ElementId> known, rest;
+        for (std::size_t i = 0; i < near.size(); ++i) (i % 2 == 0 ? known : rest).push_back(near[i]);
+        ASSERT_EQ(marks.elements_near(mesh, sweep, known), rest) << "sweep " << round << " (seed " << seed << ")";
         for (const ElementId t : elements(mesh)) {
             const auto corners = mesh.simplex(t).vertices();
             const bool snapped_corner =
