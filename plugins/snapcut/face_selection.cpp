@@ -350,12 +350,15 @@ bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, con
     return segment_meets_tetrahedron(a, b, p[0], p[1], p[2], p[3]);
 }
 
-std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
-                                                std::span<const ElementId> roots) {
-    std::vector<ElementId> found;
+SweptElements close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
+                                       std::span<const ElementId> roots) {
+    SweptElements result;
+    std::vector<ElementId>& found = result.elements;
     std::unordered_set<ElementId> seen;
     for (const ElementId t : roots)
         if (mesh.is_element(t) && seen.insert(t).second) found.push_back(t);
+    // each edge is tested once, not once from each of its elements (about five), and what it
+    // missed goes to select_faces, which tests the same edges against the same sweep
     std::vector<std::uint64_t> crossed;  // edges whose elements are listed already (a few a sweep)
     std::vector<ElementId> around;
     for (std::size_t next = 0; next < found.size(); ++next) {
@@ -366,9 +369,12 @@ std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks
                 const VertexId u = s.vertex(i), v = s.vertex(j);
                 const std::uint64_t edge = (std::uint64_t{u} << 32) | v;  // u < v: canonical order
                 if (std::find(crossed.begin(), crossed.end(), edge) != crossed.end()) continue;
+                if (result.missed.contains(edge)) continue;
                 if (!segment_meets_triangle(marks.selection_position(mesh, u), marks.selection_position(mesh, v),
-                                            sweep.a, sweep.b, sweep.c))
+                                            sweep.a, sweep.b, sweep.c)) {
+                    result.missed.insert(edge);
                     continue;
+                }
                 crossed.push_back(edge);
                 around.clear();
                 collect_star(mesh, u, t, around);
@@ -377,14 +383,14 @@ std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks
             }
     }
     std::sort(found.begin(), found.end());
-    return found;
+    return result;
 }
 
 Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
-                       std::span<const ElementId> candidates, const SweptSurface* swept) {
+                       std::span<const ElementId> candidates, const SweptSurface* swept, MissedEdges missed) {
     const Sweep& sweep = marks.sweeps()[sweep_index];
     Selection selection;
-    std::unordered_set<std::uint64_t> missed;  // edges this sweep tested and does not cross
+    // `missed` grows by the edges this sweep tests here and does not cross
     std::vector<ElementId> incomplete;
     for (const ElementId t : candidates) {
         if (!mesh.is_element(t)) continue;

@@ -281,12 +281,21 @@ bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, con
 // Live element t meets the closed segment [a, b] (a blade) as the selection sees the mesh, exactly.
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b);
 
+// Edges by their ends (lower id in the high half) that a sweep does not cross as the selection
+// sees the mesh.
+using MissedEdges = std::unordered_set<std::uint64_t>;
+
+struct SweptElements {
+    std::vector<ElementId> elements;  // sorted, each once
+    MissedEdges missed;               // the edges of `elements` the sweep does not cross
+};
+
 // The live elements of `roots` and, until none is added, those around every edge of one of them
-// that the sweep crosses (as the selection sees the mesh, marked or not), sorted, each once. From
-// the elements a blade lay in before the sweep, where its ends went and where the sweep meets the
-// boundary, these are the elements the sweep meets (blade_track.hpp).
-std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
-                                                std::span<const ElementId> roots);
+// that the sweep crosses (as the selection sees the mesh, marked or not), each edge tested once.
+// From the elements a blade lay in before the sweep, where its ends went and where the sweep
+// meets the boundary, these are the elements the sweep meets (blade_track.hpp).
+SweptElements close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, const Sweep& sweep,
+                                       std::span<const ElementId> roots);
 
 // Processes sweep `sweep_index` of `marks` against the tetrahedra `candidates` (what the sweep
 // meets; dead ids are skipped): marks the edges it crosses, selects the
@@ -298,7 +307,11 @@ std::vector<ElementId> close_over_crossed_edges(const Mesh& mesh, const CutMarks
 // does not, so the far end cannot be split out (split_far_crossings.hpp) and, snapped onto the
 // sweep's plane, it would sit beyond where the blade went (on the deforming femur 1.44 h off, where
 // the blade turned).
+//
+// `missed`: edges known not to cross the sweep as the selection sees the mesh (those
+// close_over_crossed_edges tested), not tested again.
 Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_index,
-                       std::span<const ElementId> candidates, const SweptSurface* swept = nullptr);
+                       std::span<const ElementId> candidates, const SweptSurface* swept = nullptr,
+                       MissedEdges missed = {});
 
 }  // namespace sxk::snapcut

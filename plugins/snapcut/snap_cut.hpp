@@ -221,8 +221,9 @@ private:
     Outcome<Done> cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead, const BladeMove* blade,
                             bool whole_sweep, StepReport& report, bool& edited);
     // The elements sweep `sweep_index` meets (a round over the whole sweep): followed from the
-    // blade's (blade_track.hpp) when the track follows it, else asked of the index.
-    std::vector<ElementId> elements_met(std::uint32_t sweep_index, const BladeMove* blade);
+    // blade's (blade_track.hpp) when the track follows it, else asked of the index; with the
+    // edges the following found it does not cross.
+    SweptElements elements_met(std::uint32_t sweep_index, const BladeMove* blade);
     // The distance from p to the surface the blade swept: the sweeps up to sweep_index and
     // `ahead` (the rest of this movement).
     double distance_to_swept_surface(const Point& p, std::uint32_t sweep_index, std::span<const Sweep> ahead) const;

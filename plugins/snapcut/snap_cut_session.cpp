@@ -305,7 +305,7 @@ Outcome<Done> SnapCutSession::cut_sweep(const Sweep& sweep, std::span<const Swee
     return Done{};
 }
 
-std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, const BladeMove* blade) {
+SweptElements SnapCutSession::elements_met(std::uint32_t sweep_index, const BladeMove* blade) {
     const Mesh& mesh = this->mesh();
     const Sweep sweep = m_marks.sweeps()[sweep_index];
     // The selection sees snapped nodes where they were before the cut moved them, the index and
@@ -325,17 +325,18 @@ std::vector<ElementId> SnapCutSession::elements_met(std::uint32_t sweep_index, c
                                            ? m_track->roots(m_index, m_marks, blade->from, blade->to, sweep)
                                            : m_track->roots_again(mesh, m_marks, sweep);
         roots.insert(roots.end(), met.begin(), met.end());
-        met = close_over_crossed_edges(mesh, m_marks, sweep, roots);
-    } else {
-        if (blade != nullptr) m_track->start(blade->to);
-        const std::vector<ElementId> hits =
-            m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
-        met.insert(met.end(), hits.begin(), hits.end());
+        SweptElements closed = close_over_crossed_edges(mesh, m_marks, sweep, roots);  // sorted, each once
+        m_track->set_met(closed.elements);
+        return closed;
     }
+    if (blade != nullptr) m_track->start(blade->to);
+    const std::vector<ElementId> hits =
+        m_index.elements_hit_by_triangle(sweep.a, sweep.b, sweep.c, TriangleHitsOf::elements).elements;
+    met.insert(met.end(), hits.begin(), hits.end());
     std::sort(met.begin(), met.end());
     met.erase(std::unique(met.begin(), met.end()), met.end());
     if (blade != nullptr) m_track->set_met(met);
-    return met;
+    return {std::move(met), {}};
 }
 
 Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<const Sweep> ahead,
@@ -348,9 +349,12 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     m_moves->cover(mesh, m_marks);
     const std::size_t edited_at_start = elements_edited_in_step().size();
     std::vector<ElementId> candidates;
+    MissedEdges missed;                 // edges the following found the sweep does not cross
     std::vector<ElementId> incomplete;  // the sweep's, kept by a partial round
     if (whole_sweep) {
-        candidates = elements_met(sweep_index, blade);
+        SweptElements met = elements_met(sweep_index, blade);
+        candidates = std::move(met.elements);
+        missed = std::move(met.missed);
     } else {
         incomplete = m_marks.incomplete();
     }
@@ -373,7 +377,8 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
         m_last.splits_refused += far.refused;
         if (far.split > 0) report.actions.push_back("split " + std::to_string(far.split) + " far crossings");
     }
-    const Selection selection = select_faces(mesh, m_marks, sweep_index, candidates, far_rules ? &swept : nullptr);
+    const Selection selection =
+        select_faces(mesh, m_marks, sweep_index, candidates, far_rules ? &swept : nullptr, std::move(missed));
     // what the blade now lies in, for the next sweep, of what the sweep met (the elements the
     // far crossings' splits made come to the track as fresh ones)
     if (whole_sweep) m_track->settle(mesh, m_marks);
