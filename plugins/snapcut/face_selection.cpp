@@ -163,7 +163,8 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
         const Point p{bg::get<0>(it->first), bg::get<1>(it->first), bg::get<2>(it->first)};
         const VertexId v = it->second;
         const double d2 = squared_distance_to_sweep(sweep, p);
-        if (!(d2 <= m_radius[v] * m_radius[v] * margin)) continue;  // add_snapped sized m_radius
+        const double radius = m_nodes[v].radius;  // add_snapped sized m_nodes
+        if (!(d2 <= radius * radius * margin)) continue;
         around.clear();
         collect_star(mesh, v, mesh.vertex_element(v), around);
         for (const ElementId t : around) {
@@ -259,8 +260,8 @@ std::vector<std::uint32_t> CutMarks::sweeps_meeting_box(const Point& low, const 
 }
 
 void CutMarks::widen(VertexId v, double radius) {
-    if (v >= m_radius.size()) m_radius.resize(std::size_t{v} + 1, 0.0);
-    m_radius[v] = std::max(m_radius[v], radius);
+    if (v >= m_nodes.size()) m_nodes.resize(std::size_t{v} + 1);
+    m_nodes[v].radius = std::max(m_nodes[v].radius, radius);
     m_reach = std::max(m_reach, radius);
 }
 
@@ -289,9 +290,10 @@ void CutMarks::cover_all(const Mesh& mesh) {
 }
 
 void CutMarks::add_snapped(const Mesh& mesh, VertexId v, const Point& was) {
-    if (!m_unsnapped.emplace(v, was).second) return;
-    if (v >= m_is_snapped.size()) m_is_snapped.resize(std::size_t{v} + 1, 0);
-    m_is_snapped[v] = 1;
+    if (snapped(v)) return;
+    if (v >= m_nodes.size()) m_nodes.resize(std::size_t{v} + 1);
+    m_nodes[v].was = was;
+    m_nodes[v].snapped = true;
     m_snapped_order.push_back(v);
     m_tree->tree.insert(SnappedTree::value(was, v));
     cover_star(mesh, v);
@@ -308,10 +310,9 @@ void CutMarks::restore(const Checkpoint& checkpoint) {
         m_mark_order.pop_back();
     }
     while (m_snapped_order.size() > checkpoint.snapped) {
-        m_is_snapped[m_snapped_order.back()] = 0;
-        const auto found = m_unsnapped.find(m_snapped_order.back());
-        m_tree->tree.remove(SnappedTree::value(found->second, found->first));
-        m_unsnapped.erase(found);
+        Node& node = m_nodes[m_snapped_order.back()];
+        node.snapped = false;  // its radius stays: a larger one finds more, never less
+        m_tree->tree.remove(SnappedTree::value(node.was, m_snapped_order.back()));
         m_snapped_order.pop_back();
     }
     while (m_sweeps.size() > checkpoint.sweeps) {
@@ -354,9 +355,9 @@ SweptElements close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, 
                                        std::span<const ElementId> roots) {
     SweptElements result;
     std::vector<ElementId>& found = result.elements;
-    std::unordered_set<ElementId> seen;
+    detail::FlatSet<std::uint32_t> seen;
     for (const ElementId t : roots)
-        if (mesh.is_element(t) && seen.insert(t).second) found.push_back(t);
+        if (mesh.is_element(t) && seen.insert(t)) found.push_back(t);
     // each edge is tested once, not once from each of its elements (about five), and what it
     // missed goes to select_faces, which tests the same edges against the same sweep
     std::vector<std::uint64_t> crossed;  // edges whose elements are listed already (a few a sweep)
@@ -379,7 +380,7 @@ SweptElements close_over_crossed_edges(const Mesh& mesh, const CutMarks& marks, 
                 around.clear();
                 collect_star(mesh, u, t, around);
                 for (const ElementId e : around)
-                    if (mesh.simplex(e).contains(v) && seen.insert(e).second) found.push_back(e);
+                    if (mesh.simplex(e).contains(v) && seen.insert(e)) found.push_back(e);
             }
     }
     std::sort(found.begin(), found.end());

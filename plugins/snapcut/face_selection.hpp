@@ -71,10 +71,10 @@
 #include <optional>
 #include <span>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
+#include "sxk/detail/flat_set.hpp"
 #include "sxk/mesh.hpp"
 
 namespace sxk::snapcut {
@@ -169,7 +169,7 @@ public:
     void set_incomplete(std::vector<ElementId> incomplete) { m_incomplete = std::move(incomplete); }
 
     // Nodes moved onto the sweep once already: they stay where the cut put them.
-    bool snapped(VertexId v) const { return v < m_is_snapped.size() && m_is_snapped[v] != 0; }
+    bool snapped(VertexId v) const { return v < m_nodes.size() && m_nodes[v].snapped; }
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
     // dissection is recorded with its original's), and covers its star (radius).
     void add_snapped(const Mesh& mesh, VertexId v, const Point& was);
@@ -187,13 +187,13 @@ public:
     // star otherwise): widened to the whole star when the node is snapped (add_snapped), to the
     // elements each edit makes or changes (cover_elements), to every star when the simulation
     // moves the nodes (cover_all).
-    double radius(VertexId v) const { return v < m_radius.size() ? m_radius[v] : 0.0; }
+    double radius(VertexId v) const { return v < m_nodes.size() ? m_nodes[v].radius : 0.0; }
     void cover_star(const Mesh& mesh, VertexId v);
     void cover_elements(const Mesh& mesh, std::span<const ElementId> elements);
     void cover_all(const Mesh& mesh);
     // Where the selection sees v: where it was before this cut snapped it, else where it is.
     const Point& selection_position(const Mesh& mesh, VertexId v) const {
-        return snapped(v) ? m_unsnapped.find(v)->second : mesh.deformed(v);
+        return snapped(v) ? m_nodes[v].was : mesh.deformed(v);
     }
     // The corners of element t where the selection sees them.
     std::array<Point, 4> selection_corners(const Mesh& mesh, ElementId t) const {
@@ -217,15 +217,19 @@ private:
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
     std::vector<std::uint32_t> m_marks_at;    // per vertex id, the marked edges ending there
     void count_marks_at(std::uint64_t key, int change);
-    std::unordered_map<VertexId, Point> m_unsnapped;
-    // per vertex id, whether it is in m_unsnapped: most corners the selection looks at are not
-    // snapped, and are answered without a hash lookup (the elements around snapped nodes near a
-    // sweep ask for about 2000 corners on the 1.2M femur)
-    std::vector<std::uint8_t> m_is_snapped;
+    // Per vertex id, up to the highest one snapped or widened: whether the cut snapped it, where
+    // from, and its radius. The elements around snapped nodes near a sweep ask for about 2000
+    // corners on the 1.2M femur at 1 kHz; a hash map of the snapped ones' places cost 5 % of the
+    // step in its lookups (docs/performance.md "Proven dissection and each node's own reach").
+    struct Node {
+        Point was{};
+        double radius = 0;
+        bool snapped = false;
+    };
+    std::vector<Node> m_nodes;
     std::vector<VertexId> m_snapped_order;
     struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)
     std::unique_ptr<SnappedTree> m_tree;
-    std::vector<double> m_radius;  // per vertex id, radius(v)
     double m_reach = 0;            // the largest radius: how far from the sweep the tree is asked
     void widen(VertexId v, double radius);
     std::vector<Sweep> m_sweeps;
@@ -283,7 +287,7 @@ bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, con
 
 // Edges by their ends (lower id in the high half) that a sweep does not cross as the selection
 // sees the mesh.
-using MissedEdges = std::unordered_set<std::uint64_t>;
+using MissedEdges = detail::FlatSet<std::uint64_t>;
 
 struct SweptElements {
     std::vector<ElementId> elements;  // sorted, each once
