@@ -268,10 +268,11 @@ void CutMarks::widen(VertexId v, double radius) {
 void CutMarks::cover_star(const Mesh& mesh, VertexId v) {
     std::vector<ElementId> around;
     collect_star(mesh, v, mesh.vertex_element(v), around);
-    double radius = 0;
+    const Point& at = selection_position(mesh, v);
+    double farthest2 = 0;
     for (const ElementId t : around)
-        radius = std::max(radius, std::sqrt(squared_farthest_corner(selection_corners(mesh, t), selection_position(mesh, v))));
-    widen(v, radius);
+        farthest2 = std::max(farthest2, squared_farthest_corner(selection_corners(mesh, t), at));
+    widen(v, std::sqrt(farthest2));
 }
 
 void CutMarks::cover_elements(const Mesh& mesh, std::span<const ElementId> elements) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "core/fixtures.hpp"
 #include "sxk/components.hpp"
+#include "sxk/generators.hpp"
 #include "sxk/io.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -36,6 +38,45 @@ std::vector<ElementId> all_elements(const Mesh& mesh) {
     std::vector<ElementId> ids;
     for (ElementId t : elements(mesh)) ids.push_back(t);
     return ids;
+}
+
+// Dissection edits without the kernel's star walks (ProvenEdit::change, core/src/mesh_checks.hpp):
+// its proof that no face is represented twice and no star is pinched is held here against
+// validate on random cut sets, boundary faces among them, one dissection after another on the
+// same mesh (a Kuhn cube, a Delaunay mesh of random points and a planar grid).
+TEST(Dissect, RandomCutSetsOneAfterAnotherLeaveAValidMesh) {
+    const std::uint64_t seed = test::seed_for("Dissect.RandomCutSetsOneAfterAnotherLeaveAValidMesh");
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<Point> points(300);
+    for (Point& p : points) p = {unit(random), unit(random), unit(random)};
+    std::vector<Mesh> meshes;
+    meshes.push_back(test::kuhn_cube(4));
+    meshes.push_back(make_delaunay(points).value());
+    meshes.push_back(test::planar_grid(8));
+    for (Mesh& mesh : meshes) {
+        std::size_t opened = 0;
+        for (int round = 0; round < 40; ++round) {
+            std::vector<Simplex> faces;
+            for (const ElementId t : elements(mesh))
+                for (const FaceId f : mesh.faces(t)) faces.push_back(mesh.face_simplex(f));
+            std::shuffle(faces.begin(), faces.end(), random);
+            std::vector<Simplex> cut(faces.begin(), faces.begin() + 1 + static_cast<std::ptrdiff_t>(unit(random) * 12));
+            // every other round also every face at a random vertex in some element: its star falls apart
+            if (round % 2 == 1) {
+                const VertexId v = faces.back().vertex(0);
+                for (const Simplex& sigma : faces)
+                    if (sigma.contains(v)) cut.push_back(sigma);
+            }
+            faces = std::move(cut);
+            const auto result = dissect(mesh, faces);
+            ASSERT_TRUE(result.ok()) << result.reason() << " (seed " << seed << ")";
+            opened += result->opened.size();
+            const auto valid = mesh.validate({.orientation = true});
+            ASSERT_TRUE(valid.ok()) << "round " << round << ": " << valid.reason() << " (seed " << seed << ")";
+        }
+        EXPECT_GT(opened, 0u) << "seed " << seed;
+    }
 }
 
 //   3 ------- 2          3 ------ 2        2'         cut C = {0-2}: both end points have
