@@ -290,7 +290,7 @@ void CutMarks::cover_all(const Mesh& mesh) {
         if (mesh.vertex_element(v) != invalid_id) cover_star(mesh, v);
 }
 
-void CutMarks::add_snapped(const Mesh& mesh, VertexId v, const Point& was) {
+void CutMarks::add_snapped(const Mesh& mesh, VertexId v, Point was) {
     if (snapped(v)) return;
     if (v >= m_nodes.size()) m_nodes.resize(std::size_t{v} + 1);
     m_nodes[v].was = was;

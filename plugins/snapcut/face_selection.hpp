@@ -171,8 +171,9 @@ public:
     // Nodes moved onto the sweep once already: they stay where the cut put them.
     bool snapped(VertexId v) const { return v < m_nodes.size() && m_nodes[v].snapped; }
     // Records that v was snapped from deformed position `was` (a copy of a snapped node made by
-    // dissection is recorded with its original's), and covers its star (radius).
-    void add_snapped(const Mesh& mesh, VertexId v, const Point& was);
+    // dissection is recorded with its original's), and covers its star (radius). `was` by value:
+    // a copy's is its original's selection_position, a reference into the table this may grow.
+    void add_snapped(const Mesh& mesh, VertexId v, Point was);
     // Every element with a snapped corner that meets the sweep as the selection sees it
     // (selection_position), sorted, each once: in the stars of the snapped nodes whose own reach
     // (radius) comes as near as the sweep, the elements that reach from the node as far as the

@@ -188,6 +188,19 @@ TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSwe
     EXPECT_LT(handed, 3 * meeting) << "the planes part most of those that do not";
 }
 
+// A dissection's copy of a snapped node is recorded with its original's place, passed as the
+// original's selection_position: a reference into the table the record may grow (a copy has the
+// highest id). The sanitizer build's fuzz replay found it read after the table moved.
+TEST(SnapCutMarks, ACopyTakesItsOriginalsPlaceWhenTheTableGrows) {
+    const Mesh mesh = make_kuhn_cube(4).value();  // 125 vertices
+    CutMarks marks;
+    const Point was{0.25, -0.5, 0.125};
+    marks.add_snapped(mesh, 0, was);
+    marks.add_snapped(mesh, 124, marks.selection_position(mesh, 0));
+    EXPECT_EQ(marks.selection_position(mesh, 124), was);
+    EXPECT_EQ(marks.selection_position(mesh, 0), was);
+}
+
 // A snapped node's star reaches farther as the selection sees it when a neighbour moves away (a
 // simulation frame, the caller's own move): elements_near then misses the elements of the star
 // that meet a sweep beyond the node's radius, until the moves widen it (MovedNodes::cover).
