@@ -177,12 +177,8 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     // of those that meet the sweep on the 1.2M femur at 1 kHz)
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
-    if (!known.empty()) {
-        std::vector<ElementId> unknown;
-        std::set_difference(near.begin(), near.end(), known.begin(), known.end(), std::back_inserter(unknown));
-        near = std::move(unknown);
-    }
     std::erase_if(near, [&](ElementId t) {
+        if (std::binary_search(known.begin(), known.end(), t)) return true;
         const std::array<Point, 4> corners = selection_corners(mesh, t);
         return !triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, corners[0], corners[1], corners[2], corners[3]);
     });
@@ -259,20 +255,15 @@ std::vector<std::uint32_t> CutMarks::sweeps_meeting_box(const Point& low, const 
     return found;
 }
 
-void CutMarks::widen(VertexId v, double radius) {
+CutMarks::Node& CutMarks::node(VertexId v) {
     if (v >= m_nodes.size()) m_nodes.resize(std::size_t{v} + 1);
-    m_nodes[v].radius = std::max(m_nodes[v].radius, radius);
-    m_reach = std::max(m_reach, radius);
+    return m_nodes[v];
 }
 
 void CutMarks::cover_star(const Mesh& mesh, VertexId v) {
     std::vector<ElementId> around;
     collect_star(mesh, v, mesh.vertex_element(v), around);
-    const Point& at = selection_position(mesh, v);
-    double farthest2 = 0;
-    for (const ElementId t : around)
-        farthest2 = std::max(farthest2, squared_farthest_corner(selection_corners(mesh, t), at));
-    widen(v, std::sqrt(farthest2));
+    cover_elements(mesh, around);
 }
 
 void CutMarks::cover_elements(const Mesh& mesh, std::span<const ElementId> elements) {
@@ -280,8 +271,11 @@ void CutMarks::cover_elements(const Mesh& mesh, std::span<const ElementId> eleme
         if (!mesh.is_element(t)) continue;
         const std::array<Point, 4> corners = selection_corners(mesh, t);
         for (int i = 0; i < 4; ++i)
-            if (const VertexId v = mesh.simplex(t).vertex(i); snapped(v))
-                widen(v, std::sqrt(squared_farthest_corner(corners, corners[static_cast<std::size_t>(i)])));
+            if (const VertexId v = mesh.simplex(t).vertex(i); snapped(v)) {
+                const double radius = std::sqrt(squared_farthest_corner(corners, corners[static_cast<std::size_t>(i)]));
+                m_nodes[v].radius = std::max(m_nodes[v].radius, radius);
+                m_reach = std::max(m_reach, radius);
+            }
     }
 }
 
@@ -292,8 +286,7 @@ void CutMarks::cover_all(const Mesh& mesh) {
 
 void CutMarks::add_snapped(const Mesh& mesh, VertexId v, Point was) {
     if (snapped(v)) return;
-    if (v >= m_nodes.size()) m_nodes.resize(std::size_t{v} + 1);
-    m_nodes[v].was = was;
+    node(v).was = was;
     m_nodes[v].snapped = true;
     m_snapped_order.push_back(v);
     m_tree->tree.insert(SnappedTree::value(was, v));

@@ -189,6 +189,7 @@ public:
     // elements each edit makes or changes (cover_elements), to every star when the simulation
     // moves the nodes (cover_all).
     double radius(VertexId v) const { return v < m_nodes.size() ? m_nodes[v].radius : 0.0; }
+    // cover_star: the elements around v; cover_elements: every snapped corner of `elements`.
     void cover_star(const Mesh& mesh, VertexId v);
     void cover_elements(const Mesh& mesh, std::span<const ElementId> elements);
     void cover_all(const Mesh& mesh);
@@ -218,7 +219,7 @@ private:
     std::vector<std::uint64_t> m_mark_order;  // keys by insertion: restore erases the newest
     std::vector<std::uint32_t> m_marks_at;    // per vertex id, the marked edges ending there
     void count_marks_at(std::uint64_t key, int change);
-    // Per vertex id, up to the highest one snapped or widened: whether the cut snapped it, where
+    // Per vertex id, up to the highest one snapped: whether the cut snapped it, where
     // from, and its radius. The elements around snapped nodes near a sweep ask for about 2000
     // corners on the 1.2M femur at 1 kHz; a hash map of the snapped ones' places cost 5 % of the
     // step in its lookups (docs/performance.md "Proven dissection and each node's own reach").
@@ -232,7 +233,7 @@ private:
     struct SnappedTree;  // the snapped nodes by position before snapping (Boost.Geometry rtree)
     std::unique_ptr<SnappedTree> m_tree;
     double m_reach = 0;            // the largest radius: how far from the sweep the tree is asked
-    void widen(VertexId v, double radius);
+    Node& node(VertexId v);  // grows m_nodes to hold v
     std::vector<Sweep> m_sweeps;
     struct SweepTree;  // the sweeps by their boxes (Boost.Geometry rtree)
     std::unique_ptr<SweepTree> m_sweep_tree;
