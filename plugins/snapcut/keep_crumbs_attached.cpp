@@ -32,9 +32,18 @@ void add_elements_of(const Mesh& mesh, const Simplex& face, std::vector<ElementI
 
 }  // namespace
 
-std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex> faces, std::size_t crumb) {
+std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex> faces, std::size_t crumb,
+                                          const CutMarks* marks) {
     if (crumb == 0 || faces.empty()) return faces;
     const int n = mesh.element_vertex_count();
+    // every corner of t is on the cut: t lies flat along it (see "Layers")
+    const auto flat_on_cut = [&](ElementId t) {
+        if (marks == nullptr) return false;
+        const Simplex s = mesh.simplex(t);
+        for (int i = 0; i < n; ++i)
+            if (!marks->snapped(s.vertex(i))) return false;
+        return true;
+    };
     // face i of t is open after the cut: on the boundary already, or one of the faces to open
     const auto open = [&](ElementId t, int i) {
         const FaceId f = mesh.face(t, i);
@@ -46,15 +55,18 @@ std::vector<Simplex> keep_crumbs_attached(const Mesh& mesh, std::vector<Simplex>
     sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
     std::vector<ElementId> piece;
     for (const ElementId start : sides) {
-        // the piece about `start` the open faces close off, searched up to crumb + 1 elements
+        // the piece about `start` the open faces close off, searched up to crumb + 1 elements, or
+        // largest_layer + 1 while all of them lie flat along the cut
         piece.assign(1, start);
+        bool layer = flat_on_cut(start);
         bool larger = false;
         for (std::size_t k = 0; k < piece.size() && !larger; ++k)
             for (int i = 0; i < n && !larger; ++i) {
                 const ElementId next = mesh.neighbor(piece[k], i);
                 if (open(piece[k], i) || std::find(piece.begin(), piece.end(), next) != piece.end()) continue;
                 piece.push_back(next);
-                larger = piece.size() > crumb;
+                layer = layer && flat_on_cut(next);
+                larger = piece.size() > (layer ? std::max(crumb, largest_layer) : crumb);
             }
         if (larger) continue;
         // a crumb: the lowest of the faces to open around it stays closed

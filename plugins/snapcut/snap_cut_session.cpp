@@ -441,7 +441,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     for (const Simplex& face : faces)
         if (!mesh.face_label(face)) mesh.set_face_label(face, m_options.cut_label);
     std::vector<Simplex> cut = labelled_faces_around(mesh, faces, m_options.cut_label);
-    cut = keep_crumbs_attached(mesh, std::move(cut), m_options.largest_crumb);
+    cut = keep_crumbs_attached(mesh, std::move(cut), m_options.largest_crumb, &m_marks);
     auto dissected = dissect(mesh, cut, DissectOptions{m_options.cut_label});
     if (!dissected) return dissected.refusal().prefixed("snapcut: ");
     const std::size_t opened = dissected->opened.size() / 2;

@@ -140,6 +140,32 @@ TEST(SnapCutCrumbs, ATetrahedronTheCutWouldCloseOffKeepsItsLowestFaceClosed) {
     EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 24).size(), plane.size() - 1);
 }
 
+// A piece made only of elements whose corners are all snapped is a film along the incision: kept
+// attached up to snapcut::largest_layer elements, whatever its count against the crumb's. The
+// half x <= 1 of the 2 x 2 x 2 Kuhn cube (24 elements) with every corner snapped stands for one.
+TEST(SnapCutCrumbs, APieceFlatAlongTheCutKeepsAFaceClosedAtAnySizeUpToTheLayerLimit) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    const std::vector<Simplex> plane = faces_of_x_equals_1(mesh);
+    snapcut::CutMarks marks;
+    VertexId last_inner = invalid_id;  // a node of the half off the plane
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        if (mesh.deformed(v)[0] > 1) continue;
+        marks.add_snapped(mesh, v, mesh.deformed(v));
+        if (mesh.deformed(v)[0] < 1) last_inner = v;
+    }
+    static_assert(snapcut::largest_layer >= 24);
+    const auto kept = snapcut::keep_crumbs_attached(mesh, plane, 4, &marks);
+    ASSERT_EQ(kept.size(), plane.size() - 1);
+    EXPECT_EQ(kept, std::vector<Simplex>(plane.begin() + 1, plane.end()));  // the lowest face stays closed
+    // the other half has corners off the cut: no layer, and with the marks alone nothing changes
+    EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 0, &marks), plane);
+    // one corner of the half not on the cut: a piece of 24 like any other
+    snapcut::CutMarks all_but_one;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        if (mesh.deformed(v)[0] <= 1 && v != last_inner) all_but_one.add_snapped(mesh, v, mesh.deformed(v));
+    EXPECT_EQ(snapcut::keep_crumbs_attached(mesh, plane, 4, &all_but_one), plane);
+}
+
 // CutMarks::elements_near hands the selection every element with a snapped corner that meets the
 // sweep as the selection sees it (where its snapped corners were), whatever else it leaves out:
 // its planes in doubles part only elements that are apart from the sweep. Random sweeps through a
