@@ -387,6 +387,12 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
     Selection selection;
     // `missed` grows by the edges this sweep tests here and does not cross
     std::vector<ElementId> incomplete;
+    const auto three_snapped = [&](ElementId t) {
+        const Simplex s = mesh.simplex(t);
+        int snapped = 0;
+        for (int i = 0; i < 4; ++i) snapped += marks.snapped(s.vertex(i)) ? 1 : 0;
+        return snapped == 3;
+    };
     for (const ElementId t : candidates) {
         if (!mesh.is_element(t)) continue;
         ++selection.elements_searched;
@@ -421,7 +427,9 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
             }
         auto marked = static_cast<int>(
             std::count_if(first_sweep.begin(), first_sweep.end(), [](std::uint32_t w) { return w != UINT32_MAX; }));
-        if (marked == 0) continue;
+        // no corner marked: three corners snapped elsewhere make a face all the same
+        // (face_selection.hpp, "Corners snapped elsewhere")
+        if (marked == 0 && !three_snapped(t)) continue;
         if (marked < 3) {
             // corners snapped onto the cut from other tetrahedra's edges may complete a
             // tetrahedron the sweep crosses (face_selection.hpp, "Corners snapped elsewhere")

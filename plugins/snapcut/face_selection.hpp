@@ -26,7 +26,12 @@
 // was marked and snapped from an edge of another tetrahedron), y's w only (u and v lie on x's
 // side before the snap): neither selects F, and x and y stay joined. So a tetrahedron the sweep
 // crosses (a corner marked by its own edges) whose snapped corners make three with its own marked
-// ones selects their face; the fourth is off the cut.
+// ones selects their face; the fourth is off the cut. And so does a tetrahedron with no marked
+// corner at all whose corners are snapped but one: the selection sees the snapped corners where
+// they were, on the side of the fourth corners, and then neither x's edges nor y's cross a sweep
+// (a through cut of the 1.2M femur stayed joined across such an F, y a sliver along the cut
+// with its fourth corner 0.02 h off it; the rule is looked at only in the elements the selection
+// is handed, those around nodes snapped since the last selection among them).
 //
 //        x                 marked by x's tetrahedron's edges: u, v (o)
 //       /|\                snapped, marked elsewhere: w (*)

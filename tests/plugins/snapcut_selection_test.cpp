@@ -93,6 +93,49 @@ TEST(SnapCutSelection, FourMarkedCornersSelectTheFaceWithoutTheHighestId) {
     EXPECT_EQ(selection.edges_hit, 0u);
 }
 
+// A face whose three corners were snapped from other tetrahedra's edges, between two tetrahedra
+// no sweep crosses, is selected from them (face_selection.hpp, "Corners snapped elsewhere"); with
+// two snapped corners it is not, nor by a tetrahedron with all four snapped (which face would be
+// the cut's?): the tetrahedron across then selects it.
+TEST(SnapCutSelection, ThreeCornersSnappedElsewhereSelectTheirFaceWithoutAMark) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    ElementId inner = invalid_id;  // a tetrahedron whose four faces are interior
+    for (const ElementId t : elements(mesh)) {
+        bool interior = true;
+        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
+        if (interior) {
+            inner = t;
+            break;
+        }
+    }
+    ASSERT_NE(inner, invalid_id);
+    const Simplex s = mesh.simplex(inner);
+    const ElementId across = mesh.neighbor(inner, 3);  // across the face without s.vertex(3)
+    const std::vector<ElementId> both{std::min(inner, across), std::max(inner, across)};
+    const auto select_with_snapped = [&](std::initializer_list<VertexId> snapped,
+                                         const std::vector<ElementId>& candidates) {
+        CutMarks marks;
+        const std::uint32_t far = marks.add_sweep({{10, 10, 10}, {11, 10, 10}, {10, 11, 10}});
+        for (const VertexId v : snapped) marks.add_snapped(mesh, v, mesh.deformed(v));
+        const Selection selection = select_faces(mesh, marks, far, candidates);
+        EXPECT_EQ(selection.edges_hit, 0u);
+        EXPECT_EQ(marks.mark_count(), 0u);
+        return selection;
+    };
+    const Simplex face(+1, {s.vertex(0), s.vertex(1), s.vertex(2)});
+    for (const auto& candidates : {both, std::vector<ElementId>{inner}, std::vector<ElementId>{across}}) {
+        const Selection three = select_with_snapped({s.vertex(0), s.vertex(1), s.vertex(2)}, candidates);
+        ASSERT_EQ(three.faces.size(), 1u);
+        EXPECT_EQ(three.faces[0].face, face);
+    }
+    EXPECT_TRUE(select_with_snapped({s.vertex(0), s.vertex(1)}, both).faces.empty());
+    const std::initializer_list<VertexId> all_four{s.vertex(0), s.vertex(1), s.vertex(2), s.vertex(3)};
+    EXPECT_TRUE(select_with_snapped(all_four, {inner}).faces.empty());
+    const Selection from_across = select_with_snapped(all_four, {across});
+    ASSERT_EQ(from_across.faces.size(), 1u);
+    EXPECT_EQ(from_across.faces[0].face, face);
+}
+
 TEST(SnapCutSelection, TetrahedraWithOneOrTwoMarkedCornersAreIncomplete) {
     const Mesh mesh = make_kuhn_cube(2).value();
     CutMarks marks;
