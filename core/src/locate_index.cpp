@@ -174,6 +174,19 @@ void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const 
     }
 }
 
+// Both trees after a move of most vertices (BoxTree::refit): every element and boundary face
+// re-boxed, re-entered only where it left its entry's box.
+template <int D>
+void refit_trees(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    using Extent = typename detail::BoxTree<D>::Extent;
+    detail::element_tree<D>(trees).refit([&](std::uint32_t t) -> Extent {
+        return detail::BoxTree<D>::extent_of(detail::element_points(mesh, t, positions).span());
+    });
+    detail::face_tree<D>(trees).refit([&](std::uint32_t f) -> Extent {
+        return detail::BoxTree<D>::extent_of(detail::face_points(mesh, f, positions).span());
+    });
+}
+
 // The box `stored` holds the tight box `tight` (boxes are conservative, locate_trees.hpp).
 template <int D>
 bool covers(const typename detail::BoxTree<D>::Box& stored, const typename detail::BoxTree<D>::Box& tight) {
@@ -327,18 +340,20 @@ void SpatialIndex::boundary_added(const Mesh& mesh, FaceId face) {
     });
 }
 
-// A move of a quarter of the vertices or more (a simulation writing its frame) rebuilds the trees
-// by one bulk load: re-boxing every element one by one (an rtree removal and insertion each,
-// after walking every star) took 2.2 s per frame on the 213k-element femur, the bulk load 0.15 s.
-// The seed grid stays: a move changes no element, so every seed is still a live element, which is
-// all a walk needs to start from (a seed that no longer holds its cell's centre costs a locate a
-// longer walk, or the tree when the walk gives up). Rebuilding it was a quarter of the frame's
-// rebuild on the femur (its walks to the cells' centres; perf): 0.145 s a frame with it, 0.093 s
-// without (docs/performance.md "A simulation's frame and the spatial index").
+// A move of a quarter of the vertices or more (a simulation writing its frame) refits the trees
+// (BoxTree::refit): each element and boundary face is tested against the box its entry holds, in
+// parallel, and only those that left it are re-entered, with a margin for the frames to come (by
+// one bulk load when many left). Re-boxing every element one by one (an rtree removal and
+// insertion each, after walking every star) took 2.2 s per frame on the 213k-element femur; the
+// bulk load of every frame that came next, 0.093 s; the 1M Kuhn cube bending back and forth
+// takes 48 ms a frame against 195 ms for the bulk load (docs/performance.md "A simulation's frame
+// and the spatial index"). The seed grid stays: a move changes no element, so every seed is still
+// a live element, which is all a walk needs to start from (a seed that no longer holds its cell's
+// centre costs a locate a longer walk, or the tree when the walk gives up).
 void SpatialIndex::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
     if (!writes(which, m_options.positions)) return;
     if (4 * vertices.size() >= mesh.vertex_count()) {
-        detail::in_dimension(mesh, [&](auto d) { build_trees<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
+        detail::in_dimension(mesh, [&](auto d) { refit_trees<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
         return;
     }
     detail::in_dimension(mesh, [&](auto d) { rebox_around<decltype(d)::value>(*m_trees, mesh, vertices, m_options.positions); });

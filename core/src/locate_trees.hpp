@@ -9,9 +9,12 @@
 #endif
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -35,6 +38,20 @@ inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) 
     return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
 }
 
+// std::nextafter toward -inf (+inf) for a finite float, by its bits: the libm call was an eighth
+// of re-boxing every element of a frame (perf, the 1M Kuhn cube bending). Zero steps to the
+// smallest subnormal of the other sign (as nextafter does); the largest float up gives infinity.
+inline float next_float_down(float f) {
+    if (f == 0) return -std::numeric_limits<float>::denorm_min();
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1);
+}
+inline float next_float_up(float f) {
+    if (f == 0) return std::numeric_limits<float>::denorm_min();
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0 ? bits + 1 : bits - 1);
+}
+
 // The next float below (above) x, at least one unit in the last place away (a double beyond
 // the floats' range, which a cast may not take, gives the largest float or infinity).
 inline float float_below(double x) {
@@ -42,16 +59,16 @@ inline float float_below(double x) {
     if (!(x <= largest)) return std::numeric_limits<float>::max();
     if (x < -largest) return -std::numeric_limits<float>::infinity();
     float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return std::nextafter(f, -std::numeric_limits<float>::infinity());
+    if (static_cast<double>(f) > x) f = next_float_down(f);
+    return next_float_down(f);
 }
 inline float float_above(double x) {
     constexpr double largest = std::numeric_limits<float>::max();
     if (!(x >= -largest)) return -std::numeric_limits<float>::max();
     if (x > largest) return std::numeric_limits<float>::infinity();
     float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return std::nextafter(f, std::numeric_limits<float>::infinity());
+    if (static_cast<double>(f) < x) f = next_float_up(f);
+    return next_float_up(f);
 }
 
 // One rtree of boxes over 32-bit ids (elements or boundary faces). Single-precision boxes: the
@@ -109,24 +126,40 @@ struct BoxTree {
 
     BoxTree() { recent.fill(none); }
 
-    static Box box_of(std::span<const Point* const> points) {
-        Box box;
+    // The points' extent along each axis, in doubles, before any padding.
+    struct Extent {
+        std::array<double, D> lo, hi;
+    };
+    static Extent extent_of(std::span<const Point* const> points) {
+        Extent e;
         for (int k = 0; k < D; ++k) {
+            const auto uk = static_cast<std::size_t>(k);
             double lo = std::numeric_limits<double>::infinity(), hi = -lo;
             for (const Point* p : points) {
-                lo = std::min(lo, (*p)[static_cast<std::size_t>(k)]);
-                hi = std::max(hi, (*p)[static_cast<std::size_t>(k)]);
+                lo = std::min(lo, (*p)[uk]);
+                hi = std::max(hi, (*p)[uk]);
             }
-            // grown by about a millionth of the box's size and distance from the origin: Boost's
-            // segment and distance tests on float boxes compute in double precision with rounding,
-            // and a segment through a corner of an element at a coordinate 0 (a float unit of
-            // 1e-45 there) was missed without it (tests/core/locate_test.cpp found it)
-            const double pad = (hi - lo + std::max(std::abs(lo), std::abs(hi))) * 0x1p-20;
-            set_corner(box.min_corner(), k, float_below(lo - pad));
-            set_corner(box.max_corner(), k, float_above(hi + pad));
+            e.lo[uk] = lo;
+            e.hi[uk] = hi;
+        }
+        return e;
+    }
+    // Grown by about a millionth of the box's size and distance from the origin: Boost's segment
+    // and distance tests on float boxes compute in double precision with rounding, and a segment
+    // through a corner of an element at a coordinate 0 (a float unit of 1e-45 there) was missed
+    // without it (tests/core/locate_test.cpp found it).
+    static double pad(double lo, double hi) { return (hi - lo + std::max(std::abs(lo), std::abs(hi))) * 0x1p-20; }
+    static Box box_of(const Extent& e, double margin = 0) {
+        Box box;
+        for (int k = 0; k < D; ++k) {
+            const auto uk = static_cast<std::size_t>(k);
+            const double grow = pad(e.lo[uk], e.hi[uk]) + margin;
+            set_corner(box.min_corner(), k, float_below(e.lo[uk] - grow));
+            set_corner(box.max_corner(), k, float_above(e.hi[uk] + grow));
         }
         return box;
     }
+    static Box box_of(std::span<const Point* const> points) { return box_of(extent_of(points)); }
     static void set_corner(Coordinates& c, int k, float value) {
         if (k == 0) bg::set<0>(c, value);
         else if (k == 1) bg::set<1>(c, value);
@@ -215,6 +248,93 @@ struct BoxTree {
         trim(2);
     }
     void update(std::uint32_t id, const Box& box) { insert(id, box); }
+
+    // After a move of most of what the tree indexes (a simulation writing its frame): `extent(id)`
+    // is the extent of id's positions now. An id whose entry still covers its box costs that test
+    // (in doubles, no rounding to floats: `follows`); one that left it gets an entry grown by a
+    // margin (`grown`), so that the frames after, which move it about as far, find it inside.
+    // When more than one id in `rebuild_share` left its entry, one bulk load of every id (the
+    // boxes that stayed, the grown ones) is cheaper than a removal and an insertion each (~0.4 us
+    // an id against ~3 us). The test runs in parallel over the entries (TBB): it was the frame's
+    // whole cost. Returns how many ids left their entries.
+    static constexpr std::size_t rebuild_share = 8;
+    template <class TightExtent>
+    std::size_t refit(TightExtent&& extent) {
+        using Left = std::vector<std::pair<std::uint32_t, Box>>;
+        using Range = tbb::blocked_range<std::size_t>;
+        // by entry, not by id: the boundary faces are a few of all the faces' ids (four an
+        // element); the ranges' lists are joined in the entries' order (parallel_reduce keeps the
+        // order of a reduction that is not commutative), which the bulk load below relies on
+        const Left left = tbb::parallel_reduce(
+            Range(0, entries.size(), 4096), Left{},
+            [&](const Range& range, Left found) {
+                for (std::size_t key = range.begin(); key != range.end(); ++key) {
+                    const Entry& entry = entries[key];
+                    if (!entry.in_tree) continue;
+                    for (std::uint32_t id = entry.first; id != none; id = next_member[id]) {
+                        const Extent e = extent(id);
+                        if (!follows(entry.box, e)) found.emplace_back(id, grown(entry.box, e));
+                    }
+                }
+                return found;
+            },
+            [](Left a, const Left& b) {
+                a.insert(a.end(), b.begin(), b.end());
+                return a;
+            });
+        if (left.size() * rebuild_share > live_count) {
+            std::vector<Value> values;
+            values.reserve(live_count);
+            auto next = left.begin();
+            for (const Entry& entry : entries) {
+                if (!entry.in_tree) continue;
+                for (std::uint32_t id = entry.first; id != none; id = next_member[id]) {
+                    if (next != left.end() && next->first == id) values.emplace_back((next++)->second, id);
+                    else values.emplace_back(entry.box, id);
+                }
+            }
+            load(values);
+        } else {
+            for (const auto& [id, box] : left) insert(id, box);
+            trim(static_cast<int>(left.size()));
+        }
+        return left.size();
+    }
+    // `held` covers box_of(e), and is no wider along any axis than slack_factor times that box's
+    // largest side (a margin from `grown` stays, the box of an id now elsewhere does not; a
+    // boundary face's box may be flat along an axis, so the slack is against the largest side).
+    // In doubles: `held` must reach 1.5 pads beyond the extent, where box_of reaches at most 1.3
+    // (the pad, then at most two float units below it, each at most 2^-23 of the coordinate and
+    // so a quarter of the pad, or 2 subnormal units near zero), so what this passes validate()
+    // passes too; an id it fails on a rounding is re-boxed, which is only work.
+    static bool follows(const Box& held, const Extent& e) {
+        double side = 0;
+        std::array<double, D> reach{};
+        for (int k = 0; k < D; ++k) {
+            const auto uk = static_cast<std::size_t>(k);
+            const double p = pad(e.lo[uk], e.hi[uk]);
+            reach[uk] = 1.5 * p + 0x1p-146;  // 2^-146: 8 subnormal float units
+            side = std::max(side, e.hi[uk] - e.lo[uk] + 2 * p);
+        }
+        for (int k = 0; k < D; ++k) {
+            const auto uk = static_cast<std::size_t>(k);
+            const double lo = corner(held.min_corner(), k), hi = corner(held.max_corner(), k);
+            if (lo > e.lo[uk] - reach[uk] || hi < e.hi[uk] + reach[uk] || hi - lo > slack_factor * side) return false;
+        }
+        return true;
+    }
+    // The box of `e` grown on every side by twice as far as it left `held`, at least an eighth of
+    // its largest side (a haptic frame moves the nodes by much less), at most its largest side.
+    static Box grown(const Box& held, const Extent& e) {
+        double side = 0, left = 0;
+        for (int k = 0; k < D; ++k) {
+            const auto uk = static_cast<std::size_t>(k);
+            side = std::max(side, e.hi[uk] - e.lo[uk]);
+            left = std::max({left, double(corner(held.min_corner(), k)) - e.lo[uk],
+                             e.hi[uk] - double(corner(held.max_corner(), k))});
+        }
+        return box_of(e, std::min(std::max(2 * left, side / 8), side));
+    }
     // Removes up to `budget` of the oldest empty entries from the tree while there are more
     // than 64 + live/64; keeps the queue of empty keys within a few times their number.
     void trim(int budget) {

@@ -339,6 +339,51 @@ TEST(SpatialIndex, FollowsMovesInItsOwnPositionSet) {
     ASSERT_TRUE(mesh.validate(ValidateOptions{true}).ok());
 }
 
+// A simulation writes every deformed position each frame; the index refits its trees: an element
+// or boundary face still inside its box costs a test, one that left it gets a box with a margin,
+// one by one when few left, by one bulk load when many did. Frames of every kind: all of the cube
+// moved far (the bulk load), all of it a little (inside the margins), one corner region far and
+// the rest still (one by one), with edits between them (the edits' tight boxes among the grown
+// ones). After each the trees hold every live id once with a box that covers it, and every query
+// agrees with a scan.
+TEST(SpatialIndex, FollowsASimulationsFramesByRefitting) {
+    const std::uint64_t seed = test::seed_for("SpatialIndex.FollowsASimulationsFramesByRefitting");
+    std::mt19937_64 rng(seed);
+    Mesh mesh = test::kuhn_cube(4);
+    const SpatialIndex deformed(mesh, Positions::deformed);
+    std::vector<VertexId> all;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) all.push_back(v);
+    // z bent by `bend` along x, and the corner region x, y < 1.5 pushed up by `corner`
+    const auto frame = [&](double bend, double corner) {
+        std::vector<Point> to;
+        for (const VertexId v : all) {
+            const Point& r = mesh.reference(v);
+            const double push = r[0] < 1.5 && r[1] < 1.5 ? corner : 0;
+            to.push_back({r[0], r[1], r[2] + bend * std::sin(3.14159 * r[0] / 4) + push});
+        }
+        return mesh.move_vertices(all, to, PositionSet::deformed, MoveCheck{true, true});
+    };
+    const std::array<std::pair<double, double>, 8> frames{
+        std::pair{0.3, 0.0}, {0.31, 0.0}, {0.32, 0.0}, {0.32, 0.4}, {0.33, 0.41}, {-0.2, 0.0}, {-0.21, 0.2}, {0, 0}};
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        ASSERT_TRUE(frame(frames[i].first, frames[i].second).ok()) << "frame " << i;
+        test::expect_index_agrees(deformed, rng, 30, "frame " + std::to_string(i));
+        if (i % 3 == 1) {
+            // an edit between frames: a random interior edge split where the frame left it
+            std::vector<VertexId> ends;
+            for (ElementId t = static_cast<ElementId>(rng() % mesh.element_capacity());; t = (t + 1) % mesh.element_capacity())
+                if (mesh.is_element(t)) {
+                    ends = {mesh.simplex(t).vertex(0), mesh.simplex(t).vertex(1)};
+                    break;
+                }
+            ASSERT_TRUE(split_edge(mesh, ends[0], ends[1], 0.5).ok()) << "frame " << i;
+            all.push_back(static_cast<VertexId>(mesh.vertex_count() - 1));
+            test::expect_index_agrees(deformed, rng, 30, "after the edit of frame " + std::to_string(i));
+        }
+    }
+    ASSERT_TRUE(mesh.validate(ValidateOptions{true}).ok());
+}
+
 TEST(SpatialIndex, FollowsEditsAndRollbacks) {
     const std::uint64_t seed = test::seed_for("SpatialIndex.FollowsEditsAndRollbacks");
     std::mt19937_64 rng(seed);

@@ -18,6 +18,15 @@
 //                              the index attached (its events are part of the edit);
 //   edit/2d/large/<bare|indexed>  flip_edge of K random interior edges of the 1M grid and the flip
 //                              back (a round trip, so the mesh stays the same).
+//   frame/3d/<size>/<bare|indexed>  a simulation's frame: move_vertices of every vertex's
+//                              deformed position (one call), the cube bending back and forth by up
+//                              to 0.2 cells, a period of 200 frames (at most 0.0063 cells a frame,
+//                              a haptic loop's small steps), without an index and with one over the
+//                              deformed positions (SpatialIndex::vertices_moved refits its trees);
+//   locate/3d/large/deformed/<fresh|after-frames>  index.locate(x) without a hint over the
+//                              deformed positions, at 20000 element centroids: on an index just
+//                              built (tight boxes), and on the one 400 frames or more refitted
+//                              (boxes with a margin): what the margin costs a query.
 // Each call is timed on its own (steady_clock; Google Benchmark's manual time is their sum), so
 // the counters give the distribution: p50_us, p99_us, mean_us.
 #include <benchmark/benchmark.h>
@@ -30,6 +39,7 @@
 #include <cstdio>
 #include <deque>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <tuple>
@@ -148,6 +158,84 @@ void edit(benchmark::State& state, sxk::Mesh* mesh, std::uint64_t seed) {
     report(state, us, mesh->element_count());
 }
 
+// A mesh whose deformed positions bend back and forth, frame after frame.
+struct Bending {
+    sxk::Mesh mesh{3, 3};
+    std::vector<sxk::VertexId> all;
+    std::vector<sxk::Point> at;
+    int n = 0, frame = 0;
+    std::unique_ptr<sxk::SpatialIndex> index;  // over the deformed positions, or none
+    std::vector<sxk::Point> centroids;         // of random elements, deformed, for the queries
+
+    // the next frame's deformed positions: z += 0.2 sin(2 pi frame / 200) sin(pi x / n)
+    void next() {
+        const double amplitude = 0.2 * std::sin(2 * std::numbers::pi * ++frame / 200.0);
+        for (const sxk::VertexId v : all) {
+            const sxk::Point& r = mesh.reference(v);
+            at[v] = {r[0], r[1], r[2] + amplitude * std::sin(std::numbers::pi * r[0] / n)};
+        }
+    }
+    void take_centroids(std::size_t count, std::uint64_t seed) {
+        std::mt19937_64 random(seed);
+        centroids.clear();
+        for (std::size_t k = 0; k < count; ++k) {
+            const sxk::Simplex& s = mesh.simplex(random_element(mesh, random));
+            sxk::Point c{0, 0, 0};
+            for (int j = 0; j < 4; ++j)
+                for (std::size_t a = 0; a < 3; ++a) c[a] += mesh.deformed(s.vertex(j))[a] / 4;
+            centroids.push_back(c);
+        }
+    }
+};
+
+void frames(benchmark::State& state, Bending* b) {
+    std::vector<double> us;
+    for (auto _ : state) {
+        b->next();
+        const auto start = Clock::now();
+        const auto moved = b->mesh.move_vertices(b->all, b->at, sxk::PositionSet::deformed);
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        if (!moved) {
+            state.SkipWithError(("move_vertices refused: " + moved.reason()).c_str());
+            return;
+        }
+        state.SetIterationTime(seconds);
+        us.push_back(seconds * 1e6);
+    }
+    report(state, us, b->mesh.element_count());
+}
+
+// `fresh`: on an index built now over the same positions; otherwise on the one the frames
+// refitted (after 400 frames at least: the runs may come in any order).
+void locate_deformed(benchmark::State& state, Bending* b, std::uint64_t seed, bool fresh) {
+    while (!fresh && b->frame < 400) {
+        b->next();
+        if (!b->mesh.move_vertices(b->all, b->at, sxk::PositionSet::deformed)) {
+            state.SkipWithError("move_vertices refused");
+            return;
+        }
+    }
+    const std::unique_ptr<sxk::SpatialIndex> built =
+        fresh ? std::make_unique<sxk::SpatialIndex>(b->mesh, sxk::Positions::deformed) : nullptr;
+    const sxk::SpatialIndex& index = fresh ? *built : *b->index;
+    b->take_centroids(20000, seed);
+    std::vector<double> us;
+    std::size_t next = 0, found = 0;
+    for (auto _ : state) {
+        const sxk::Point& x = b->centroids[next];
+        next = (next + 1) % b->centroids.size();
+        const auto start = Clock::now();
+        const sxk::Location location = index.locate(x);
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        state.SetIterationTime(seconds);
+        us.push_back(seconds * 1e6);
+        benchmark::DoNotOptimize(location);
+        found += location.found() ? 1 : 0;
+    }
+    if (found != us.size()) state.SkipWithError("a centroid was not found");
+    report(state, us, b->mesh.element_count());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -209,6 +297,30 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMicrosecond)
                 ->Iterations(static_cast<benchmark::IterationCount>(sizes.edits));
     }
+    // a simulation's frames: bare and indexed copies of each cube, bent the same way
+    std::deque<Bending> bent;
+    for (const auto& [size, n] : {std::pair{"small", 12}, std::pair{"large", 55}})
+        for (const bool indexed : {false, true}) {
+            Bending& b = bent.emplace_back();
+            b.mesh = sxk_bench::kuhn_cube(n);
+            b.n = n;
+            for (sxk::VertexId v = 0; v < b.mesh.vertex_count(); ++v) b.all.push_back(v);
+            b.at.resize(b.all.size());
+            if (indexed) b.index = std::make_unique<sxk::SpatialIndex>(b.mesh, sxk::Positions::deformed);
+            const std::string name = std::string("frame/3d/") + size + (indexed ? "/indexed" : "/bare");
+            benchmark::RegisterBenchmark(name.c_str(), frames, &b)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(400);
+            if (indexed && n == 55)
+                for (const bool fresh : {true, false})
+                    benchmark::RegisterBenchmark(fresh ? "locate/3d/large/deformed/fresh"
+                                                       : "locate/3d/large/deformed/after-frames",
+                                                 locate_deformed, &b, sizes.seed, fresh)
+                        ->UseManualTime()
+                        ->Unit(benchmark::kMicrosecond)
+                        ->Iterations(static_cast<benchmark::IterationCount>(sizes.queries));
+        }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

@@ -9,8 +9,10 @@
 //
 //        mesh edit ──► element_removed / changed / added ──► rtree remove / insert (one box each)
 //        move_vertices ──► vertices_moved ──► re-box star(v) and its boundary faces (a quarter
-//                                             of the vertices or more: one bulk rebuild of
-//                                             the trees; the seed grid of locate stays)
+//                                             of the vertices or more, a simulation's frame:
+//                                             refit, every box tested where it is, re-entered
+//                                             with a margin only when it left; the seed grid of
+//                                             locate stays)
 //        EditJournal rollback ──► the net change back, as one edit ──► the same
 //
 //        query ──► (a walk from the hint) ──► rtree candidates ──► exact test per candidate
