@@ -30,6 +30,17 @@ inline void expect_valid(const Mesh& mesh) {
 // every edge climbs in x, y and z.
 inline VertexId kuhn2_vertex(int i, int j, int k) { return static_cast<VertexId>((3 * k + j) * 3 + i); }
 
+// The first element (by id) whose four faces are interior (the 2-cube has some at its centre),
+// or invalid_id.
+inline ElementId interior_element(const Mesh& mesh) {
+    for (const ElementId t : elements(mesh)) {
+        bool interior = true;
+        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
+        if (interior) return t;
+    }
+    return invalid_id;
+}
+
 inline std::vector<ElementId> all_elements(const Mesh& mesh) {
     std::vector<ElementId> all;
     for (const ElementId t : elements(mesh)) all.push_back(t);

@@ -118,13 +118,8 @@ TEST(SnapCutMarks, NewEdgesTakeTheMarkOfAnEarlierSweepWhenTheirNearerEndIsOnTheC
 
 TEST(SnapCutCrumbs, ATetrahedronTheCutWouldCloseOffKeepsItsLowestFaceClosed) {
     const Mesh mesh = make_kuhn_cube(2).value();
-    // the element at the cube's centre with all four faces interior
-    ElementId inner = invalid_id;
-    for (const ElementId t : elements(mesh)) {
-        bool interior = true;
-        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
-        if (interior) inner = t;
-    }
+    // an element at the cube's centre with all four faces interior
+    const ElementId inner = interior_element(mesh);
     ASSERT_NE(inner, invalid_id);
     std::vector<Simplex> faces;
     for (int i = 0; i < 4; ++i) faces.push_back(Simplex(+1, mesh.face_simplex(mesh.face(inner, i)).vertices()));

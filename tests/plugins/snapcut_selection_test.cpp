@@ -67,16 +67,7 @@ TEST(SnapCutSelection, OnlyTheFirstCrossingOfAnEdgeCounts) {
 
 TEST(SnapCutSelection, FourMarkedCornersSelectTheFaceWithoutTheHighestId) {
     const Mesh mesh = make_kuhn_cube(2).value();
-    // a tetrahedron whose four faces are interior
-    ElementId inner = invalid_id;
-    for (const ElementId t : elements(mesh)) {
-        bool interior = true;
-        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
-        if (interior) {
-            inner = t;
-            break;
-        }
-    }
+    const ElementId inner = interior_element(mesh);  // a tetrahedron whose four faces are interior
     ASSERT_NE(inner, invalid_id);
     const Simplex s = mesh.simplex(inner);
     CutMarks marks;
@@ -99,15 +90,7 @@ TEST(SnapCutSelection, FourMarkedCornersSelectTheFaceWithoutTheHighestId) {
 // the cut's?): the tetrahedron across then selects it.
 TEST(SnapCutSelection, ThreeCornersSnappedElsewhereSelectTheirFaceWithoutAMark) {
     const Mesh mesh = make_kuhn_cube(2).value();
-    ElementId inner = invalid_id;  // a tetrahedron whose four faces are interior
-    for (const ElementId t : elements(mesh)) {
-        bool interior = true;
-        for (int i = 0; i < 4; ++i) interior = interior && mesh.mate(mesh.face(t, i)) != invalid_id;
-        if (interior) {
-            inner = t;
-            break;
-        }
-    }
+    const ElementId inner = interior_element(mesh);
     ASSERT_NE(inner, invalid_id);
     const Simplex s = mesh.simplex(inner);
     const ElementId across = mesh.neighbor(inner, 3);  // across the face without s.vertex(3)
