@@ -40,8 +40,9 @@
 //        y
 //
 // Where y's tetrahedron is flat along the cut (all four corners on it), it is then cut off on
-// both sides, with other flat ones next to it: a layer of almost no material comes loose, and the
-// session cuts such crumbs free (Options::largest_crumb). Leaving F closed there instead left
+// both sides, with other flat ones next to it: a layer of little material the faces close off,
+// which the step keeps attached by one face (loose_pieces.hpp, "Layers") or, should it come loose
+// all the same, cuts free as a crumb (Options::largest_crumb). Leaving F closed there instead left
 // bridges (1 in 10 random through cuts of the 1.2M femur). Counting the nodes marked by other
 // edges but not snapped yet as on the cut too separates as well, but opened faces that left the
 // thesis' cube cut (docs/snapcut.md) with an element CG could not settle (20000 iterations, 380

@@ -89,7 +89,8 @@ struct Options {
     double min_snap_aspect_ratio = 0;
     // Crumbs: a step does not cut loose a piece of at most this many elements (0: any piece may
     // come loose). Where the incision folds around a tetrahedron or two at its rim, one of the
-    // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached). A piece
+    // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached; so it does
+    // for a film of up to largest_layer elements with every corner snapped, "Layers"). A piece
     // that comes loose all the same with no more material than this many elements of the mean
     // volume, and fewer than a hundredth of the mesh's elements (a layer of flat elements along
     // the cut, or a crumb the degeneracy removal cut loose), is removed and counted as cut free.
