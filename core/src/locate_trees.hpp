@@ -256,10 +256,10 @@ struct BoxTree {
     // When more than one id in `rebuild_share` left its entry, one bulk load of every id (the
     // boxes that stayed, the grown ones) is cheaper than a removal and an insertion each (~0.4 us
     // an id against ~3 us). The test runs in parallel over the entries (TBB): it was the frame's
-    // whole cost. Returns how many ids left their entries.
+    // whole cost.
     static constexpr std::size_t rebuild_share = 8;
     template <class TightExtent>
-    std::size_t refit(TightExtent&& extent) {
+    void refit(TightExtent&& extent) {
         using Left = std::vector<std::pair<std::uint32_t, Box>>;
         using Range = tbb::blocked_range<std::size_t>;
         // by entry, not by id: the boundary faces are a few of all the faces' ids (four an
@@ -298,7 +298,6 @@ struct BoxTree {
             for (const auto& [id, box] : left) insert(id, box);
             trim(static_cast<int>(left.size()));
         }
-        return left.size();
     }
     // `held` covers box_of(e), and is no wider along any axis than slack_factor times that box's
     // largest side (a margin from `grown` stays, the box of an id now elsewhere does not; a

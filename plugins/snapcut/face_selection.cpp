@@ -387,12 +387,6 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
     Selection selection;
     // `missed` grows by the edges this sweep tests here and does not cross
     std::vector<ElementId> incomplete;
-    const auto three_snapped = [&](ElementId t) {
-        const Simplex s = mesh.simplex(t);
-        int snapped = 0;
-        for (int i = 0; i < 4; ++i) snapped += marks.snapped(s.vertex(i)) ? 1 : 0;
-        return snapped == 3;
-    };
     for (const ElementId t : candidates) {
         if (!mesh.is_element(t)) continue;
         ++selection.elements_searched;
@@ -427,12 +421,10 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
             }
         auto marked = static_cast<int>(
             std::count_if(first_sweep.begin(), first_sweep.end(), [](std::uint32_t w) { return w != UINT32_MAX; }));
-        // no corner marked: three corners snapped elsewhere make a face all the same
-        // (face_selection.hpp, "Corners snapped elsewhere")
-        if (marked == 0 && !three_snapped(t)) continue;
         if (marked < 3) {
             // corners snapped onto the cut from other tetrahedra's edges may complete a
-            // tetrahedron the sweep crosses (face_selection.hpp, "Corners snapped elsewhere")
+            // tetrahedron, whether the sweep crosses it or no corner of it is marked at all
+            // (face_selection.hpp, "Corners snapped elsewhere")
             const auto on_cut_elsewhere = [&](int i) {
                 return first_sweep[static_cast<std::size_t>(i)] == UINT32_MAX && marks.snapped(s.vertex(i));
             };
@@ -442,6 +434,8 @@ Selection select_faces(const Mesh& mesh, CutMarks& marks, std::uint32_t sweep_in
                 for (int i = 0; i < 4; ++i)
                     if (on_cut_elsewhere(i)) first_sweep[static_cast<std::size_t>(i)] = sweep_index;
                 marked = 3;
+            } else if (marked == 0) {
+                continue;  // not met by any sweep, and not completed: not incomplete either
             }
         }
         if (marked < 3) {
