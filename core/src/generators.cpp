@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,37 @@ Outcome<Mesh> make_kuhn_box(std::array<int, 3> cells, std::array<double, 3> spac
                                                           " along " + axis[k] + " is not positive and finite"};
     }
     return kuhn_box(cells, spacing, "make_kuhn_box");
+}
+
+Outcome<Mesh> make_triangle_grid(std::array<int, 2> cells, std::array<double, 2> spacing) {
+    static constexpr std::array<char, 2> axis{'x', 'y'};
+    for (std::size_t k = 0; k < 2; ++k) {
+        if (cells[k] < 1 || cells[k] > 5000)
+            return Refusal{RefusalCode::bad_argument, "make_triangle_grid: " + std::to_string(cells[k]) +
+                                                          " cells along " + axis[k] + " is not in 1..5000"};
+        if (!positive_finite(spacing[k]))
+            return Refusal{RefusalCode::bad_argument, "make_triangle_grid: spacing " + std::to_string(spacing[k]) +
+                                                          " along " + axis[k] + " is not positive and finite"};
+    }
+    const auto columns = static_cast<std::size_t>(cells[0]) + 1;
+    const auto rows = static_cast<std::size_t>(cells[1]) + 1;
+    Mesh mesh(2, 2);
+    mesh.reserve(columns * rows, 2 * (columns - 1) * (rows - 1));
+    for (int j = 0; j <= cells[1]; ++j)
+        for (int i = 0; i <= cells[0]; ++i) mesh.add_vertex({i * spacing[0], j * spacing[1], 0});
+    auto id = [columns](int i, int j) {
+        return static_cast<VertexId>(static_cast<std::size_t>(j) * columns + static_cast<std::size_t>(i));
+    };
+    std::vector<Simplex> triangles;
+    triangles.reserve(2 * (columns - 1) * (rows - 1));
+    for (int j = 0; j < cells[1]; ++j)
+        for (int i = 0; i < cells[0]; ++i) {
+            triangles.emplace_back(+1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            triangles.emplace_back(+1, std::initializer_list<VertexId>{id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    if (auto built = mesh.assign_elements(triangles); !built)
+        return Refusal{RefusalCode::internal_error, "make_triangle_grid: " + built.reason()};  // cannot happen
+    return mesh;
 }
 
 }  // namespace sxk

@@ -4,6 +4,8 @@
 // sxk generate OUT --shape cylinder [--rings R] [--layers L] [--spacing S]: the Delaunay
 // tetrahedralisation of a cylindrical point cloud (make_delaunay of cylinder_cloud), the thesis'
 // other test object (§3.3's pie-like cuts: 891 vertices, 4020 tetrahedra).
+// sxk generate OUT --shape square [--cells N|NX,NY] [--spacing S|SX,SY]: a planar grid of right
+// triangles (make_triangle_grid), the meshes of the thesis' 2D cuts (§5.4).
 // For the experiments, the demos and anyone who wants a tetrahedral mesh without a mesher.
 #include <array>
 #include <memory>
@@ -34,6 +36,46 @@ std::variant<std::array<double, 3>, std::string> three_numbers(const std::string
     return "expected one number or three (X,Y,Z), found " + std::to_string(numbers.size()) + " in '" + text + "'";
 }
 
+// --shape square: a planar grid of right triangles (make_triangle_grid), the thesis' 2D cuts' meshes.
+int run_generate_square(Context& context, const GenerateOptions& options) {
+    std::array<int, 2> counts{};
+    std::array<double, 2> spacing{};
+    for (const bool of_cells : {true, false}) {
+        const std::string& text = of_cells ? options.cells : options.spacing;
+        const char* name = of_cells ? "--cells" : "--spacing";
+        auto parsed = parse_number_list(text);
+        if (const auto* why = std::get_if<std::string>(&parsed)) {
+            context.err << "sxk: generate: " << name << ": " << *why << '\n';
+            return exit_usage;
+        }
+        const auto& numbers = std::get<std::vector<double>>(parsed);
+        if (numbers.size() != 1 && numbers.size() != 2) {
+            context.err << "sxk: generate: " << name << ": a square takes one number or two (X,Y), found "
+                        << numbers.size() << " in '" << text << "'\n";
+            return exit_usage;
+        }
+        for (std::size_t k = 0; k < 2; ++k) {
+            const double n = numbers[numbers.size() == 1 ? 0 : k];
+            if (!of_cells) {
+                spacing[k] = n;
+            } else if (n != static_cast<double>(static_cast<int>(n)) || n < 1 || n > 5000) {
+                context.err << "sxk: generate: --cells: '" << text << "' is not a whole number in 1..5000 per axis\n";
+                return exit_usage;
+            } else {
+                counts[k] = static_cast<int>(n);
+            }
+        }
+    }
+    auto mesh = make_triangle_grid(counts, spacing);
+    if (!mesh) {
+        context.err << "sxk: generate: " << mesh.reason() << '\n';
+        return exit_usage;
+    }
+    if (!save_mesh(context, *mesh, options.output)) return exit_refused;
+    context.out << options.output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
+    return exit_success;
+}
+
 int run_generate(Context& context, const GenerateOptions& options) {
     const auto cells = three_numbers(options.cells);
     const auto spacing = three_numbers(options.spacing);
@@ -55,6 +97,7 @@ int run_generate(Context& context, const GenerateOptions& options) {
                     << '\n';
         return exit_success;
     }
+    if (options.shape == "square") return run_generate_square(context, options);
     std::array<int, 3> counts{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double n = std::get<std::array<double, 3>>(cells)[i];
@@ -80,16 +123,17 @@ void add_generate_command(CLI::App& app, Context& context) {
     auto options = std::make_shared<GenerateOptions>();
     CLI::App* command = app.add_subcommand(
         "generate",
-        "A box of Kuhn tetrahedra (the thesis' test cube: --cells 8) or a Delaunay cylinder (--shape cylinder)");
+        "A box of Kuhn tetrahedra (the thesis' test cube: --cells 8), a Delaunay cylinder (--shape cylinder) or a "
+        "planar grid of triangles (--shape square: the thesis' 2D cuts, --cells 5 gives Fig. 5.16's 50 triangles)");
     command->add_option("OUT", options->output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
         ->required();
-    command->add_option("--shape", options->shape, "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay")
-        ->check(CLI::IsMember({"box", "cylinder"}))
+    command->add_option("--shape", options->shape, "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell")
+        ->check(CLI::IsMember({"box", "cylinder", "square"}))
         ->capture_default_str();
-    command->add_option("--cells", options->cells, "box: cells per axis, N or NX,NY,NZ (each 1..1000)")
+    command->add_option("--cells", options->cells, "box: cells per axis, N or NX,NY,NZ (each 1..1000); square: N or NX,NY (each 1..5000)")
         ->capture_default_str();
     command->add_option("--spacing", options->spacing,
-                        "box: cell size, S or SX,SY,SZ; cylinder: ring and disc spacing (positive)")
+                        "box: cell size, S or SX,SY,SZ; square: S or SX,SY; cylinder: ring and disc spacing (positive)")
         ->capture_default_str();
     command->add_option("--rings", options->rings, "cylinder: rings around the axis")
         ->check(whole_number_in(1, 200))

@@ -42,6 +42,15 @@ SXK_API Outcome<Mesh> make_kuhn_cube(int n, double spacing = 1.0);
 // ...").
 SXK_API Outcome<Mesh> make_kuhn_box(std::array<int, 3> cells, std::array<double, 3> spacing);
 
+// The planar rectangle [0, cells[0]*spacing[0]] x [0, cells[1]*spacing[1]] (ambient dimension
+// 2) cut into cells[0] x cells[1] rectangles, each into two counter-clockwise triangles along the
+// diagonal from its lower left to its upper right corner: vertex (i,j) is j*(cells[0]+1) + i;
+// triangles 2c and 2c+1 of cell c (x fastest) are (i,j) (i+1,j) (i+1,j+1) and (i,j) (i+1,j+1)
+// (i,j+1); labels 0. The thesis' 2D cuts (§5.4) run in such meshes: 5 x 5 cells give Fig. 5.16's
+// 50 triangles, 19 x 19 Fig. 5.8's 722. Refuses a count not in 1..5000 and a spacing that is not
+// positive and finite ("make_triangle_grid: ...").
+SXK_API Outcome<Mesh> make_triangle_grid(std::array<int, 2> cells, std::array<double, 2> spacing = {1.0, 1.0});
+
 // The Delaunay tetrahedralisation of `points` (CGAL's Delaunay_triangulation_3, exact predicates):
 // vertex i is points[i] in both position sets (a point given twice is one vertex: the repeat is
 // in no element), every element positive, labels 0. Refuses fewer than 4 points, a coordinate

@@ -1,0 +1,316 @@
+// The delaunaycut plug-in: `sxk cut delaunay IN PATH OUT` replays a recorded scalpel path through a
+// PlanarCutSession (planar_cut.hpp), and the plug-in's ToolFactory offers the session as the tool
+// "delaunaycut".
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "command_line.hpp"
+#include "cut_options.hpp"
+#include "incision_distance.hpp"
+#include "planar_cut.hpp"
+#include "svg_picture.hpp"
+#include "sxk/atomic_write.hpp"
+#include "sxk/io.hpp"
+#include "sxk/plugin.hpp"
+#include "sxk/tool_path.hpp"
+
+extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_delaunaycut();
+
+namespace sxk::delaunaycut {
+
+namespace {
+
+struct CommandOptions {
+    std::string input, path, output, svg, histogram, undo;
+    Options cut;
+    bool json = false;
+    ReadOptions reading;
+};
+
+struct ReplayedStep {
+    double time = 0;
+    std::size_t line = 0;
+    CutStepReport report;
+};
+
+double smallest(const std::vector<double>& values) {
+    return values.empty() ? 0 : *std::min_element(values.begin(), values.end());
+}
+double largest(const std::vector<double>& values) {
+    return values.empty() ? 0 : *std::max_element(values.begin(), values.end());
+}
+
+nlohmann::ordered_json step_json(const ReplayedStep& step) {
+    const CutStepReport& r = step.report;
+    nlohmann::ordered_json json;
+    json["time"] = step.time;
+    json["line"] = step.line;
+    json["phase"] = std::string(phase_name(r.phase));
+    json["entries"] = r.entries;
+    json["fix_ups"] = r.fix_ups;
+    json["exits"] = r.exits;
+    json["retractions"] = r.retractions;
+    json["moves"] = r.moves;
+    json["flips"] = r.flips;
+    json["nodes_removed"] = r.nodes_removed;
+    json["incision_splits"] = r.incision_splits;
+    json["edges_split"] = r.edges_split;
+    json["faces_dissected"] = r.faces_dissected;
+    json["collapses"] = r.collapses;
+    json["lag"] = r.lag;
+    if (!r.lag_reason.empty()) json["lag_reason"] = r.lag_reason;
+    json["elements"] = r.elements;
+    json["vertices"] = r.vertices;
+    json["seconds"] = r.seconds;
+    return json;
+}
+
+class CutDelaunayCommand final : public PluginCommand {
+public:
+    std::string_view name() const override { return "cut delaunay"; }
+    std::string_view summary() const override {
+        return "cut a planar triangle mesh along a recorded point-scalpel path: drag, flip, remove, split "
+               "(thesis 5.2), or subdivide (the baseline)";
+    }
+
+    int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) override {
+        CommandOptions options;
+        CLI::App app("Cut a planar triangle mesh along a recorded scalpel path (thesis chapter 5): the scalpel "
+                     "drags an active node through the mesh, edges around it flip by the empty-circle test, nodes "
+                     "it comes close to are removed and the incision behind it is split where needed; or, with "
+                     "--method subdivision, every edge the path crosses is split there. Each movement is one "
+                     "undoable step.",
+                     "sxk cut delaunay");
+        app.add_option("IN", options.input, "Planar triangle mesh (Dimension 2)")->required();
+        app.add_option("PATH", options.path,
+                       "Scalpel path: one sample per line, 'time x y' (docs/formats.md \"Tool paths\")")
+            ->required();
+        app.add_option("OUT", options.output, "Output mesh, format by extension (.mesh .msh .off .obj .vtu)")->required();
+        add_cut_options(app, options.cut);
+        app.add_option("--svg", options.svg, "Draw the cut mesh with the path over it into FILE (SVG)")
+            ->type_name("FILE");
+        app.add_option("--histogram", options.histogram,
+                       "Draw the triangles' smallest and largest angles before and after the cut into FILE (SVG)")
+            ->type_name("FILE");
+        app.add_option("--undo", options.undo,
+                       "After the replay, undo the last N steps (N or 'all': OUT is then IN as the writer writes it)")
+            ->check(CLI::Validator(
+                [](std::string& text) {
+                    if (text == "all") return std::string();
+                    const auto n = parse_finite_number(text);
+                    if (!n || *n < 0 || *n != static_cast<double>(static_cast<long long>(*n)))
+                        return "'" + text + "' is neither a whole number >= 0 nor 'all'";
+                    return std::string();
+                },
+                "N|all"));
+        app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
+        add_read_options(app, options.reading);
+        if (const auto done = parse_command_line(app, args, "cut delaunay", out, err)) return *done;
+
+        if (!format_from_extension(options.output)) {
+            err << "sxk: " << options.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+            return 2;
+        }
+        ToolPath path;
+        try {
+            const std::array<int, 2> columns{2, 6};
+            path = read_tool_path(options.path, columns);
+        } catch (const InputError& error) {
+            err << "sxk: " << error.what() << '\n';
+            return 2;
+        }
+        if (path.columns == 6) {
+            err << "sxk: " << options.path << ':' << path.samples.front().line
+                << ": a line scalpel ('time hx hy hz tx ty tz') cuts triangulated surfaces in space (thesis 5.3), "
+                   "which this version does not do yet; planar cuts take 'time x y'\n";
+            return 2;
+        }
+        std::optional<Mesh> mesh = load_mesh_for_command(options.input, err, options.reading);
+        if (!mesh) return 2;
+        const Mesh before = *mesh;
+        auto session = PlanarCutSession::make(*mesh, options.cut);
+        if (!session) {
+            err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
+            return 2;
+        }
+        std::vector<Point> scalpel;
+        std::vector<ReplayedStep> steps;
+        std::size_t entries = 0;
+        const auto started = std::chrono::steady_clock::now();
+        for (const ToolSample& sample : path.samples) {
+            const Point p{sample.values[0], sample.values[1], 0};
+            if (auto stepped = (*session)->cut(p); !stepped) {
+                err << "sxk: " << options.path << ':' << sample.line
+                    << ": the step was refused (the mesh is as before it): " << stepped.reason() << '\n';
+                return 1;
+            }
+            scalpel.push_back(p);
+            steps.push_back({sample.time, sample.line, (*session)->last_step()});
+            entries += steps.back().report.entries;
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        if (entries == 0) {
+            err << "sxk: " << options.path << ':' << path.samples.front().line
+                << ": the scalpel never enters the mesh (no movement crosses its boundary inwards)\n";
+            return 2;
+        }
+        std::size_t undone = 0;
+        if (!options.undo.empty()) {
+            const std::size_t kept = (*session)->steps();
+            const std::size_t count = options.undo == "all" ? kept : std::stoull(options.undo);
+            if (count > kept) {
+                err << "sxk: cut delaunay: --undo " << options.undo << ": only " << kept << " steps were taken\n";
+                return 2;
+            }
+            for (; undone < count; ++undone)
+                if (auto back = (*session)->undo_step(); !back) {
+                    err << "sxk: cut delaunay: " << back.reason() << '\n';
+                    return 1;
+                }
+        }
+        (*session)->end();
+
+        WriteOptions writing;
+        writing.drop_unused_vertices = true;  // removals and contractions leave vertices in no element
+        if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
+        const AngleCounts angles_before = triangle_angle_degrees(before), angles_after = triangle_angle_degrees(*mesh);
+        const IncisionDistance incision = incision_distance(*mesh, scalpel, options.cut.cut_label);
+        const double h = (*session)->mean_edge();
+        try {
+            if (!options.svg.empty())
+                write_file_atomically(options.svg,
+                                      mesh_svg(*mesh, scalpel, options.cut.cut_label,
+                                               std::string(method_name(options.cut.method)) + " cut: " +
+                                                   std::to_string(before.element_count()) + " -> " +
+                                                   std::to_string(mesh->element_count()) + " triangles"));
+            if (!options.histogram.empty()) {
+                const std::array<AngleSeries, 4> series{
+                    AngleSeries{"smallest angle, before", angles_before.smallest},
+                    AngleSeries{"smallest angle, after", angles_after.smallest},
+                    AngleSeries{"largest angle, before", angles_before.largest},
+                    AngleSeries{"largest angle, after", angles_after.largest}};
+                write_file_atomically(options.histogram,
+                                      angle_histogram_svg(std::string(method_name(options.cut.method)) +
+                                                              " cut: triangle angles", series));
+            }
+        } catch (const std::exception& error) {
+            err << "sxk: " << error.what() << '\n';
+            return 1;
+        }
+        const auto growth = static_cast<long long>(mesh->element_count()) - static_cast<long long>(before.element_count());
+        if (options.json) {
+            nlohmann::ordered_json json;
+            json["file"] = options.input;
+            json["path"] = options.path;
+            json["output"] = options.output;
+            json["method"] = std::string(method_name(options.cut.method));
+            json["options"] = {{"eps_edge", options.cut.eps_edge}, {"eps_entry", options.cut.eps_entry},
+                               {"eps_exit", options.cut.eps_exit}, {"dilation", options.cut.dilation},
+                               {"cut_label", options.cut.cut_label}};
+            json["mean_edge"] = h;
+            json["steps"] = nlohmann::ordered_json::array();
+            for (const ReplayedStep& step : steps) json["steps"].push_back(step_json(step));
+            json["undone"] = undone;
+            json["triangles_before"] = before.element_count();
+            json["triangles_after"] = mesh->element_count();
+            json["growth"] = growth;
+            json["smallest_angle_before"] = smallest(angles_before.smallest);
+            json["smallest_angle_after"] = smallest(angles_after.smallest);
+            json["largest_angle_after"] = largest(angles_after.largest);
+            json["incision_nodes"] = incision.nodes;
+            json["incision_farthest"] = incision.farthest / h;
+            json["incision_mean"] = incision.mean / h;
+            json["seconds"] = seconds;
+            out << json.dump(2) << '\n';
+            return 0;
+        }
+        CutStepReport total;
+        double slowest = 0;
+        for (const ReplayedStep& step : steps) {
+            const CutStepReport& r = step.report;
+            total.entries += r.entries, total.fix_ups += r.fix_ups, total.exits += r.exits;
+            total.flips += r.flips, total.nodes_removed += r.nodes_removed, total.incision_splits += r.incision_splits;
+            total.edges_split += r.edges_split, total.faces_dissected += r.faces_dissected;
+            total.collapses += r.collapses;
+            slowest = std::max(slowest, r.seconds);
+        }
+        char line[160];
+        out << method_name(options.cut.method) << " cut of " << options.input << " along " << options.path << " ("
+            << steps.size() << " samples)\n";
+        std::snprintf(line, sizeof line, "  entries %zu, incisions begun %zu, exits %zu\n", total.entries,
+                      total.fix_ups, total.exits);
+        out << line;
+        std::snprintf(line, sizeof line,
+                      "  flips %zu, nodes removed %zu, incision splits %zu, edges split %zu, edges dissected %zu, "
+                      "contracted %zu\n",
+                      total.flips, total.nodes_removed, total.incision_splits, total.edges_split,
+                      total.faces_dissected, total.collapses);
+        out << line;
+        std::snprintf(line, sizeof line, "  triangles %zu -> %zu (%+lld)%s\n", before.element_count(),
+                      mesh->element_count(), growth, undone > 0 ? (", " + std::to_string(undone) + " steps undone").c_str() : "");
+        out << line;
+        std::snprintf(line, sizeof line, "  smallest angle %.1f -> %.1f degrees, largest %.1f -> %.1f degrees\n",
+                      smallest(angles_before.smallest), smallest(angles_after.smallest), largest(angles_before.largest),
+                      largest(angles_after.largest));
+        out << line;
+        std::snprintf(line, sizeof line, "  incision from the path: farthest %.3f h, mean %.3f h (%zu nodes, h = %g)\n",
+                      incision.farthest / h, incision.mean / h, incision.nodes, h);
+        out << line;
+        std::snprintf(line, sizeof line, "  %.1f ms in all, slowest step %.3f ms\n", seconds * 1e3, slowest * 1e3);
+        out << line << options.input << " -> " << options.output << '\n';
+        return 0;
+    }
+};
+
+std::span<const std::string_view> delaunaycut_tools() {
+    static constexpr std::array<std::string_view, 1> tools{"delaunaycut"};
+    return tools;
+}
+
+Outcome<std::unique_ptr<ToolSession>> begin_delaunaycut(std::string_view tool, Mesh& mesh,
+                                                        std::span<const std::string> words) {
+    if (tool != "delaunaycut")
+        return Refusal{RefusalCode::not_found,
+                       "no tool called " + std::string(tool) + " in delaunaycut (it has: delaunaycut)"};
+    CLI::App app("delaunaycut session", "delaunaycut");
+    Options options;
+    add_cut_options(app, options);
+    std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
+    try {
+        app.parse(arguments);
+    } catch (const CLI::ParseError& error) {
+        return Refusal{RefusalCode::bad_argument, std::string("delaunaycut: ") + error.what()};
+    }
+    auto session = PlanarCutSession::make(mesh, options);
+    if (!session) return session.refusal();
+    return std::unique_ptr<ToolSession>(std::move(*session));
+}
+
+class DelaunaycutPlugin final : public Plugin {
+public:
+    std::span<PluginCommand* const> commands() override { return m_commands; }
+    ServiceOffer offer(std::string_view service_id) override {
+        if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
+        return {};
+    }
+
+private:
+    CutDelaunayCommand m_cut;
+    PluginCommand* m_commands[1] = {&m_cut};
+    ToolFactory m_tools{&delaunaycut_tools, &begin_delaunaycut};
+};
+
+}  // namespace
+}  // namespace sxk::delaunaycut
+
+SXK_PLUGIN(delaunaycut, sxk::delaunaycut::DelaunaycutPlugin, "0.1.0",
+           "Delaunay cutting: a point scalpel cuts planar triangle meshes, keeping them small and round (thesis 5.2)");

@@ -1,0 +1,124 @@
+// The active node follows the scalpel (thesis §5.2.2): "the active node is moved, and after each
+// movement, local remeshing is applied to the active triangles": interior nodes closer than
+// eps_edge are removed, and edges that fail the empty-circle test are flipped.
+//
+// A node may only move as far as its triangles stay counter-clockwise. Moving it onto the line of
+// a triangle's far edge would flatten that triangle; before that, the Delaunay test flips the edge
+// (the circle through a nearly flat triangle holds the node beyond it), and the node goes on
+// through the new triangles. So the node moves in rounds: each as far as no triangle of its star
+// gets below a quarter of its height (nor below a thousandth of the mean edge), then remeshing.
+// When nothing flips and nothing is removed the node stops there: it lags behind the scalpel, the
+// mesh stays valid, and the report says why.
+#include <algorithm>
+#include <cmath>
+
+#include "cut_methods.hpp"
+#include "sxk/ops/flip_edge.hpp"
+#include "sxk/ops/make_delaunay_by_flips.hpp"
+#include "sxk/ops/remove_node.hpp"
+#include "sxk/traversal.hpp"
+
+namespace sxk::delaunaycut {
+
+namespace {
+// Rounds of one drag: each at least quarters the height of the triangle in the way, or flips or
+// removes something; a piece of a movement (a quarter of the mean edge) takes a handful.
+constexpr int max_rounds = 256;
+// The least height a triangle of the active node's star keeps, in mean edge lengths.
+constexpr double least_height = 1e-3;
+}  // namespace
+
+Outcome<DelaunayCutSession::DragEnd> DelaunayCutSession::drag(const Point& target, const Point& heading,
+                                                              bool fix_up_waits, CutStepReport& report) {
+    for (int round = 0; round < max_rounds; ++round) {
+        remesh_around_active(report);
+        if (m_state.phase == Phase::cutting) {
+            auto exited = try_exit(heading, report);
+            if (!exited) return exited.refusal();
+            if (*exited) return DragEnd::exited;
+        }
+        const VertexId active = m_state.active;
+        const Point a = at(mesh(), active);
+        if (m_state.phase == Phase::entering && !fix_up_waits && distance(a, m_state.entry) > eps_entry())
+            return DragEnd::fix_up_due;
+        if (a[0] == target[0] && a[1] == target[1]) return DragEnd::reached;
+        // how far towards the target the star lets the node go
+        const Fan fan = fan_of(mesh(), active);
+        double s = 1;
+        for (std::size_t i = 0; i < fan.triangles.size(); ++i) {
+            const Point& x = at(mesh(), fan.ring[i]);
+            const Point& y = at(mesh(), fan.next(i));
+            const double now = area2(a, x, y), then = area2(target, x, y);
+            const double floor = std::max(now / 4, least_height * m_mean_edge * distance(x, y));
+            if (then < floor) s = std::min(s, (now - floor) / (now - then));
+        }
+        if (s <= 0) {
+            report.lag = distance(a, target);
+            report.lag_reason = "a triangle ahead of it is nearly flat, its far edge cannot be flipped and no node "
+                                "near it can be removed";
+            return DragEnd::behind;
+        }
+        Outcome<Done> placed = place_vertex(mesh(), active, s == 1 ? target : lerp(a, target, s));
+        for (int halving = 0; !placed && halving < 4; ++halving) {  // rounding at the limit: less far
+            s /= 2;
+            placed = place_vertex(mesh(), active, lerp(a, target, s));
+        }
+        if (!placed) {
+            report.lag = distance(a, target);
+            report.lag_reason = placed.reason();
+            return DragEnd::behind;
+        }
+        ++report.moves;
+    }
+    report.lag = distance(at(mesh(), m_state.active), target);
+    report.lag_reason = "the remeshing around it did not let it through in " + std::to_string(max_rounds) + " rounds";
+    return DragEnd::behind;
+}
+
+void DelaunayCutSession::remesh_around_active(CutStepReport& report) {
+    for (int round = 0; round < 16; ++round) {
+        bool changed = false;
+        while (remove_close_node(report)) changed = true;
+        if (flip_around_active(report)) changed = true;
+        if (!changed) return;
+    }
+}
+
+bool DelaunayCutSession::remove_close_node(CutStepReport& report) {
+    const Point a = at(mesh(), m_state.active);
+    const Fan fan = fan_of(mesh(), m_state.active);
+    std::vector<std::pair<double, VertexId>> close;
+    for (const VertexId x : fan.ring) {
+        const double d = distance(a, at(mesh(), x));
+        if (d < eps_edge() && !on_boundary(mesh(), x)) close.emplace_back(d, x);
+    }
+    std::sort(close.begin(), close.end());
+    for (const auto& [d, x] : close)
+        if (remove_node(mesh(), x, Positions::deformed)) {
+            ++report.nodes_removed;
+            return true;
+        }
+    return false;
+}
+
+bool DelaunayCutSession::flip_around_active(CutStepReport& report) {
+    bool any = false;
+    for (int flips = 0; flips < 64; ++flips) {
+        bool flipped = false;
+        for (const ElementId t : star(mesh(), m_state.active)) {
+            for (int i = 0; i < 3 && !flipped; ++i) {
+                if (mesh().neighbor(t, i) == invalid_id) continue;
+                const FaceId edge = mesh().face(t, i);
+                if (is_locally_delaunay(mesh(), edge, Positions::deformed)) continue;
+                flipped = flip_edge(mesh(), edge).ok();
+            }
+            if (flipped) break;
+        }
+        if (!flipped) return any;
+        ++report.flips;
+        any = true;
+    }
+    return any;
+}
+
+}  // namespace sxk::delaunaycut

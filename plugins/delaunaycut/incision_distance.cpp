@@ -1,0 +1,43 @@
+// The incision's distance from the scalpel's path (incision_distance.hpp).
+#include "incision_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace sxk::delaunaycut {
+
+double distance_to_path(const Point& p, std::span<const Point> path) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const Point& a = path[i];
+        const Point& b = i + 1 < path.size() ? path[i + 1] : path[i];
+        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        const double length2 = dx * dx + dy * dy;
+        const double s = length2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2, 0.0, 1.0) : 0;
+        nearest = std::min(nearest, std::hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy));
+    }
+    return nearest;
+}
+
+IncisionDistance incision_distance(const Mesh& mesh, std::span<const Point> path, int cut_label) {
+    std::vector<VertexId> nodes;
+    mesh.for_each_boundary_face([&](FaceId f) {
+        const Simplex edge = mesh.face_simplex(f);
+        if (const auto label = mesh.face_label(edge); label && *label == cut_label)
+            nodes.insert(nodes.end(), edge.vertices().begin(), edge.vertices().end());
+    });
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    IncisionDistance result;
+    result.nodes = nodes.size();
+    for (const VertexId v : nodes) {
+        const double d = distance_to_path(mesh.deformed(v), path);
+        result.farthest = std::max(result.farthest, d);
+        result.mean += d / static_cast<double>(nodes.size());
+    }
+    return result;
+}
+
+}  // namespace sxk::delaunaycut

@@ -1,0 +1,142 @@
+// What both planar cutting methods share (planar_cut.hpp): the scalpel, the undo of the session's
+// state, the entry through the boundary, and the report.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "cut_methods.hpp"
+#include "planar_walk.hpp"
+#include "sxk/quality.hpp"
+
+namespace sxk::delaunaycut {
+
+std::string_view method_name(Method method) {
+    return method == Method::delaunay ? "delaunay" : "subdivision";
+}
+
+std::string_view phase_name(Phase phase) {
+    switch (phase) {
+        case Phase::outside: return "outside";
+        case Phase::entering: return "entering";
+        case Phase::cutting: return "cutting";
+    }
+    return "?";
+}
+
+Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, const Options& options) {
+    if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
+        return Refusal{RefusalCode::wrong_dimension,
+                       "delaunaycut: the planar cutter needs a triangle mesh in the plane (Dimension 2)"};
+    if (mesh.element_count() == 0) return Refusal{RefusalCode::bad_argument, "delaunaycut: the mesh has no triangle"};
+    for (const auto& [name, value] : {std::pair{"eps-edge", options.eps_edge}, std::pair{"eps-entry", options.eps_entry},
+                                      std::pair{"eps-exit", options.eps_exit}})
+        if (!(value > 0) || !std::isfinite(value))
+            return Refusal{RefusalCode::bad_argument,
+                           std::string("delaunaycut: --") + name + " must be positive and finite"};
+    if (!(options.dilation >= 0 && options.dilation < 0.5))
+        return Refusal{RefusalCode::bad_argument, "delaunaycut: --dilation must be in [0, 0.5)"};
+    // the walks read corners counter-clockwise: an inverted triangle would send them astray
+    for (const ElementId t : elements(mesh))
+        if (element_orientation(mesh, t, Positions::deformed) != Sign::positive)
+            return Refusal{RefusalCode::would_invert,
+                           "delaunaycut: triangle " + std::to_string(t) + " is not counter-clockwise in the "
+                           "deformed positions", t};
+    const double h = mean_edge_length(mesh, Positions::deformed);
+    if (options.method == Method::delaunay) return std::unique_ptr<PlanarCutSession>(new DelaunayCutSession(mesh, options, h));
+    return std::unique_ptr<PlanarCutSession>(new SubdivisionCutSession(mesh, options, h));
+}
+
+PlanarCutSession::PlanarCutSession(Mesh& mesh, const Options& options, double mean_edge)
+    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_index(mesh, Positions::deformed) {}
+
+PlanarCutSession::~PlanarCutSession() = default;
+
+Outcome<StepReport> PlanarCutSession::cut(const Point& scalpel) {
+    ToolPose pose;
+    pose.position = scalpel;
+    return step(pose);
+}
+
+Outcome<Done> PlanarCutSession::apply(const ToolPose& pose, StepReport& report) {
+    const auto started = std::chrono::steady_clock::now();
+    const Point to{pose.position[0], pose.position[1], 0};
+    m_last = {};
+    m_last.phase = m_state.phase;
+    if (!std::isfinite(to[0]) || !std::isfinite(to[1]))
+        return Refusal{RefusalCode::bad_argument, "delaunaycut: the scalpel's position is not finite"};
+    const std::optional<Point> scalpel_before = m_scalpel;
+    const State state_before = m_state;
+    if (m_scalpel) {
+        if (auto moved = move(*m_scalpel, to, m_last); !moved) {
+            m_state = state_before;
+            return moved.refusal();
+        }
+        expire_forbidden(to);
+    } else {
+        report.actions.push_back("placed the scalpel");
+    }
+    m_scalpel = to;
+    m_undo.push_back({scalpel_before, state_before});
+    m_last.phase = m_state.phase;
+    m_last.elements = mesh().element_count();
+    m_last.vertices = mesh().vertices_in_elements();
+    const auto say = [&](std::size_t count, const char* what) {
+        if (count > 0) report.actions.push_back(std::to_string(count) + " " + what);
+    };
+    say(m_last.entries, "entries");
+    say(m_last.fix_ups, "incisions begun");
+    say(m_last.flips, "flips");
+    say(m_last.nodes_removed, "nodes removed");
+    say(m_last.incision_splits, "incision splits");
+    say(m_last.edges_split, "edges split");
+    say(m_last.faces_dissected, "edges dissected");
+    say(m_last.collapses, "edges contracted");
+    say(m_last.exits, "exits");
+    if (m_last.lag > 0) report.actions.push_back("the active node stays behind: " + m_last.lag_reason);
+    m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return Done{};
+}
+
+void PlanarCutSession::step_taken_back() {
+    if (m_undo.empty()) return;
+    m_scalpel = m_undo.back().scalpel;
+    m_state = std::move(m_undo.back().state);
+    m_undo.pop_back();
+}
+
+std::optional<PlanarCutSession::Entry> PlanarCutSession::first_entry(const Point& from, const Point& to) const {
+    if (from == to) return std::nullopt;
+    const TriangleHits hits = m_index.elements_hit_by_triangle(from, to, to, TriangleHitsOf::boundary_faces);
+    std::optional<Entry> first;
+    for (const FaceId f : hits.boundary_faces) {
+        // the boundary face of a counter-clockwise triangle runs with the triangle on its left
+        const Simplex edge = mesh().face_simplex(f);
+        const VertexId u = edge.sign() > 0 ? edge.vertex(0) : edge.vertex(1);
+        const VertexId v = edge.sign() > 0 ? edge.vertex(1) : edge.vertex(0);
+        if (std::any_of(m_state.forbidden.begin(), m_state.forbidden.end(), [&](const std::array<VertexId, 2>& e) {
+                return (e[0] == u && e[1] == v) || (e[0] == v && e[1] == u);
+            }))
+            continue;
+        const Point& pu = at(mesh(), u);
+        const Point& pv = at(mesh(), v);
+        if (orient2d(pu, pv, from) == Sign::positive || orient2d(pu, pv, to) != Sign::positive) continue;
+        // where the movement meets the edge's line; the index said the closed segments meet
+        const double a_from = area2(pu, pv, from), a_to = area2(pu, pv, to);
+        const double along = std::clamp(a_from / (a_from - a_to), 0.0, 1.0);
+        const Point point = lerp(from, to, along);
+        const double edge_length = distance(pu, pv);
+        const double on_edge = std::clamp(
+            ((point[0] - pu[0]) * (pv[0] - pu[0]) + (point[1] - pu[1]) * (pv[1] - pu[1])) / (edge_length * edge_length),
+            0.0, 1.0);
+        if (!first || along < first->along) first = Entry{u, v, along, on_edge, lerp(pu, pv, on_edge)};
+    }
+    return first;
+}
+
+void PlanarCutSession::expire_forbidden(const Point& scalpel) {
+    if (!m_state.forbidden.empty() && distance(scalpel, m_state.exit_point) > 2 * eps_exit()) m_state.forbidden.clear();
+}
+
+}  // namespace sxk::delaunaycut
