@@ -37,8 +37,7 @@ Outcome<Done> DelaunayCutSession::move_piece(const Point& from, const Point& to,
             scalpel = entry->at;
             continue;
         }
-        if (m_state.phase == Phase::entering &&
-            orient2d(m_state.entry_edge[0], m_state.entry_edge[1], to) != Sign::positive) {
+        if (m_state.phase == Phase::entering && !in_mesh(to)) {
             // the scalpel went back out before the incision began: the dent stays (§5.2.2)
             ++report.retractions;
             m_state.phase = Phase::outside;
@@ -69,7 +68,6 @@ Outcome<Done> DelaunayCutSession::enter(const Entry& entry, CutStepReport& repor
     const Point& pu = at(mesh(), entry.u);
     const Point& pv = at(mesh(), entry.v);
     const double to_u = distance(entry.at, pu), to_v = distance(entry.at, pv);
-    m_state.entry_edge = {pu, pv};
     if (std::min(to_u, to_v) <= eps_entry()) {
         // close to a node: that node follows the scalpel, and the incision begins where it was
         m_state.active = to_u <= to_v ? entry.u : entry.v;

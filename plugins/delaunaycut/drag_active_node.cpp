@@ -33,7 +33,7 @@ Outcome<DelaunayCutSession::DragEnd> DelaunayCutSession::drag(const Point& targe
     for (int round = 0; round < max_rounds; ++round) {
         remesh_around_active(report);
         if (m_state.phase == Phase::cutting) {
-            auto exited = try_exit(heading, report);
+            auto exited = try_exit(heading, target, report);
             if (!exited) return exited.refusal();
             if (*exited) return DragEnd::exited;
         }

@@ -118,10 +118,8 @@ protected:
     struct State {
         Phase phase = Phase::outside;
         VertexId active = invalid_id;
-        // entering (Delaunay): where the scalpel entered (deformed and reference positions), and
-        // the boundary edge it crossed (its ends' positions then, the mesh on their left)
+        // entering (Delaunay): where the scalpel entered (deformed and reference positions)
         Point entry{}, entry_reference{};
-        std::array<Point, 2> entry_edge{};
         // cutting (Delaunay): the scalpel's path since the incision's last split, first point first
         std::vector<Point> path;
         // after an exit: boundary edges (vertex pairs) no entry may cross until the scalpel is
@@ -144,6 +142,8 @@ protected:
         Point at{};
     };
     std::optional<Entry> first_entry(const Point& from, const Point& to) const;
+    // Whether p lies in a triangle of the mesh (closed), by the spatial index.
+    bool in_mesh(const Point& p) const;
     // Forgets the forbidden edges once `scalpel` is far enough from the exit.
     void expire_forbidden(const Point& scalpel);
     // In mesh units.

@@ -122,18 +122,33 @@ std::optional<PlanarCutSession::Entry> PlanarCutSession::first_entry(const Point
         const Point& pu = at(mesh(), u);
         const Point& pv = at(mesh(), v);
         if (orient2d(pu, pv, from) == Sign::positive || orient2d(pu, pv, to) != Sign::positive) continue;
+        // Through an end of the edge (a movement from it or passing it exactly), the movement must go
+        // into the edge's own triangle: along the boundary, or into the mesh by another triangle of
+        // that corner, is not this edge's entry. (From the end of an incision just cut, the other
+        // side of the incision is on the left of its line.)
+        const VertexId w = mesh().opposite_vertex(mesh().face_element(f), f);
+        const Point& pw = at(mesh(), w);
+        const Sign at_u = orient2d(from, to, pu), at_v = orient2d(from, to, pv);
+        if (at_u == Sign::zero && orient2d(pw, pu, to) == Sign::negative) continue;
+        if (at_v == Sign::zero && orient2d(pv, pw, to) == Sign::negative) continue;
         // where the movement meets the edge's line; the index said the closed segments meet
         const double a_from = area2(pu, pv, from), a_to = area2(pu, pv, to);
+        if (!(a_from - a_to < 0)) continue;  // rounding: no crossing to compute
         const double along = std::clamp(a_from / (a_from - a_to), 0.0, 1.0);
         const Point point = lerp(from, to, along);
         const double edge_length = distance(pu, pv);
-        const double on_edge = std::clamp(
-            ((point[0] - pu[0]) * (pv[0] - pu[0]) + (point[1] - pu[1]) * (pv[1] - pu[1])) / (edge_length * edge_length),
-            0.0, 1.0);
+        const double on_edge = at_u == Sign::zero ? 0
+                               : at_v == Sign::zero
+                                   ? 1
+                                   : std::clamp(((point[0] - pu[0]) * (pv[0] - pu[0]) + (point[1] - pu[1]) * (pv[1] - pu[1])) /
+                                                    (edge_length * edge_length),
+                                                0.0, 1.0);
         if (!first || along < first->along) first = Entry{u, v, along, on_edge, lerp(pu, pv, on_edge)};
     }
     return first;
 }
+
+bool PlanarCutSession::in_mesh(const Point& p) const { return m_index.locate(p).found(); }
 
 void PlanarCutSession::expire_forbidden(const Point& scalpel) {
     if (!m_state.forbidden.empty() && distance(scalpel, m_state.exit_point) > 2 * eps_exit()) m_state.forbidden.clear();

@@ -11,9 +11,12 @@
 //               /                           |                  |  |               /         \ .
 //              a                            a                  a' a             ...         ...
 //
-// The boundary must be the far edge of a triangle of the active node (or one of its neighbours),
-// so that a-x is an edge; when it is one triangle further, the edge in between is flipped first.
-// Otherwise the node moves on and the test is made again.
+// The heading is the scalpel's movement and, when the node lags behind the scalpel, the direction to
+// the scalpel too (a scalpel that went out of the mesh sideways). A corner of the edge nearer the
+// exit than eps_exit is the exit node itself (the edges the contraction makes are that short). The
+// boundary must be the far edge of a triangle of the active node (or one of its neighbours), so that
+// a-x is an edge; when it is one triangle further, the edge in between is flipped first. Otherwise
+// the node moves on and the test is made again.
 #include <cmath>
 
 #include "cut_methods.hpp"
@@ -78,15 +81,18 @@ std::optional<BoundaryAhead> boundary_ahead(const Mesh& mesh, VertexId a, const 
 
 }  // namespace
 
-Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, CutStepReport& report) {
-    const double length = std::hypot(heading[0], heading[1]);
-    if (length == 0) return false;
+Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, const Point& target, CutStepReport& report) {
     for (int attempt = 0; attempt < 2; ++attempt) {
         const VertexId a = m_state.active;
         const Point pa = at(mesh(), a);
-        const double reach = eps_exit() / length;
-        const Point far{pa[0] + reach * heading[0], pa[1] + reach * heading[1], 0};
-        const std::optional<BoundaryAhead> ahead = boundary_ahead(mesh(), a, far);
+        std::optional<BoundaryAhead> ahead;
+        for (const Point& direction : {heading, Point{target[0] - pa[0], target[1] - pa[1], 0}}) {
+            const double length = std::hypot(direction[0], direction[1]);
+            if (length == 0) continue;
+            const double reach = eps_exit() / length;
+            ahead = boundary_ahead(mesh(), a, {pa[0] + reach * direction[0], pa[1] + reach * direction[1], 0});
+            if (ahead) break;
+        }
         if (!ahead) return false;
         EditStep exit_step(*EditJournal::of(mesh()));
         if (ahead->through) {
@@ -97,6 +103,9 @@ Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, CutStepReport& 
             continue;
         }
         VertexId x = ahead->vertex;
+        // a corner nearer the exit than eps_exit is the exit (no short boundary edge is made)
+        if (x == invalid_id && distance(ahead->point, at(mesh(), ahead->u)) < eps_exit()) x = ahead->u;
+        if (x == invalid_id && distance(ahead->point, at(mesh(), ahead->v)) < eps_exit()) x = ahead->v;
         if (x == invalid_id) {
             auto split = split_edge(mesh(), ahead->u, ahead->v, ahead->on_edge);
             if (!split) {

@@ -10,7 +10,13 @@
 //
 // The cut lags at most one triangle behind the scalpel: the crossing it leaves by is not known
 // before it leaves (the thesis' subdivision moves a temporary subdivision along with the scalpel
-// inside the triangle, which is only drawn; what stays is this).
+// inside the triangle, which is only drawn; what stays is this). Each crossing is where the segment
+// from the cut's last node to the scalpel crosses the edge: with the path's samples inside a
+// triangle it is the chord the cut follows anyway, and a walk that starts at a node (not at a
+// crossing point rounded to doubles) cannot turn back.
+//
+// A crossing so near a corner that the split would make a flat triangle is that corner; the
+// triangles the cut leaves are as thin as the path makes them (thesis Fig. 5.2).
 #include "cut_methods.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -19,7 +25,8 @@ namespace sxk::delaunaycut {
 
 Outcome<Done> SubdivisionCutSession::move(const Point& from, const Point& to, CutStepReport& report) {
     Point scalpel = from;
-    // every round crosses an edge, enters or leaves; a movement crosses a bounded number of edges
+    VertexId previous = invalid_id;  // the node the cut came from in this movement
+    // every round crosses an edge, or enters; a movement crosses a bounded number of edges
     for (std::size_t round = 0; round < 100000; ++round) {
         if (m_state.phase == Phase::outside) {
             const std::optional<Entry> entry = first_entry(scalpel, to);
@@ -32,26 +39,16 @@ Outcome<Done> SubdivisionCutSession::move(const Point& from, const Point& to, Cu
             scalpel = at(mesh(), *node);
             continue;
         }
+        // The cut goes on from its last node towards the scalpel: the crossings of that segment are
+        // where the path crossed the edges up to rounding, and walking from a node (not from a
+        // crossing point computed in doubles) never turns back to the node before.
         const VertexId last = m_state.active;
-        const bool at_last = scalpel == at(mesh(), last);
-        const ElementId t = triangle_entered(mesh(), last, scalpel, to);
-        if (t == invalid_id) {  // not around the last node: it went out of the mesh there
-            m_state.phase = Phase::outside;
-            m_state.active = invalid_id;
-            continue;
-        }
-        const Leaving leaving = leave_triangle(mesh(), t, scalpel, to, at_last ? last : invalid_id, invalid_id);
+        const Point start = at(mesh(), last);
+        const ElementId t = triangle_entered(mesh(), last, start, to);
+        if (t == invalid_id) return Refusal{RefusalCode::internal_error, "subdivision: the cut's last node is in no triangle"};
+        const Leaving leaving = leave_triangle(mesh(), t, start, to, last, invalid_id);
+        // `to` in a triangle of the last node, or back across the incision: the cut waits there
         if (leaving.kind == Leaving::Kind::stays) return Done{};
-        if (leaving.kind == Leaving::Kind::edge && (leaving.u == last || leaving.v == last)) {
-            // back across an edge at the last node: into its next triangle, or out through the incision
-            const std::optional<FaceId> edge = edge_face(mesh(), leaving.u, leaving.v);
-            if (edge && mesh().mate(*edge) == invalid_id) {
-                m_state.phase = Phase::outside;
-                m_state.active = invalid_id;
-            }
-            scalpel = leaving.point;
-            continue;
-        }
         VertexId node = leaving.u;
         bool leaves_mesh = false;
         if (leaving.kind == Leaving::Kind::edge) {
@@ -63,6 +60,10 @@ Outcome<Done> SubdivisionCutSession::move(const Point& from, const Point& to, Cu
         } else {
             leaves_mesh = on_boundary(mesh(), node);
         }
+        // A crossing rounded onto a corner can send the walk from that corner straight back (the
+        // segment runs along an edge to within rounding): the cut waits at its last node then.
+        if (node == previous) return Done{};
+        previous = last;
         if (auto cut = cut_to(node, report); !cut) return cut;
         scalpel = at(mesh(), node);
         if (leaves_mesh) {
