@@ -91,8 +91,9 @@ class PlanarCutSession : public ToolSession {
 public:
     // A session of options.method on a planar triangle mesh (topological and ambient dimension
     // 2) with triangles, every one counter-clockwise in the deformed positions. Builds a
-    // SpatialIndex over the deformed positions (O(n log n), once) and measures the mean edge length
-    // (O(n), once). Refuses other meshes and thresholds that are not positive and finite.
+    // SpatialIndex over the deformed positions (O(n log n), once), measures the mean edge length
+    // (O(n), once) and reserves an eighth more room in the mesh's pools (so that no step copies
+    // them). Refuses other meshes and thresholds that are not positive and finite.
     static Outcome<std::unique_ptr<PlanarCutSession>> make(Mesh& mesh, const Options& options);
     ~PlanarCutSession() override;
 

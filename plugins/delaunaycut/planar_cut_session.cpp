@@ -44,6 +44,10 @@ Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, co
                            "delaunaycut: triangle " + std::to_string(t) + " is not counter-clockwise in the "
                            "deformed positions", t};
     const double h = mean_edge_length(mesh, Positions::deformed);
+    // Room for the cut's new vertices and triangles: without it the first edit that adds one copies
+    // the mesh's pools into larger ones (17 ms at 1M triangles, in the step of the entry).
+    mesh.reserve(mesh.vertex_count() + mesh.vertex_count() / 8 + 1024,
+                 mesh.element_capacity() + mesh.element_capacity() / 8 + 1024);
     if (options.method == Method::delaunay) return std::unique_ptr<PlanarCutSession>(new DelaunayCutSession(mesh, options, h));
     return std::unique_ptr<PlanarCutSession>(new SubdivisionCutSession(mesh, options, h));
 }
