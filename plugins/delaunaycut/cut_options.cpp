@@ -19,6 +19,12 @@ void add_cut_options(CLI::App& app, Options& options) {
                    "Remove an interior node nearer the active node than this many mean edge lengths, 0 < F <= 10")
         ->check(number_in(0, false, 10, true, "(0, 10]"))
         ->capture_default_str();
+    app.add_option("--short-angle", options.short_angle,
+                   "Instead of --eps-edge, remove an interior node when every angle opposite its edge to the "
+                   "active node is below this many degrees (thesis 5.5's scale-independent criterion), 0 <= D < 90 "
+                   "(0: off)")
+        ->check(number_in(0, true, 90, false, "[0, 90)"))
+        ->capture_default_str();
     app.add_option("--eps-entry", options.eps_entry,
                    "Begin the incision once the active node is this far from the entry, in mean edge lengths, "
                    "0 < F <= 10")

@@ -213,7 +213,8 @@ public:
             json["path"] = options.path;
             json["output"] = options.output;
             json["method"] = std::string(method_name(options.cut.method));
-            json["options"] = {{"eps_edge", options.cut.eps_edge}, {"eps_entry", options.cut.eps_entry},
+            json["options"] = {{"eps_edge", options.cut.eps_edge}, {"short_angle", options.cut.short_angle},
+                               {"eps_entry", options.cut.eps_entry},
                                {"eps_exit", options.cut.eps_exit}, {"dilation", options.cut.dilation},
                                {"cut_label", options.cut.cut_label}};
             json["mean_edge"] = h;

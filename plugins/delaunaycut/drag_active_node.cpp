@@ -16,11 +16,17 @@
 #include "sxk/ops/flip_edge.hpp"
 #include "sxk/ops/make_delaunay_by_flips.hpp"
 #include "sxk/ops/remove_node.hpp"
+#include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk::delaunaycut {
 
 namespace {
+// The angle at p between the directions to a and b, in radians.
+double angle_at(const Point& p, const Point& a, const Point& b) {
+    const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
+    return std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by);
+}
 // Rounds of one drag: each at least quarters the height of the triangle in the way, or flips or
 // removes something; a piece of a movement (a quarter of the mean edge) takes a handful.
 constexpr int max_rounds = 256;
@@ -87,10 +93,19 @@ void DelaunayCutSession::remesh_around_active(CutStepReport& report) {
 bool DelaunayCutSession::remove_close_node(CutStepReport& report) {
     const Point a = at(mesh(), m_state.active);
     const Fan fan = fan_of(mesh(), m_state.active);
+    // (how close, node): by distance (eps_edge), or by the larger angle opposite the edge (§5.5)
     std::vector<std::pair<double, VertexId>> close;
-    for (const VertexId x : fan.ring) {
-        const double d = distance(a, at(mesh(), x));
-        if (d < eps_edge() && !on_boundary(mesh(), x)) close.emplace_back(d, x);
+    for (std::size_t i = 0; i < fan.ring.size(); ++i) {
+        const VertexId x = fan.ring[i];
+        if (on_boundary(mesh(), x)) continue;  // an interior node's ring closes: both neighbours exist
+        if (m_options.short_angle > 0) {
+            const Point& px = at(mesh(), x);
+            const VertexId before = fan.ring[(i + fan.ring.size() - 1) % fan.ring.size()], after = fan.next(i);
+            const double opposite = std::max(angle_at(at(mesh(), before), a, px), angle_at(at(mesh(), after), a, px));
+            if (opposite < m_options.short_angle * pi / 180) close.emplace_back(opposite, x);
+        } else if (const double d = distance(a, at(mesh(), x)); d < eps_edge()) {
+            close.emplace_back(d, x);
+        }
     }
     std::sort(close.begin(), close.end());
     for (const auto& [d, x] : close)

@@ -51,6 +51,10 @@ struct Options {
     // entered; the cut is finished once the scalpel's extrapolated movement meets the boundary
     // within eps_exit. The thesis' defaults: h/3, h/6, h/6. Delaunay cutting only.
     double eps_edge = 1.0 / 3;
+    // Thesis §5.5's scale-independent criterion instead of eps_edge, when > 0 (degrees): an interior
+    // node next to the active node is removed when the edge between them is "too short", every
+    // angle opposite that edge in its two triangles below this.
+    double short_angle = 0;
     double eps_entry = 1.0 / 6;
     double eps_exit = 1.0 / 6;
     // The nodes an incision split (Fig. 5.5) and the entry fix-up insert, one on each side of the

@@ -109,6 +109,25 @@ TEST(DelaunayCut, TheThesisSquareCutGrowsLessThanItsAndKeepsTwiceTheSubdivisions
     }
 }
 
+// Thesis §5.5's scale-independent criterion: a node goes when the angles opposite its edge to the
+// active node are small, whatever the mesh's scale. The same cut in the square at 1 and at 1000 times
+// its size makes the same mesh, up to that scale.
+TEST(DelaunayCut, TheShortAngleCriterionDoesNotDependOnTheMeshScale) {
+    Options options = with_method(Method::delaunay);
+    options.short_angle = 20;
+    const std::vector<Point> path = recorded_path("square-curve.path");
+    const Cut unit = cut_along(square_grid(5), path, options);
+    auto big = make_triangle_grid({5, 5}, {1000, 1000});
+    ASSERT_TRUE(big.ok());
+    std::vector<Point> scaled;
+    for (const Point& p : path) scaled.push_back({1000 * p[0], 1000 * p[1], 0});
+    const Cut large = cut_along(*big, scaled, options);
+    EXPECT_EQ(unit.growth, large.growth);
+    EXPECT_LE(unit.growth, 10);
+    EXPECT_NEAR(unit.smallest_angle, large.smallest_angle, 1e-6);
+    EXPECT_EQ(connected_components(*unit.mesh).count, 2u);
+}
+
 // Thesis Fig. 5.8: a regular 722-triangle mesh and a long curved path, +57 triangles there.
 TEST(DelaunayCut, TheThesisLongCurvedCutGrowsLessThanIts) {
     const Cut delaunay = cut_along(square_grid(19), recorded_path("long-curve.path"), with_method(Method::delaunay));
