@@ -45,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     for (const sxk::ToolSample& sample : path.samples)
         for (int k = 0; k < 2; ++k)
-            if (!std::isfinite(sample.values[static_cast<std::size_t>(k)])) finding("the reader let a non-finite value through");
+            if (!std::isfinite(sample.values[static_cast<std::size_t>(k)]))
+                finding("the reader let a non-finite value through");
 
     const sxk::Mesh original = sxk::make_triangle_grid({5, 5}).value();
     for (const auto method : {sxk::delaunaycut::Method::delaunay, sxk::delaunaycut::Method::subdivision}) {

@@ -50,10 +50,11 @@ private:
     // Splits the incision behind the active node while its cut edges fail the empty-circle test.
     void split_incision(CutStepReport& report);
     // The boundary ahead of the active node within eps_exit, along the scalpel's `heading` or
-    // towards `target` (where the scalpel is, when the node lags behind it), in a triangle of its
-    // own (flipping the edge in between when it is one triangle further): the cut is finished there
-    // (true), or not yet (false).
-    Outcome<bool> try_exit(const Point& heading, const Point& target, CutStepReport& report);
+    // towards `target` (where the scalpel is, when the node lags behind it), and when the node is
+    // `stuck` also towards the boundary nodes of its ring, in a triangle of its own (flipping the
+    // edge in between when it is one triangle further): the cut is finished there (true), or not
+    // yet (false).
+    Outcome<bool> try_exit(const Point& heading, const Point& target, CutStepReport& report, bool stuck);
 };
 
 // Thesis §5.4's baseline: every sliced triangle becomes three, the cut through the crossings.

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cut_methods.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -11,12 +12,30 @@ namespace sxk::delaunaycut {
 Outcome<Done> DelaunayCutSession::move(const Point& from, const Point& to, CutStepReport& report) {
     // The thesis' scalpel is a mouse: many short movements. A long one is cut in pieces of a
     // quarter of the mean edge, so that the incision is split behind the node as it goes, not once
-    // after a long drag (the 3D version subdivides large movements too, Fig. 5.11).
-    const double length = distance(from, to);
-    const auto pieces = static_cast<std::size_t>(std::ceil(length / (0.25 * m_mean_edge)));
+    // after a long drag (the 3D version subdivides large movements too, Fig. 5.11). Only the part
+    // of the movement over the mesh's bounding box is cut so; what lies beyond is one piece each.
+    double enter = 0, leave = 1;  // the movement's part in the box (Liang-Barsky clipping)
+    for (std::size_t k = 0; k < 2; ++k) {
+        const double d = to[k] - from[k];
+        if (d == 0) {
+            if (from[k] < m_low[k] || from[k] > m_high[k]) enter = 1, leave = 0;
+            continue;
+        }
+        const double a = (m_low[k] - from[k]) / d, b = (m_high[k] - from[k]) / d;
+        enter = std::max(enter, std::min(a, b));
+        leave = std::min(leave, std::max(a, b));
+    }
+    std::vector<double> ends;  // where the pieces end, along the movement
+    if (enter < leave) {
+        if (enter > 0) ends.push_back(enter);
+        const double inside = (leave - enter) * distance(from, to);
+        const double pieces = std::min(std::ceil(inside / (0.25 * m_mean_edge)), 1e6);
+        for (double i = 1; i <= pieces; ++i) ends.push_back(enter + (leave - enter) * i / pieces);
+    }
+    if (ends.empty() || ends.back() < 1) ends.push_back(1);
     Point start = from;
-    for (std::size_t i = 1; i <= std::max<std::size_t>(pieces, 1); ++i) {
-        const Point end = i >= pieces ? to : lerp(from, to, static_cast<double>(i) / static_cast<double>(pieces));
+    for (const double s : ends) {
+        const Point end = s >= 1 ? to : lerp(from, to, s);
         if (auto moved = move_piece(start, end, report); !moved) return moved;
         start = end;
     }

@@ -94,7 +94,8 @@ public:
         app.add_option("PATH", options.path,
                        "Scalpel path: one sample per line, 'time x y' (docs/formats.md \"Tool paths\")")
             ->required();
-        app.add_option("OUT", options.output, "Output mesh, format by extension (.mesh .msh .off .obj .vtu)")->required();
+        app.add_option("OUT", options.output, "Output mesh, format by extension (.mesh .msh .off .obj .vtu)")
+            ->required();
         add_cut_options(app, options.cut);
         app.add_option("--svg", options.svg, "Draw the cut mesh with the path over it into FILE (SVG)")
             ->type_name("FILE");
@@ -117,7 +118,8 @@ public:
         if (const auto done = parse_command_line(app, args, "cut delaunay", out, err)) return *done;
 
         if (!format_from_extension(options.output)) {
-            err << "sxk: " << options.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+            err << "sxk: " << options.output
+                << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
             return 2;
         }
         ToolPath path;
@@ -206,7 +208,8 @@ public:
             err << "sxk: " << error.what() << '\n';
             return 1;
         }
-        const auto growth = static_cast<long long>(mesh->element_count()) - static_cast<long long>(before.element_count());
+        const auto growth =
+            static_cast<long long>(mesh->element_count()) - static_cast<long long>(before.element_count());
         if (options.json) {
             nlohmann::ordered_json json;
             json["file"] = options.input;
@@ -256,8 +259,9 @@ public:
                       total.flips, total.nodes_removed, total.incision_splits, total.edges_split,
                       total.faces_dissected, total.collapses);
         out << line;
+        const std::string undone_text = undone > 0 ? ", " + std::to_string(undone) + " steps undone" : "";
         std::snprintf(line, sizeof line, "  triangles %zu -> %zu (%+lld)%s\n", before.element_count(),
-                      mesh->element_count(), growth, undone > 0 ? (", " + std::to_string(undone) + " steps undone").c_str() : "");
+                      mesh->element_count(), growth, undone_text.c_str());
         out << line;
         std::snprintf(line, sizeof line, "  smallest angle %.1f -> %.1f degrees, largest %.1f -> %.1f degrees\n",
                       smallest(angles_before.smallest), smallest(angles_after.smallest), largest(angles_before.largest),

@@ -39,7 +39,7 @@ Outcome<DelaunayCutSession::DragEnd> DelaunayCutSession::drag(const Point& targe
     for (int round = 0; round < max_rounds; ++round) {
         remesh_around_active(report);
         if (m_state.phase == Phase::cutting) {
-            auto exited = try_exit(heading, target, report);
+            auto exited = try_exit(heading, target, report, false);
             if (!exited) return exited.refusal();
             if (*exited) return DragEnd::exited;
         }
@@ -58,7 +58,14 @@ Outcome<DelaunayCutSession::DragEnd> DelaunayCutSession::drag(const Point& targe
             const double floor = std::max(now / 4, least_height * m_mean_edge * distance(x, y));
             if (then < floor) s = std::min(s, (now - floor) / (now - then));
         }
-        if (s <= 0) {
+        // no way on (or one so short that the node would not move): the node is stuck; pressed
+        // against the boundary by a scalpel that went along or out of it, the cut ends there
+        if (s * distance(a, target) <= least_height * 1e-6 * m_mean_edge) {
+            if (m_state.phase == Phase::cutting) {
+                auto exited = try_exit(heading, target, report, true);
+                if (!exited) return exited.refusal();
+                if (*exited) return DragEnd::exited;
+            }
             report.lag = distance(a, target);
             report.lag_reason = "a triangle ahead of it is nearly flat, its far edge cannot be flipped and no node "
                                 "near it can be removed";

@@ -158,6 +158,8 @@ protected:
 
     Options m_options;
     double m_mean_edge;
+    // the mesh's bounding box when the session began, grown by a mean edge: the cuts stay in it
+    std::array<double, 2> m_low{}, m_high{};
     State m_state;
 
 private:

@@ -30,13 +30,16 @@ Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, co
         return Refusal{RefusalCode::wrong_dimension,
                        "delaunaycut: the planar cutter needs a triangle mesh in the plane (Dimension 2)"};
     if (mesh.element_count() == 0) return Refusal{RefusalCode::bad_argument, "delaunaycut: the mesh has no triangle"};
-    for (const auto& [name, value] : {std::pair{"eps-edge", options.eps_edge}, std::pair{"eps-entry", options.eps_entry},
+    for (const auto& [name, value] : {std::pair{"eps-edge", options.eps_edge},
+                                      std::pair{"eps-entry", options.eps_entry},
                                       std::pair{"eps-exit", options.eps_exit}})
         if (!(value > 0) || !std::isfinite(value))
             return Refusal{RefusalCode::bad_argument,
                            std::string("delaunaycut: --") + name + " must be positive and finite"};
     if (!(options.dilation >= 0 && options.dilation < 0.5))
         return Refusal{RefusalCode::bad_argument, "delaunaycut: --dilation must be in [0, 0.5)"};
+    if (!(options.short_angle >= 0 && options.short_angle < 90))
+        return Refusal{RefusalCode::bad_argument, "delaunaycut: --short-angle must be in [0, 90)"};
     // the walks read corners counter-clockwise: an inverted triangle would send them astray
     for (const ElementId t : elements(mesh))
         if (element_orientation(mesh, t, Positions::deformed) != Sign::positive)
@@ -48,12 +51,22 @@ Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, co
     // the mesh's pools into larger ones (17 ms at 1M triangles, in the step of the entry).
     mesh.reserve(mesh.vertex_count() + mesh.vertex_count() / 8 + 1024,
                  mesh.element_capacity() + mesh.element_capacity() / 8 + 1024);
-    if (options.method == Method::delaunay) return std::unique_ptr<PlanarCutSession>(new DelaunayCutSession(mesh, options, h));
+    if (options.method == Method::delaunay)
+        return std::unique_ptr<PlanarCutSession>(new DelaunayCutSession(mesh, options, h));
     return std::unique_ptr<PlanarCutSession>(new SubdivisionCutSession(mesh, options, h));
 }
 
 PlanarCutSession::PlanarCutSession(Mesh& mesh, const Options& options, double mean_edge)
-    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_index(mesh, Positions::deformed) {}
+    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_index(mesh, Positions::deformed) {
+    m_low = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    m_high = {-m_low[0], -m_low[1]};
+    for (const ElementId t : elements(mesh))
+        for (const VertexId v : mesh.simplex(t).vertices())
+            for (std::size_t k = 0; k < 2; ++k) {
+                m_low[k] = std::min(m_low[k], mesh.deformed(v)[k] - mean_edge);
+                m_high[k] = std::max(m_high[k], mesh.deformed(v)[k] + mean_edge);
+            }
+}
 
 PlanarCutSession::~PlanarCutSession() = default;
 
@@ -141,12 +154,9 @@ std::optional<PlanarCutSession::Entry> PlanarCutSession::first_entry(const Point
         const double along = std::clamp(a_from / (a_from - a_to), 0.0, 1.0);
         const Point point = lerp(from, to, along);
         const double edge_length = distance(pu, pv);
-        const double on_edge = at_u == Sign::zero ? 0
-                               : at_v == Sign::zero
-                                   ? 1
-                                   : std::clamp(((point[0] - pu[0]) * (pv[0] - pu[0]) + (point[1] - pu[1]) * (pv[1] - pu[1])) /
-                                                    (edge_length * edge_length),
-                                                0.0, 1.0);
+        const double projected =
+            ((point[0] - pu[0]) * (pv[0] - pu[0]) + (point[1] - pu[1]) * (pv[1] - pu[1])) / (edge_length * edge_length);
+        const double on_edge = at_u == Sign::zero ? 0 : at_v == Sign::zero ? 1 : std::clamp(projected, 0.0, 1.0);
         if (!first || along < first->along) first = Entry{u, v, along, on_edge, lerp(pu, pv, on_edge)};
     }
     return first;

@@ -12,7 +12,8 @@
 //              a                            a                  a' a             ...         ...
 //
 // The heading is the scalpel's movement and, when the node lags behind the scalpel, the direction to
-// the scalpel too (a scalpel that went out of the mesh sideways). A corner of the edge nearer the
+// the scalpel too (a scalpel that went out of the mesh sideways); a node that cannot move on at all
+// also looks at the boundary nodes of its ring (a scalpel running along the boundary). A corner of the edge nearer the
 // exit than eps_exit is the exit node itself (the edges the contraction makes are that short). The
 // boundary must be the far edge of a triangle of the active node (or one of its neighbours), so that
 // a-x is an edge; when it is one triangle further, the edge in between is flipped first. Otherwise
@@ -81,12 +82,23 @@ std::optional<BoundaryAhead> boundary_ahead(const Mesh& mesh, VertexId a, const 
 
 }  // namespace
 
-Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, const Point& target, CutStepReport& report) {
+Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, const Point& target, CutStepReport& report,
+                                           bool stuck) {
     for (int attempt = 0; attempt < 2; ++attempt) {
         const VertexId a = m_state.active;
         const Point pa = at(mesh(), a);
+        std::vector<Point> directions{heading, Point{target[0] - pa[0], target[1] - pa[1], 0}};
+        if (stuck) {
+            // the boundary nodes of the ring within reach, but for the incision's own (its two ends)
+            const Fan fan = fan_of(mesh(), a);
+            for (std::size_t i = 1; i + 1 < fan.ring.size(); ++i) {
+                const Point& p = at(mesh(), fan.ring[i]);
+                if (distance(p, pa) <= eps_exit() && on_boundary(mesh(), fan.ring[i]))
+                    directions.push_back({p[0] - pa[0], p[1] - pa[1], 0});
+            }
+        }
         std::optional<BoundaryAhead> ahead;
-        for (const Point& direction : {heading, Point{target[0] - pa[0], target[1] - pa[1], 0}}) {
+        for (const Point& direction : directions) {
             const double length = std::hypot(direction[0], direction[1]);
             if (length == 0) continue;
             const double reach = eps_exit() / length;

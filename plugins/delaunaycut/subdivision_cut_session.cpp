@@ -45,7 +45,8 @@ Outcome<Done> SubdivisionCutSession::move(const Point& from, const Point& to, Cu
         const VertexId last = m_state.active;
         const Point start = at(mesh(), last);
         const ElementId t = triangle_entered(mesh(), last, start, to);
-        if (t == invalid_id) return Refusal{RefusalCode::internal_error, "subdivision: the cut's last node is in no triangle"};
+        if (t == invalid_id)
+            return Refusal{RefusalCode::internal_error, "subdivision: the cut's last node is in no triangle"};
         const Leaving leaving = leave_triangle(mesh(), t, start, to, last, invalid_id);
         // `to` in a triangle of the last node, or back across the incision: the cut waits there
         if (leaving.kind == Leaving::Kind::stays) return Done{};

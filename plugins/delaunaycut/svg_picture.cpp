@@ -57,7 +57,8 @@ std::string mesh_svg(const Mesh& mesh, std::span<const Point> path, int cut_labe
            "</text>\n<g fill=\"#f4f4f0\" stroke=\"#9a9a9a\" stroke-width=\"0.7\" stroke-linejoin=\"round\">\n";
     for (const ElementId t : elements(mesh)) {
         svg += "<polygon points=\"";
-        for (const VertexId v : mesh.simplex(t).vertices()) svg += x_of(mesh.deformed(v)) + "," + y_of(mesh.deformed(v)) + " ";
+        for (const VertexId v : mesh.simplex(t).vertices())
+            svg += x_of(mesh.deformed(v)) + "," + y_of(mesh.deformed(v)) + " ";
         svg += "\"/>\n";
     }
     svg += "</g>\n";
@@ -105,14 +106,16 @@ std::string angle_histogram_svg(const std::string& title, std::span<const AngleS
     }
     const double left = 50, bottom = 330, plot_width = 720, plot_height = 260;
     const double bin_width = plot_width / bins;
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"380\" font-family=\"sans-serif\">\n"
-                      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"50\" y=\"28\" font-size=\"15\">" +
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"380\" "
+                      "font-family=\"sans-serif\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+                      "<text x=\"50\" y=\"28\" font-size=\"15\">" +
                       escaped(title) + "</text>\n";
     for (std::size_t s = 0; s < series.size(); ++s) {
         const double bar = bin_width / static_cast<double>(series.size() + 1);
         svg += "<g fill=\"" + std::string(colours[s % 4]) + "\">\n";
         for (int b = 0; b < bins; ++b) {
-            const double h = plot_height * static_cast<double>(counts[s][static_cast<std::size_t>(b)]) / static_cast<double>(most);
+            const auto count = static_cast<double>(counts[s][static_cast<std::size_t>(b)]);
+            const double h = plot_height * count / static_cast<double>(most);
             if (h == 0) continue;
             svg += "<rect x=\"" + number(left + b * bin_width + static_cast<double>(s) * bar + bar / 2) + "\" y=\"" +
                    number(bottom - h) + "\" width=\"" + number(bar) + "\" height=\"" + number(h) + "\"/>\n";

@@ -105,8 +105,9 @@ TEST(SxkCutDelaunay, BadPathsAndMeshesAreRefusedWithTheirLine) {
     ASSERT_EQ(sxk({"generate", cube.string(), "--cells", "1"}).exit_code, 0);
     const ProcessResult tetrahedra = sxk({"cut", "delaunay", cube.string(), f.curve, f.out.string()});
     EXPECT_EQ(tetrahedra.exit_code, 2);
-    EXPECT_EQ(tetrahedra.err, "sxk: " + cube.string() +
-                                  ":0: delaunaycut: the planar cutter needs a triangle mesh in the plane (Dimension 2)\n");
+    EXPECT_EQ(tetrahedra.err,
+              "sxk: " + cube.string() +
+                  ":0: delaunaycut: the planar cutter needs a triangle mesh in the plane (Dimension 2)\n");
     const ProcessResult option = f.cut(f.curve, {"--eps-edge", "0"});
     EXPECT_EQ(option.exit_code, 2);
     EXPECT_NE(option.err.find("--eps-edge: '0' is not in (0, 10]"), std::string::npos) << option.err;

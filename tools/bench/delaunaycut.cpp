@@ -78,7 +78,8 @@ Latency latency(const Mesh& input, const std::vector<Point>& path, Method method
                 std::fprintf(stderr, "delaunaycut: step %zu refused: %s\n", i, stepped.reason().c_str());
                 std::exit(1);
             }
-            const double t = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const auto took = std::chrono::steady_clock::now() - start;
+            const double t = std::chrono::duration<double, std::milli>(took).count();
             if (i > 0) ms.push_back(t);
         }
         (*session)->end();
@@ -186,7 +187,8 @@ int main(int argc, char** argv) {
             worst[m] = std::min(worst[m], smallest);
         }
     }
-    std::fprintf(stderr, "100 random paths on the jittered 19 x 19 grid (722 triangles): growth %.1f (Delaunay) vs %.1f "
+    std::fprintf(stderr, "100 random paths on the jittered 19 x 19 grid (722 triangles): growth %.1f (Delaunay) vs "
+                         "%.1f "
                          "(subdivision); smallest angle mean %.2f vs %.2f degrees, worst %.2f vs %.3f\n",
                  growth[0], growth[1], angle[0], angle[1], worst[0], worst[1]);
     line("delaunaycut/random/growth", "triangles", growth[0], growth[1], "subdivision", "lower");
