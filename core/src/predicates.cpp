@@ -34,6 +34,41 @@ Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d, co
                                                  to_cgal_3(d), to_cgal_3(e)));
 }
 
+Sign unfolded_incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+    using P = detail::ExactKernel::Point_3;
+    using FT = detail::ExactKernel::FT;
+    auto exact = [](const Point& p) { return P(p[0], p[1], p[2]); };
+    const P pa = exact(a), pb = exact(b), pc = exact(c), pd = exact(d);
+    const auto u = pa - pc, v = pb - pc, s = pa - pd, t = pb - pd;
+    // the angle at c: cos ~ dot_c, sin ~ |cross_c| (same positive factor |u||v|); so at d
+    const FT dot_c = u * v, dot_d = s * t;
+    const FT cross_c2 = CGAL::cross_product(u, v).squared_length();
+    const FT cross_d2 = CGAL::cross_product(s, t).squared_length();
+    // sin(gamma_c + gamma_d) ~ X = |cross_c| dot_d + dot_c |cross_d|; the edge fails when X < 0
+    const CGAL::Sign first = CGAL::sign(dot_d) * (cross_c2 == 0 ? CGAL::ZERO : CGAL::POSITIVE);
+    const CGAL::Sign second = CGAL::sign(dot_c) * (cross_d2 == 0 ? CGAL::ZERO : CGAL::POSITIVE);
+    CGAL::Sign x = CGAL::ZERO;
+    if (first == second || second == CGAL::ZERO) {
+        x = first;
+    } else if (first == CGAL::ZERO) {
+        x = second;
+    } else {
+        // opposite signs: the larger magnitude wins, compared by squares
+        const CGAL::Comparison_result larger =
+            CGAL::compare(cross_c2 * dot_d * dot_d, dot_c * dot_c * cross_d2);
+        x = larger == CGAL::LARGER ? first : larger == CGAL::SMALLER ? second : CGAL::ZERO;
+    }
+    if (x != CGAL::ZERO) return to_sign(CGAL::opposite(x));
+    // sin = 0: the sum is 0 or pi or 2 pi; it is pi exactly when the cosine is -1, i.e. the two
+    // angles' cosines have opposite signs or both are 0 (two right angles); 2 pi cannot happen
+    // for angles of at most pi each unless both are pi (flat triangles): also "more than pi" no.
+    const CGAL::Sign cos_c = CGAL::sign(dot_c), cos_d = CGAL::sign(dot_d);
+    if (cos_c == CGAL::ZERO && cos_d == CGAL::ZERO) return Sign::zero;
+    if (cos_c != cos_d && cos_c != CGAL::ZERO && cos_d != CGAL::ZERO) return Sign::zero;
+    // both angles 0 (sum 0: legal) or both pi (sum 2 pi: fails)
+    return cos_c == CGAL::NEGATIVE ? Sign::positive : Sign::negative;
+}
+
 bool collinear(const Point& a, const Point& b, const Point& c) {
     return CGAL::collinear(to_cgal_3(a), to_cgal_3(b), to_cgal_3(c));
 }

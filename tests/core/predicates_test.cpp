@@ -50,6 +50,41 @@ TEST(Predicates, InCircleAndInSphere) {
     EXPECT_EQ(insphere(a, b, c, d, {2, 2, 2}), Sign::negative);
 }
 
+// The unfolded test of an edge a-b between (a, b, c) and (b, a, d): in the plane it is incircle for
+// a convex quadrilateral; folding (b, a, d) about the edge changes nothing; ties are exact.
+TEST(Predicates, UnfoldedIncircleIsIncircleInThePlaneAndDoesNotSeeTheFold) {
+    std::mt19937_64 random(test::seed_for("Predicates.UnfoldedIncircle"));
+    std::uniform_real_distribution<double> coordinate(0.05, 1.5);
+    std::size_t failing = 0, compared = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Point a{0, 0, 0}, b{2, 0, 0};
+        const Point c{coordinate(random), coordinate(random), 0};   // above the edge
+        const Point d{coordinate(random), -coordinate(random), 0};  // below
+        if (orient2d(a, d, b) != Sign::positive || orient2d(d, b, c) != Sign::positive ||
+            orient2d(b, c, a) != Sign::positive || orient2d(c, a, d) != Sign::positive)
+            continue;  // only convex quadrilaterals a d b c
+        ++compared;
+        const Sign planar = incircle(a, b, c, d);
+        EXPECT_EQ(unfolded_incircle(a, b, c, d), planar) << trial;
+        failing += planar == Sign::positive;
+        // fold (b, a, d) about the x axis by a right angle: d = (x, -y, 0) -> (x, 0, -y), exactly
+        const Point folded{d[0], 0, d[1]};
+        EXPECT_EQ(unfolded_incircle(a, b, c, folded), planar) << trial;
+    }
+    EXPECT_GT(compared, 500u);
+    EXPECT_GT(failing, 50u);
+    EXPECT_LT(failing, compared - 50);
+    // two right angles, one of them folded out of the plane: the sum is pi exactly
+    EXPECT_EQ(unfolded_incircle({0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0, 1}), Sign::zero);
+    // a hair more or less than a right angle at d
+    const Point a{0, 0, 0}, b{2, 0, 0}, c{1, 1, 0};
+    EXPECT_EQ(unfolded_incircle(a, b, c, {1, 0, std::nextafter(1.0, 0.0)}), Sign::positive);
+    EXPECT_EQ(unfolded_incircle(a, b, c, {1, 0, std::nextafter(1.0, 2.0)}), Sign::negative);
+    // degenerate triangles: c on the edge (an angle of pi) fails with any d; beyond its end (0) not
+    EXPECT_EQ(unfolded_incircle({0, 0, 0}, {2, 0, 0}, {1, 0, 0}, {1, -1, 0}), Sign::positive);
+    EXPECT_EQ(unfolded_incircle({0, 0, 0}, {2, 0, 0}, {3, 0, 0}, {1, -5, 0}), Sign::negative);
+}
+
 TEST(Predicates, ElementOrientationHonoursTheSimplexSign) {
     Mesh mesh = test::kuhn_cube(1);
     for (ElementId t : elements(mesh))

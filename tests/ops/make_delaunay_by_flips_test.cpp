@@ -7,6 +7,7 @@
 //          \   /                  \ | /
 //            1                      1
 #include "sxk/ops/make_delaunay_by_flips.hpp"
+#include "sxk/ops/flip_edge.hpp"
 
 #include <gtest/gtest.h>
 
@@ -169,6 +170,34 @@ TEST(MakeDelaunayByFlips, RefusesSurfaceMesh) {
     EXPECT_EQ(flips.code(), RefusalCode::wrong_dimension);
     test::expect_same_state(mesh, copy);
     ASSERT_TRUE(mesh.validate().ok());
+}
+
+// On a surface in space the two triangles of an edge are unfolded about it (thesis §5.3.1): a kite
+// folded along its long diagonal 0-2 keeps that diagonal illegal, however far it is folded; after
+// the flip the short diagonal 1-3 is legal.
+TEST(MakeDelaunayByFlips, UnfoldsTheTrianglesOfAnEdgeOnASurface) {
+    for (const double fold : {0.0, 1.0, 3.0}) {
+        Mesh mesh(2, 3);
+        mesh.add_vertex({0, 0, 0});        // 0
+        mesh.add_vertex({2, -0.6, 0});     // 1: below the diagonal 0-2
+        mesh.add_vertex({4, 0, 0});        // 2
+        mesh.add_vertex({2, 0.6, fold});   // 3: above it, folded up by `fold`
+        // the angle at 1 opposite 0-2 is 147 degrees, at 3 from 147 (flat) down to 66 (fold 3): the
+        // two sum to more than 180 in every fold
+        const std::array<Simplex, 2> triangles{Simplex(+1, {0, 1, 2}), Simplex(+1, {0, 2, 3})};
+        ASSERT_TRUE(mesh.assign_elements(triangles).ok());
+        FaceId diagonal = invalid_id;
+        for (const FaceId f : mesh.faces(ElementId{0}))
+            if (mesh.mate(f) != invalid_id) diagonal = f;
+        ASSERT_NE(diagonal, invalid_id);
+        EXPECT_FALSE(is_locally_delaunay(mesh, diagonal)) << "fold " << fold;
+        auto flipped = flip_edge(mesh, diagonal);
+        ASSERT_TRUE(flipped.ok()) << flipped.reason();
+        for (const FaceId f : mesh.faces((*flipped)[0])) {
+            if (mesh.mate(f) != invalid_id) EXPECT_TRUE(is_locally_delaunay(mesh, f)) << "fold " << fold;
+        }
+        ASSERT_TRUE(mesh.validate().ok());
+    }
 }
 
 TEST(MakeDelaunayByFlips, RefusesClockwiseTriangle) {

@@ -22,6 +22,17 @@ SXK_API Sign incircle(const Point& a, const Point& b, const Point& c, const Poin
 SXK_API Sign insphere(const Point& a, const Point& b, const Point& c, const Point& d,
                       const Point& e);
 
+// The empty-circle test of two triangles (a, b, c) and (b, a, d) that share the edge a-b, unfolded
+// into one plane about that edge (thesis §5.3.1: "the incident triangles are unfolded to be
+// coplanar, and then the two-dimensional criterion is used"): positive when the angles at c and d
+// opposite the edge sum to more than pi (d would lie inside the circle through a, b and c: the edge
+// is not locally Delaunay), zero when they sum to pi exactly, negative when less. Any ambient
+// dimension; in the plane, for a convex quadrilateral a d b c, it is incircle(a, b, c, d). Decided
+// exactly: sin(gamma_c + gamma_d) has the sign of |u x v| (s . t) + (u . v) |s x t| (u, v the
+// edges from c, s, t those from d), whose sign the squares of its two terms decide when theirs
+// differ. A degenerate triangle (c or d on the line a-b) counts as an angle of 0 or pi.
+SXK_API Sign unfolded_incircle(const Point& a, const Point& b, const Point& c, const Point& d);
+
 // True when a, b, c lie on one line (exactly; any ambient dimension).
 SXK_API bool collinear(const Point& a, const Point& b, const Point& c);
 // Sign of the dot product of the normals (b-a)x(c-a) and (e-d)x(f-d) of two triangles in

@@ -21,7 +21,7 @@ bool is_planar_triangle_mesh(const Mesh& mesh) {
 }  // namespace
 
 bool is_locally_delaunay(const Mesh& mesh, FaceId edge, Positions positions) {
-    if (!is_planar_triangle_mesh(mesh) || !mesh.is_face(edge)) return true;
+    if (mesh.topological_dimension() != 2 || !mesh.is_face(edge)) return true;
     const FaceId mate = mesh.mate(edge);
     if (mate == invalid_id) return true;
     const Simplex edge_simplex = mesh.face_simplex(edge);
@@ -33,6 +33,9 @@ bool is_locally_delaunay(const Mesh& mesh, FaceId edge, Positions positions) {
     const Point& pa = position(mesh, a, positions);
     const Point& pb = position(mesh, b, positions);
     const Point& pc = position(mesh, c, positions);
+    // a surface in space: the two triangles unfolded about the edge (thesis §5.3.1)
+    if (mesh.ambient_dimension() == 3)
+        return unfolded_incircle(pa, pb, pc, position(mesh, d, positions)) != Sign::positive;
     // incircle needs a counter-clockwise circle; anything else is outside this contract
     if (orient2d(pa, pb, pc) != Sign::positive) return true;
     return incircle(pa, pb, pc, position(mesh, d, positions)) != Sign::positive;

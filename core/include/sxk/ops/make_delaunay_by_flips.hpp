@@ -25,8 +25,10 @@ namespace sxk {
 // True when `edge` is on the boundary, or when the vertex d opposite it in the mate's element
 // does not lie strictly inside the circumcircle of the edge's element <a,b,c> (exact incircle in
 // the chosen positions). Cocircular quadrilaterals are locally Delaunay both ways.
-// Requires a planar triangle mesh (topological and ambient dimension 2) whose two triangles at
-// `edge` are counter-clockwise; returns true for anything else (nothing to flip there).
+// Planar triangle meshes (topological and ambient dimension 2) whose two triangles at `edge` are
+// counter-clockwise; on a triangle surface in space the two triangles are unfolded about the edge
+// (exact unfolded_incircle, sxk/predicates.hpp: the angles opposite the edge sum to more than pi
+// when it is not). Returns true for anything else (nothing to flip there).
 SXK_API bool is_locally_delaunay(const Mesh& mesh, FaceId edge,
                                  Positions positions = Positions::deformed);
 
