@@ -2,6 +2,8 @@
 #include "sxk/traversal.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 #include "star_walk.hpp"
 
@@ -44,6 +46,44 @@ std::vector<ElementId> star(const Mesh& mesh, VertexId v) {
     std::vector<ElementId> out;
     collect_star(mesh, v, mesh.vertex_element(v), out);
     return out;
+}
+
+VertexFan fan_around(const Mesh& mesh, VertexId v) {
+    VertexFan fan;
+    if (mesh.topological_dimension() != 2 || v >= mesh.vertex_count()) return fan;
+    const std::vector<ElementId> around = star(mesh, v);
+    if (around.empty()) return fan;
+    // each triangle in its positive vertex order, rotated to start at v: <v, x, y>
+    std::vector<std::pair<VertexId, VertexId>> sides;
+    sides.reserve(around.size());
+    for (const ElementId t : around) {
+        const Simplex& s = mesh.simplex(t);
+        std::array<VertexId, 3> order = s.sign() > 0 ? std::array<VertexId, 3>{s.vertex(0), s.vertex(1), s.vertex(2)}
+                                                     : std::array<VertexId, 3>{s.vertex(1), s.vertex(0), s.vertex(2)};
+        while (order[0] != v) std::rotate(order.begin(), order.begin() + 1, order.end());
+        sides.emplace_back(order[1], order[2]);
+    }
+    // an open fan starts at the triangle whose x no triangle ends at; a closed one anywhere
+    std::size_t i = 0;
+    for (std::size_t k = 0; k < sides.size(); ++k)
+        if (std::none_of(sides.begin(), sides.end(), [&](const auto& e) { return e.second == sides[k].first; })) {
+            i = k;
+            break;
+        }
+    fan.ring.push_back(sides[i].first);
+    for (std::size_t k = 0; k < sides.size(); ++k) {
+        fan.triangles.push_back(around[i]);
+        const VertexId next = sides[i].second;
+        const auto found = std::find_if(sides.begin(), sides.end(), [&](const auto& e) { return e.first == next; });
+        if (next == fan.ring.front() || found == sides.end()) {
+            fan.closed = next == fan.ring.front();
+            if (!fan.closed) fan.ring.push_back(next);
+            break;
+        }
+        fan.ring.push_back(next);
+        i = static_cast<std::size_t>(found - sides.begin());
+    }
+    return fan;
 }
 
 std::vector<ElementId> stars_of(const Mesh& mesh, std::span<const VertexId> vertices) {

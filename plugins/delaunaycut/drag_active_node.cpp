@@ -49,7 +49,7 @@ Outcome<DelaunayCutSession::DragEnd> DelaunayCutSession::drag(const Point& targe
             return DragEnd::fix_up_due;
         if (a[0] == target[0] && a[1] == target[1]) return DragEnd::reached;
         // how far towards the target the star lets the node go
-        const Fan fan = fan_of(mesh(), active);
+        const VertexFan fan = fan_around(mesh(), active);
         double s = 1;
         for (std::size_t i = 0; i < fan.triangles.size(); ++i) {
             const Point& x = at(mesh(), fan.ring[i]);
@@ -99,7 +99,7 @@ void DelaunayCutSession::remesh_around_active(CutStepReport& report) {
 
 bool DelaunayCutSession::remove_close_node(CutStepReport& report) {
     const Point a = at(mesh(), m_state.active);
-    const Fan fan = fan_of(mesh(), m_state.active);
+    const VertexFan fan = fan_around(mesh(), m_state.active);
     // (how close, node): by distance (eps_edge), or by the larger angle opposite the edge (§5.5)
     std::vector<std::pair<double, VertexId>> close;
     for (std::size_t i = 0; i < fan.ring.size(); ++i) {

@@ -22,8 +22,8 @@ namespace sxk::delaunaycut {
 
 Outcome<bool> DelaunayCutSession::fix_up(CutStepReport& report) {
     const VertexId a = m_state.active;
-    const Fan fan = fan_of(mesh(), a);
-    if (!fan.boundary) return false;
+    const VertexFan fan = fan_around(mesh(), a);
+    if (fan.closed) return false;
     const VertexId after = fan.ring.front(), before = fan.ring.back();
     const std::array<VertexId, 1> parent{a};
     const std::array<double, 1> weight{1.0};

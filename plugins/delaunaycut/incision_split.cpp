@@ -20,8 +20,8 @@ namespace sxk::delaunaycut {
 void DelaunayCutSession::split_incision(CutStepReport& report) {
     for (int split = 0; split < 8; ++split) {
         const VertexId a = m_state.active;
-        const Fan fan = fan_of(mesh(), a);
-        if (!fan.boundary || fan.triangles.size() < 3) return;
+        const VertexFan fan = fan_around(mesh(), a);
+        if (fan.closed || fan.triangles.size() < 3) return;
         const VertexId c1 = fan.ring.front(), o1 = fan.ring[1];
         const VertexId c2 = fan.ring.back(), o2 = fan.ring[fan.ring.size() - 2];
         // copies: the splits below add vertices, which may move the positions' storage

@@ -18,40 +18,6 @@ std::array<VertexId, 3> corners_from(const Mesh& mesh, ElementId t, VertexId fir
     return ccw;
 }
 
-Fan fan_of(const Mesh& mesh, VertexId v) {
-    Fan fan;
-    const std::vector<ElementId> around = star(mesh, v);
-    if (around.empty()) return fan;
-    std::vector<std::array<VertexId, 3>> corners;
-    corners.reserve(around.size());
-    for (const ElementId t : around) corners.push_back(corners_from(mesh, t, v));
-    // a boundary fan starts at the triangle whose first ring vertex no triangle ends at
-    std::size_t start = 0;
-    for (std::size_t i = 0; i < corners.size(); ++i) {
-        const bool entered = std::any_of(corners.begin(), corners.end(),
-                                         [&](const auto& c) { return c[2] == corners[i][1]; });
-        if (!entered) {
-            start = i;
-            fan.boundary = true;
-            break;
-        }
-    }
-    std::size_t i = start;
-    fan.ring.push_back(corners[i][1]);
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-        fan.triangles.push_back(around[i]);
-        const VertexId next = corners[i][2];
-        if (k + 1 == corners.size()) {
-            if (fan.boundary) fan.ring.push_back(next);
-            break;
-        }
-        fan.ring.push_back(next);
-        const auto found = std::find_if(corners.begin(), corners.end(), [&](const auto& c) { return c[1] == next; });
-        i = static_cast<std::size_t>(found - corners.begin());
-    }
-    return fan;
-}
-
 bool on_boundary(const Mesh& mesh, VertexId v) {
     for (const ElementId t : star(mesh, v))
         for (int i = 0; i < 3; ++i)

@@ -1,4 +1,4 @@
-// The triangles around a vertex in order, and a segment's walk through a planar triangle mesh:
+// A segment's walk through a planar triangle mesh, and where a vertex may go:
 // what both cutting methods ask of the mesh near the scalpel (planar_cut.hpp). Every decision is an
 // exact orientation test (orient2d) on the deformed positions; only the points where a segment
 // crosses an edge are computed in doubles.
@@ -12,6 +12,7 @@
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
 #include "sxk/predicates.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk::delaunaycut {
 
@@ -28,18 +29,6 @@ inline double area2(const Point& a, const Point& b, const Point& c) {
 // The corners of triangle t counter-clockwise (as every triangle of a valid oriented planar mesh
 // is), starting at `first` (a corner of t).
 std::array<VertexId, 3> corners_from(const Mesh& mesh, ElementId t, VertexId first);
-
-// star(v) in counter-clockwise order: triangles[i] = (v, ring[i], ring[i+1]). Around an interior
-// vertex the ring closes (ring has as many vertices as there are triangles, ring[n] = ring[0]);
-// around a boundary vertex it runs from the boundary edge v-ring[0] (the mesh on its left) to the
-// boundary edge ring[n]-v, and has n+1 vertices. Empty for a vertex in no element.
-struct Fan {
-    std::vector<ElementId> triangles;
-    std::vector<VertexId> ring;
-    bool boundary = false;
-    VertexId next(std::size_t i) const { return ring[(i + 1) % ring.size()]; }
-};
-Fan fan_of(const Mesh& mesh, VertexId v);
 
 bool on_boundary(const Mesh& mesh, VertexId v);
 // The edge u-v, as one of its faces (the mesh on its left when it is on the boundary), or none.

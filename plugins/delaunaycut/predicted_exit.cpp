@@ -90,7 +90,7 @@ Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, const Point& ta
         std::vector<Point> directions{heading, Point{target[0] - pa[0], target[1] - pa[1], 0}};
         if (stuck) {
             // the boundary nodes of the ring within reach, but for the incision's own (its two ends)
-            const Fan fan = fan_of(mesh(), a);
+            const VertexFan fan = fan_around(mesh(), a);
             for (std::size_t i = 1; i + 1 < fan.ring.size(); ++i) {
                 const Point& p = at(mesh(), fan.ring[i]);
                 if (distance(p, pa) <= eps_exit() && on_boundary(mesh(), fan.ring[i]))
@@ -151,8 +151,8 @@ Outcome<bool> DelaunayCutSession::try_exit(const Point& heading, const Point& ta
         // the boundary edges at the exit are not entries until the scalpel is away from it
         m_state.forbidden.clear();
         for (const VertexId e : exits) {
-            const Fan fan = fan_of(mesh(), e);
-            if (!fan.boundary) continue;
+            const VertexFan fan = fan_around(mesh(), e);
+            if (fan.closed) continue;
             m_state.forbidden.push_back({e, fan.ring.front()});
             m_state.forbidden.push_back({fan.ring.back(), e});
         }

@@ -26,6 +26,20 @@ SXK_API std::vector<ElementId> star(const Mesh& mesh, VertexId v);
 SXK_API void collect_star(const Mesh& mesh, VertexId v, ElementId start,
                           std::vector<ElementId>& out);
 
+// star(v) of a triangle mesh (planar or a surface in space) in order around v: triangles[i] is
+// <v, ring[i], ring[i+1]> in its positive vertex order (counter-clockwise in the plane). Around an
+// interior vertex the ring closes (as many ring vertices as triangles; next(n-1) is ring[0]);
+// around a boundary vertex it runs from the boundary edge v-ring[0] to the boundary edge
+// ring[n]-v and has n+1 vertices. Empty for a vertex in no element or a mesh of tetrahedra.
+// O(d^2) in the degree d (stars of triangle meshes are small).
+struct VertexFan {
+    std::vector<ElementId> triangles;
+    std::vector<VertexId> ring;
+    bool closed = false;
+    VertexId next(std::size_t i) const { return ring[(i + 1) % ring.size()]; }
+};
+SXK_API VertexFan fan_around(const Mesh& mesh, VertexId v);
+
 // The elements of the stars of `vertices` (vertices in no element or out of range skipped),
 // sorted, each once: what an edit that moved or split those vertices touched.
 SXK_API std::vector<ElementId> stars_of(const Mesh& mesh, std::span<const VertexId> vertices);

@@ -44,47 +44,6 @@ bool in_closed_triangle(const Mesh& mesh, VertexId u, const Triangle& t, Positio
     return true;
 }
 
-// The link of v in counter-clockwise order: a cycle w_0, ..., w_{n-1} (triangle i of the star
-// is <v, w_i, w_{i+1 mod n}>) for an interior vertex, or a path w_0, ..., w_n (triangle i is
-// <v, w_i, w_{i+1}>) for a boundary vertex, whose boundary edges are w_n-v and v-w_0.
-struct Link {
-    std::vector<VertexId> vertices;
-    bool closed = false;
-};
-
-Link link_of(const Mesh& mesh, VertexId v, const std::vector<ElementId>& around) {
-    // each star triangle, in its positive vertex order rotated to start at v, is <v, x, y>
-    std::vector<std::pair<VertexId, VertexId>> link_edges;
-    for (ElementId t : around) {
-        const Simplex& s = mesh.simplex(t);
-        Triangle order = s.sign() > 0 ? Triangle{s.vertex(0), s.vertex(1), s.vertex(2)}
-                                      : Triangle{s.vertex(1), s.vertex(0), s.vertex(2)};
-        while (order[0] != v)
-            std::rotate(order.begin(), order.begin() + 1, order.end());
-        link_edges.emplace_back(order[1], order[2]);
-    }
-    // a path starts at the one source that is no edge's target; a cycle anywhere
-    VertexId first = link_edges.front().first;
-    for (const auto& edge : link_edges)
-        if (std::none_of(link_edges.begin(), link_edges.end(),
-                         [&](const auto& e) { return e.second == edge.first; }))
-            first = edge.first;
-    Link link{{first}, false};
-    while (link.vertices.size() <= link_edges.size()) {
-        const auto next = std::find_if(link_edges.begin(), link_edges.end(), [&](const auto& e) {
-            return e.first == link.vertices.back();
-        });
-        if (next == link_edges.end())
-            break;
-        if (next->second == link.vertices.front()) {
-            link.closed = true;
-            break;
-        }
-        link.vertices.push_back(next->second);
-    }
-    return link;
-}
-
 // v lies on the open segment w-u, exactly (in both position sets): the boundary is straight
 // at v, and removing v keeps the domain.
 bool strictly_between(const Mesh& mesh, VertexId w, VertexId v, VertexId u) {
@@ -154,11 +113,12 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
         return Refusal{RefusalCode::not_applicable,
                        "remove_node: " + vertex_text + " is in no element"};
 
-    const Link link = link_of(mesh, v, around);
-    const bool interior = link.closed && link.vertices.size() == around.size();
+    // w_0, ..., w_{n-1} around an interior vertex, w_0, ..., w_n on the boundary
+    const VertexFan link = fan_around(mesh, v);
+    const bool interior = link.closed && link.ring.size() == around.size();
     const bool straight_boundary =
-        !link.closed && link.vertices.size() == around.size() + 1 &&
-        strictly_between(mesh, link.vertices.back(), v, link.vertices.front());
+        !link.closed && link.ring.size() == around.size() + 1 &&
+        strictly_between(mesh, link.ring.back(), v, link.ring.front());
     if (!interior && !straight_boundary)
         return Refusal{
             RefusalCode::moves_boundary,
@@ -176,8 +136,8 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
             const auto it = mesh.face_labels().find(edge_key(a, b));
             return it == mesh.face_labels().end() ? std::nullopt : std::optional<int>(it->second);
         };
-        const std::optional<int> before = label_of(link.vertices.back(), v),
-                                 after = label_of(v, link.vertices.front());
+        const std::optional<int> before = label_of(link.ring.back(), v),
+                                 after = label_of(v, link.ring.front());
         auto text = [](const std::optional<int>& label) {
             return label ? std::to_string(*label) : std::string("none");
         };
@@ -190,9 +150,9 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
     }
     // An interior edge v-w carrying a face label (a constraint: an interface drawn as edges)
     // would vanish with v; on an open link the first and last edges are the boundary ones above.
-    for (std::size_t i = 0; i < link.vertices.size(); ++i) {
-        if (!link.closed && (i == 0 || i + 1 == link.vertices.size())) continue;
-        const auto it = mesh.face_labels().find(edge_key(v, link.vertices[i]));
+    for (std::size_t i = 0; i < link.ring.size(); ++i) {
+        if (!link.closed && (i == 0 || i + 1 == link.ring.size())) continue;
+        const auto it = mesh.face_labels().find(edge_key(v, link.ring[i]));
         if (it != mesh.face_labels().end())
             return Refusal{RefusalCode::label_conflict,
                            "remove_node: the edge " + to_text(it->first) + " at " + vertex_text +
@@ -216,7 +176,7 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
                        std::to_string(mesh.label(*highest))};
 
     // Ear clipping on the scratch polygon (thesis: flip ears until v has degree 3).
-    std::vector<VertexId> polygon = link.vertices;
+    std::vector<VertexId> polygon = link.ring;
     std::vector<Triangle> triangles;
     auto ear_at = [&](std::size_t i) {
         const std::size_t n = polygon.size();
@@ -273,9 +233,9 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
     if (!replaced)
         return replaced.refusal().prefixed("remove_node: ");
     if (boundary_label) {
-        mesh.erase_face_label(edge_key(link.vertices.back(), v));
-        mesh.erase_face_label(edge_key(v, link.vertices.front()));
-        mesh.set_face_label(edge_key(link.vertices.back(), link.vertices.front()), *boundary_label);
+        mesh.erase_face_label(edge_key(link.ring.back(), v));
+        mesh.erase_face_label(edge_key(v, link.ring.front()));
+        mesh.set_face_label(edge_key(link.ring.back(), link.ring.front()), *boundary_label);
     }
     return std::move(*replaced);
 }
