@@ -120,3 +120,32 @@ TEST(StarList, GivesThePositionsOfAScannedList) {
 
 }  // namespace
 }  // namespace sxk
+
+namespace sxk {
+namespace {
+
+// fan_around on the planar 2 x 2 grid (vertex (i,j) is 3j + i): the centre's six triangles close
+// around it counter-clockwise; a side vertex's three run from one boundary edge to the other; every
+// triangle i of a fan is <v, ring[i], ring[i+1]> in its positive order.
+TEST(Traversal, FanAroundListsTheTrianglesInOrder) {
+    const Mesh mesh = test::planar_grid(2);
+    const VertexFan centre = fan_around(mesh, 4);
+    EXPECT_TRUE(centre.closed);
+    ASSERT_EQ(centre.triangles.size(), 6u);
+    ASSERT_EQ(centre.ring.size(), 6u);
+    const VertexFan side = fan_around(mesh, 1);  // (1, 0)
+    EXPECT_FALSE(side.closed);
+    ASSERT_EQ(side.triangles.size(), 3u);
+    ASSERT_EQ(side.ring.size(), 4u);
+    EXPECT_EQ(side.ring.front(), 2u);  // the boundary edge 1-2 has the mesh on its left
+    EXPECT_EQ(side.ring.back(), 0u);   // and so has 0-1
+    for (const VertexFan* fan : {&centre, &side})
+        for (std::size_t i = 0; i < fan->triangles.size(); ++i) {
+            const VertexId v = fan == &centre ? 4 : 1;
+            EXPECT_EQ(mesh.simplex(fan->triangles[i]), Simplex(+1, {v, fan->ring[i], fan->next(i)}));
+        }
+    EXPECT_TRUE(fan_around(test::kuhn_cube(1), 0).triangles.empty());  // tetrahedra: no fan
+}
+
+}  // namespace
+}  // namespace sxk
