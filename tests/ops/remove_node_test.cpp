@@ -9,6 +9,7 @@
 #include <set>
 
 #include "ops/split_collapse_fixtures.hpp"
+#include "sxk/ops/flip_edge.hpp"
 #include "sxk/ops/make_delaunay_by_flips.hpp"
 #include "sxk/ops/remove_node.hpp"
 #include "sxk/predicates.hpp"
@@ -272,20 +273,57 @@ TEST(RemoveNode, RefusesBoundaryEdgesWithDifferentFaceLabels) {
         "remove_node: the boundary edges at vertex 1 carry different face labels (7 and 8)");
 }
 
-TEST(RemoveNode, RefusesTetrahedraAndSurfaces) {
+TEST(RemoveNode, RefusesTetrahedraAndAVertexOfATetrahedronsSurface) {
     Mesh cube = test::kuhn_cube(2);
-    expect_refused(
-        cube, 13, RefusalCode::wrong_dimension,
-        "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)");
+    expect_refused(cube, 13, RefusalCode::wrong_dimension,
+                   "remove_node: needs a triangle mesh (topological dimension 2)");
     Mesh surface(2, 3);
     for (const Point& p : {Point{0, 0, 0}, Point{1, 0, 0}, Point{0, 1, 0}, Point{0, 0, 1}})
         surface.add_vertex(p);
     const std::array<Simplex, 4> faces{Simplex(+1, {0, 2, 1}), Simplex(+1, {0, 1, 3}),
                                        Simplex(+1, {1, 2, 3}), Simplex(+1, {0, 3, 2})};
     ASSERT_TRUE(surface.assign_elements(faces).ok());
-    expect_refused(
-        surface, 0, RefusalCode::wrong_dimension,
-        "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)");
+    // its three neighbours' triangle is the tetrahedron's fourth face already (thesis Fig. 5.9)
+    expect_refused(surface, 0, RefusalCode::not_manifold,
+                   "remove_node: element -<1,2,3> already exists as an element that stays (invariant 7.4)");
+}
+
+// A vertex of a curved surface (a 6 x 6 grid lifted onto z = 0.3 sin x cos y, the centre raised
+// higher still): its star becomes degree - 2 triangles facing up as the old ones did, and every edge
+// of the hole that a valid flip could change is Delaunay unfolded (thesis §5.3.1).
+TEST(RemoveNode, RemovesAVertexOfACurvedSurfaceByEars) {
+    const Mesh flat = test::planar_grid(6);
+    Mesh surface(2, 3);
+    for (VertexId v = 0; v < flat.vertex_count(); ++v) {
+        const Point& p = flat.reference(v);
+        surface.add_vertex({p[0], p[1], 0.3 * std::sin(p[0]) * std::cos(p[1]) + (v == 24 ? 0.4 : 0.0)});
+    }
+    std::vector<Simplex> triangles;
+    for (const ElementId t : elements(flat)) triangles.push_back(flat.simplex(t));
+    ASSERT_TRUE(surface.assign_elements(triangles).ok());
+    const std::size_t degree = star(surface, 24).size();
+    const std::size_t before = surface.element_count();
+    const auto removed = remove_node(surface, 24);
+    ASSERT_TRUE(removed.ok()) << removed.reason();
+    ASSERT_TRUE(surface.validate().ok());
+    EXPECT_EQ(removed->size(), degree - 2);
+    EXPECT_EQ(surface.element_count(), before - 2);
+    for (const ElementId t : *removed) {
+        const auto& s = surface.simplex(t);
+        const Point &a = surface.deformed(s.vertex(0)), &b = surface.deformed(s.vertex(1)),
+                    &c = surface.deformed(s.vertex(2));
+        // facing up: the normal's dot product with +z, through a flat reference triangle
+        const Point o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0};
+        EXPECT_EQ(normal_alignment(a, b, c, o, x, y) == Sign::positive, s.sign() > 0) << t;
+        for (const FaceId f : surface.faces(t)) {
+            if (surface.mate(f) == invalid_id) continue;
+            const ElementId other = surface.face_element(surface.mate(f));
+            if (std::find(removed->begin(), removed->end(), other) == removed->end()) continue;
+            Mesh trial = surface;  // a flip there refused: the edge stays, as a constraint would
+            EXPECT_TRUE(is_locally_delaunay(surface, f) || !flip_edge(trial, f).ok()) << t;
+        }
+    }
+    EXPECT_EQ(star(surface, 24).size(), 0u);
 }
 
 TEST(RemoveNode, RefusesMixedLabels) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,12 +26,40 @@ const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
     return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
 }
 
-// orient2d(a, b, c) is strictly positive in both position sets.
+// The triangle (a, b, c) is proper in both position sets: counter-clockwise (orient2d strictly
+// positive) in the plane; not collinear on a surface in space.
 bool turns_left_in_both(const Mesh& mesh, VertexId a, VertexId b, VertexId c) {
     return std::all_of(both_positions.begin(), both_positions.end(), [&](Positions s) {
-        return orient2d(position(mesh, a, s), position(mesh, b, s), position(mesh, c, s)) ==
+        const Point &pa = position(mesh, a, s), &pb = position(mesh, b, s), &pc = position(mesh, c, s);
+        if (mesh.ambient_dimension() == 3) return !collinear(pa, pb, pc);
+        return orient2d(pa, pb, pc) == Sign::positive;
+    });
+}
+
+// On a surface in space: the triangles t and u face the same way (their normals' dot product is
+// strictly positive) in both position sets, so that replacing u by t does not fold the surface.
+bool same_side_in_both(const Mesh& mesh, const Triangle& t, const Triangle& u) {
+    return std::all_of(both_positions.begin(), both_positions.end(), [&](Positions s) {
+        return normal_alignment(position(mesh, t[0], s), position(mesh, t[1], s), position(mesh, t[2], s),
+                                position(mesh, u[0], s), position(mesh, u[1], s), position(mesh, u[2], s)) ==
                Sign::positive;
     });
+}
+
+// The angle at b between the directions to a and c (radians, doubles): which ear the thesis' rule
+// prefers on a surface, where it is a heuristic (§5.3.1).
+double angle_at(const Point& a, const Point& b, const Point& c) {
+    const std::array<double, 3> u{a[0] - b[0], a[1] - b[1], a[2] - b[2]}, w{c[0] - b[0], c[1] - b[1], c[2] - b[2]};
+    const std::array<double, 3> x{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    return std::atan2(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), u[0] * w[0] + u[1] * w[1] + u[2] * w[2]);
+}
+
+// The edge x-y exists in an element outside `around` (sorted): a new edge there would be a second
+// copy of it (thesis Fig. 5.9; on a surface the link polygon can hold such a chord).
+bool edge_outside(const Mesh& mesh, VertexId x, VertexId y, const std::vector<ElementId>& around) {
+    for (const ElementId t : star(mesh, x))
+        if (mesh.simplex(t).contains(y) && !std::binary_search(around.begin(), around.end(), t)) return true;
+    return false;
 }
 
 // u lies in the closed counter-clockwise triangle (a, b, c) in the given positions.
@@ -49,10 +78,10 @@ bool in_closed_triangle(const Mesh& mesh, VertexId u, const Triangle& t, Positio
 bool strictly_between(const Mesh& mesh, VertexId w, VertexId v, VertexId u) {
     return std::all_of(both_positions.begin(), both_positions.end(), [&](Positions s) {
         const Point &a = position(mesh, w, s), &p = position(mesh, v, s), &b = position(mesh, u, s);
-        if (orient2d(a, p, b) != Sign::zero)
+        if (mesh.ambient_dimension() == 3 ? !collinear(a, p, b) : orient2d(a, p, b) != Sign::zero)
             return false;
         // collinear: compare along an axis on which the segment is not degenerate
-        const std::size_t k = a[0] != b[0] ? 0 : 1;
+        const std::size_t k = a[0] != b[0] ? 0 : a[1] != b[1] ? 1 : 2;
         return std::min(a[k], b[k]) < p[k] && p[k] < std::max(a[k], b[k]);
     });
 }
@@ -78,20 +107,30 @@ void make_hole_delaunay(const Mesh& mesh, std::vector<Triangle>& triangles, Posi
     for (const Triangle& t : triangles)
         for (std::size_t k = 0; k < 3; ++k)
             stack.emplace_back(t[k], t[(k + 1) % 3]);
-    while (!stack.empty()) {
+    // On a surface the unfolded criterion need not terminate (thesis §5.3.1: "it is not clear
+    // whether this flipping criterion leads to a terminating algorithm"): a bound on the flips.
+    std::size_t flips = 0;
+    const std::size_t most = 8 * triangles.size() * triangles.size();
+    while (!stack.empty() && flips < most) {
         const auto [a, b] = stack.back();
         stack.pop_back();
         std::size_t i0 = 0, i1 = 0;
         VertexId c = invalid_id, d = invalid_id;
         if (!find(a, b, i0, c) || !find(b, a, i1, d))
             continue;  // a polygon edge, or gone
-        if (incircle(position(mesh, a, positions), position(mesh, b, positions),
-                     position(mesh, c, positions), position(mesh, d, positions)) != Sign::positive)
+        const Point &pa = position(mesh, a, positions), &pb = position(mesh, b, positions);
+        const Point &pc = position(mesh, c, positions), &pd = position(mesh, d, positions);
+        // on a surface the two triangles unfolded about their edge (thesis §5.3.1)
+        const Sign fails = mesh.ambient_dimension() == 3 ? unfolded_incircle(pa, pb, pc, pd) : incircle(pa, pb, pc, pd);
+        if (fails != Sign::positive)
             continue;
         if (!turns_left_in_both(mesh, a, d, c) || !turns_left_in_both(mesh, d, b, c))
             continue;
+        if (mesh.ambient_dimension() == 3 && !same_side_in_both(mesh, {a, d, c}, {d, b, c}))
+            continue;  // the flip would fold the surface over the new edge
         triangles[i0] = {a, d, c};
         triangles[i1] = {d, b, c};
+        ++flips;
         for (auto edge : {std::pair{a, d}, std::pair{d, b}, std::pair{b, c}, std::pair{c, a}})
             stack.push_back(edge);
     }
@@ -100,10 +139,8 @@ void make_hole_delaunay(const Mesh& mesh, std::vector<Triangle>& triangles, Posi
 }  // namespace
 
 Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions positions) {
-    if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
-        return Refusal{
-            RefusalCode::wrong_dimension,
-            "remove_node: needs a planar triangle mesh (topological and ambient dimension 2)"};
+    if (mesh.topological_dimension() != 2)
+        return Refusal{RefusalCode::wrong_dimension, "remove_node: needs a triangle mesh (topological dimension 2)"};
     if (v >= mesh.vertex_count())
         return Refusal{RefusalCode::not_found,
                        "remove_node: " + std::to_string(v) + " is not a vertex"};
@@ -161,7 +198,7 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
     }
     for (ElementId t : around)
         for (Positions s : both_positions)
-            if (element_orientation(mesh, t, s) != Sign::positive)
+            if (element_orientation(mesh, t, s) != Sign::positive)  // on a surface: collinear
                 return Refusal{RefusalCode::not_applicable,
                                "remove_node: element " + std::to_string(t) + " of the star of " +
                                vertex_text + " is not counter-clockwise in the " +
@@ -182,10 +219,26 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
         const std::size_t n = polygon.size();
         return Triangle{polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]};
     };
+    const bool surface = mesh.ambient_dimension() == 3;
+    std::vector<ElementId> sorted_star = around;
+    std::sort(sorted_star.begin(), sorted_star.end());
+    // A new triangle with the link edge x-y as a side faces the way v's triangle on that edge did;
+    // a side that is a chord of the hole is checked against the new triangle across it at the end.
+    auto faces_like_star = [&](const Triangle& t, VertexId x, VertexId y) {
+        for (std::size_t k = 0; k < link.triangles.size(); ++k)
+            if (link.ring[k] == x && link.next(k) == y) return same_side_in_both(mesh, t, {v, x, y});
+        return true;
+    };
     auto is_ear = [&](std::size_t i) {
         const Triangle ear = ear_at(i);
         if (!turns_left_in_both(mesh, ear[0], ear[1], ear[2]))
             return false;
+        if (surface) {
+            // on a surface: the ear faces the way the two triangles of v it replaces face, the rest
+            // of v's star stays proper, and the new edge is not one the mesh has already (Fig. 5.9)
+            return faces_like_star(ear, ear[0], ear[1]) && faces_like_star(ear, ear[1], ear[2]) &&
+                   !edge_outside(mesh, ear[0], ear[2], sorted_star);
+        }
         for (VertexId u : polygon) {
             if (u == ear[0] || u == ear[1] || u == ear[2])
                 continue;
@@ -200,8 +253,23 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
         const Triangle ear = ear_at(i);
         return turns_left_in_both(mesh, v, ear[0], ear[2]) && is_ear(i);
     };
+    // on a surface, the thesis' ear (the angles at w_i opposite v sum to less than pi) decided in
+    // doubles: among the valid ears the one whose angles sum least
+    auto ear_angles = [&](std::size_t i) {
+        const Triangle ear = ear_at(i);
+        const Point &pv = mesh.deformed(v), &w = mesh.deformed(ear[1]);
+        return angle_at(pv, w, mesh.deformed(ear[0])) + angle_at(pv, w, mesh.deformed(ear[2]));
+    };
     while (polygon.size() > 3) {
         std::size_t chosen = polygon.size();
+        if (surface) {
+            double best = 0;
+            for (std::size_t i = 0; i < polygon.size(); ++i)
+                if (is_ear(i) && (chosen == polygon.size() || ear_angles(i) < best)) {
+                    chosen = i;
+                    best = ear_angles(i);
+                }
+        }
         for (std::size_t i = 0; i < polygon.size() && chosen == polygon.size(); ++i)
             if (is_thesis_ear(i))
                 chosen = i;
@@ -215,12 +283,27 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
         triangles.push_back(ear_at(chosen));
         polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(chosen));
     }
-    // the last three: v's degree-3 star becomes one triangle (positive: the polygon is simple)
-    if (!turns_left_in_both(mesh, polygon[0], polygon[1], polygon[2]))
+    // the last three: v's degree-3 star becomes one triangle (positive: the polygon is simple;
+    // on a surface it must face the way the three triangles of v it replaces face)
+    const Triangle last{polygon[0], polygon[1], polygon[2]};
+    if (!turns_left_in_both(mesh, polygon[0], polygon[1], polygon[2]) ||
+        (surface && !(faces_like_star(last, last[0], last[1]) && faces_like_star(last, last[1], last[2]) &&
+                      faces_like_star(last, last[2], last[0]))))
         return Refusal{RefusalCode::not_applicable,
                        "remove_node: no ear of the link of " + vertex_text +
                        " is valid in both the reference and the deformed positions"};
     triangles.push_back({polygon[0], polygon[1], polygon[2]});
+    // on a surface: no fold inside the hole either (the new triangles on a chord face one way)
+    if (surface)
+        for (std::size_t i = 0; i < triangles.size(); ++i)
+            for (std::size_t j = i + 1; j < triangles.size(); ++j) {
+                int shared = 0;
+                for (const VertexId x : triangles[i]) shared += std::count(triangles[j].begin(), triangles[j].end(), x);
+                if (shared == 2 && !same_side_in_both(mesh, triangles[i], triangles[j]))
+                    return Refusal{RefusalCode::not_applicable,
+                                   "remove_node: the triangles that would replace the star of " + vertex_text +
+                                       " fold over each other"};
+            }
 
     // thesis: "the involved edges are flipped back if they violate the empty-circle criterion"
     make_hole_delaunay(mesh, triangles, positions);

@@ -1,5 +1,6 @@
-// Node removal in a planar triangle mesh (thesis §5.3.1, Fig. 5.10): the interior vertex v and
-// its n triangles are replaced by n-2 triangles on the polygon formed by v's link.
+// Node removal in a triangle mesh, planar or a surface in space (thesis §5.3.1, Fig. 5.10): the
+// interior vertex v and its n triangles are replaced by n-2 triangles on the polygon formed by v's
+// link.
 //
 //        w3 ----- w2                 w3 ----- w2        The thesis flips "ears" (two triangles
 //       /  \     /  \               /  `.      \        around v whose angles opposite v sum to
@@ -50,7 +51,7 @@
 //   Inverse: none exact (the hole's triangulation is chosen), but split_element of a new
 //   triangle containing v's old position, followed by flips, can rebuild a star.
 // Refusals (mesh untouched), every reason begins with "remove_node: ":
-//   "needs a planar triangle mesh (topological and ambient dimension 2)";
+//   "needs a triangle mesh (topological dimension 2)";
 //   "7 is not a vertex"; "vertex 7 is in no element";
 //   "vertex 7 is on the boundary and the boundary is not straight there (its removal would
 //   change the domain)";
@@ -61,8 +62,21 @@
 //   "the star of vertex 7 mixes element labels 1 and 2" (the lowest and the highest; removing
 //   v would move a material interface);
 //   "no ear of the link of vertex 7 is valid in both the reference and the deformed positions";
-//   and a replace_elements refusal (a new edge already elsewhere: only in meshes that are not
+//   on a surface, "the triangles that would replace the star of vertex 7 fold over each other";
+//   and a replace_elements refusal (a new triangle already elsewhere, as removing a vertex of a
+//   tetrahedron's surface would make its fourth face twice: Fig. 5.9; only in meshes that are not
 //   embedded in the plane).
+//
+// Surfaces in space. There is no counter-clockwise: a triangle is proper when its corners are not
+// collinear (exactly, in both position sets). Ears are cut in the thesis' order of preference,
+// least angle sum at w_i first (a choice, in doubles: the thesis calls the 3D scheme heuristic),
+// among those that are proper, whose new edge w_{i-1}-w_{i+1} is not an edge of the mesh already
+// (Fig. 5.9), and that face the way v's triangles on their link edges face (normals' dot product
+// strictly positive, exactly); the new triangles on either side of a chord of the hole must face
+// one way too. The hole's diagonals are made Delaunay by the unfolded criterion (unfolded_incircle:
+// the two triangles of an edge unfolded about it), each flip only when it does not fold the
+// surface, and at most 8 n^2 flips (the thesis does not know that the criterion terminates on a
+// surface). A vertex on a straight piece of boundary (exactly collinear) is removed as in the plane.
 #pragma once
 
 #include <vector>
