@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-#include "sxk/locate.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk::delaunaycut {
@@ -100,16 +100,27 @@ Outcome<Done> place_vertex(Mesh& mesh, VertexId v, const Point& p) {
         for (const VertexId w : mesh.simplex(t).vertices()) same = same && mesh.reference(w) == mesh.deformed(w);
     Point reference = target;
     if (!same) {
-        reference = {mesh.reference(v)[0] + target[0] - mesh.deformed(v)[0],
-                     mesh.reference(v)[1] + target[1] - mesh.deformed(v)[1], 0};
+        // the triangle of the star that holds the target, or the one it is least outside of (a point
+        // just across the star's rim: an incision split's node placed on the far side of the path):
+        // its barycentric coordinates, extended beyond the triangle where needed, mapped to its
+        // reference corners (exact for a deformation that is affine there)
+        double best = -std::numeric_limits<double>::infinity();
         for (const ElementId t : around) {
-            const Location in = locate_in_element(mesh, t, target, Positions::deformed);
-            if (!in.found()) continue;
+            const Simplex& s = mesh.simplex(t);
+            const Point& p0 = mesh.deformed(s.vertex(0));
+            const Point& p1 = mesh.deformed(s.vertex(1));
+            const Point& p2 = mesh.deformed(s.vertex(2));
+            const double whole = area2(p0, p1, p2);
+            if (whole == 0) continue;
+            const std::array<double, 3> w{area2(target, p1, p2) / whole, area2(p0, target, p2) / whole,
+                                          area2(p0, p1, target) / whole};
+            const double least = std::min({w[0], w[1], w[2]});
+            if (least <= best) continue;
+            best = least;
             reference = {0, 0, 0};
             for (int j = 0; j < 3; ++j)
                 for (int k = 0; k < 2; ++k)
-                    reference[k] += in.barycentric[j] * mesh.reference(mesh.simplex(t).vertex(j))[k];
-            break;
+                    reference[k] += w[static_cast<std::size_t>(j)] * mesh.reference(s.vertex(j))[k];
         }
     }
     const std::array<VertexId, 1> moved{v};

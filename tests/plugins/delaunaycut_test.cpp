@@ -239,6 +239,33 @@ TEST(PlanarCut, RefusesMeshesItCannotCutAndPositionsThatAreNotFinite) {
     EXPECT_EQ((*session)->steps(), 1u);
 }
 
+// A deformed body: the deformed positions an affine map of the reference ones (a shear and a
+// stretch). The cut is made in the deformed positions; every node it moves or adds gets the reference
+// position that the triangle holding it maps back to, so the map still holds at every vertex, and
+// the mesh is valid in both position sets.
+TEST(DelaunayCut, CutsTheDeformedShapeAndMapsNewNodesBackToTheReference) {
+    Mesh mesh = square_grid(5);
+    auto deform = [](const Point& p) { return Point{1.5 * p[0] + 0.3 * p[1], 0.8 * p[1] - 0.1 * p[0], 0}; };
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) mesh.set_deformed(v, deform(mesh.reference(v)));
+    std::vector<Point> path;
+    for (const Point& p : recorded_path("square-curve.path")) path.push_back(deform(p));
+    for (const Method method : {Method::delaunay, Method::subdivision}) {
+        SCOPED_TRACE(std::string(method_name(method)));
+        const Cut cut = cut_along(mesh, path, with_method(method));
+        EXPECT_GT(cut.growth, 0);
+        EXPECT_EQ(connected_components(*cut.mesh).count, 2u);
+        std::size_t moved = 0;
+        for (VertexId v = 0; v < cut.mesh->vertex_count(); ++v) {
+            if (cut.mesh->vertex_element(v) == invalid_id) continue;
+            const Point expected = deform(cut.mesh->reference(v));
+            for (std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(cut.mesh->deformed(v)[k], expected[k], 1e-12) << v;
+            moved += v >= mesh.vertex_count() || cut.mesh->reference(v) != mesh.reference(v);
+        }
+        EXPECT_GT(moved, 4u);
+        EXPECT_TRUE(cut.mesh->validate(ValidateOptions{true, true}).ok());
+    }
+}
+
 // A random mesh: a jittered grid made Delaunay by flips.
 Mesh random_mesh(std::mt19937_64& random) {
     std::uniform_int_distribution<int> cells(3, 12);
