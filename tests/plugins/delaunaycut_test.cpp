@@ -17,9 +17,12 @@
 #include "svg_picture.hpp"
 #include "sxk/components.hpp"
 #include "sxk/generators.hpp"
+#include "sxk/plugin_host.hpp"
 #include "sxk/ops/make_delaunay_by_flips.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/tool_path.hpp"
+
+extern "C" const sxk_plugin_info* sxk_plugin_entry_delaunaycut();
 
 namespace sxk::delaunaycut {
 namespace {
@@ -264,6 +267,39 @@ TEST(DelaunayCut, CutsTheDeformedShapeAndMapsNewNodesBackToTheReference) {
         EXPECT_GT(moved, 4u);
         EXPECT_TRUE(cut.mesh->validate(ValidateOptions{true, true}).ok());
     }
+}
+
+// The plug-in's ToolFactory makes sessions from the command's option words; a ToolPose's position is
+// the scalpel.
+TEST(PlanarCut, TheHostOffersTheToolWithTheCommandsOptions) {
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_delaunaycut(), "linked-in delaunaycut"));
+    auto factory = host.service<ToolFactory>("delaunaycut");
+    ASSERT_TRUE(factory) << factory.reason();
+    ASSERT_EQ((*factory)->tools().size(), 1u);
+    EXPECT_EQ((*factory)->tools()[0], "delaunaycut");
+    Mesh mesh = square_grid(5);
+    const std::vector<std::string> options{"--method", "subdivision", "--eps-exit", "0.25"};
+    auto session = (*factory)->begin("delaunaycut", mesh, options);
+    ASSERT_TRUE(session) << session.reason();
+    auto* cutter = dynamic_cast<PlanarCutSession*>(session->get());
+    ASSERT_NE(cutter, nullptr);
+    EXPECT_EQ(cutter->options().method, Method::subdivision);
+    EXPECT_EQ(cutter->options().eps_exit, 0.25);
+    ToolPose pose;
+    for (const Point& p : recorded_path("square-curve.path")) {
+        pose.position = p;
+        ASSERT_TRUE((*session)->step(pose));
+    }
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    EXPECT_TRUE(mesh.validate(ValidateOptions{true, true}).ok());
+    const std::vector<std::string> bad{"--eps-edge", "-1"};
+    const auto refused = (*factory)->begin("delaunaycut", mesh, bad);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
+    EXPECT_EQ(refused.reason(), "delaunaycut: --eps-edge: '-1' is not in (0, 10]");
+    EXPECT_EQ((*factory)->begin("scalpel", mesh, {}).reason(),
+              "no tool called scalpel in delaunaycut (it has: delaunaycut)");
 }
 
 // A random mesh: a jittered grid made Delaunay by flips.
