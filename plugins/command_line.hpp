@@ -27,6 +27,8 @@
 
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
+#include "sxk/outcome.hpp"
+#include "sxk/tool_session.hpp"
 
 namespace sxk {
 
@@ -239,6 +241,57 @@ inline bool save_mesh_for_command(const Mesh& mesh, const std::string& file, std
         return false;
     }
     return true;
+}
+
+// ---- tool commands ----------------------------------------------------------------------------
+// `--undo N|all` of the commands that replay a recorded path through a tool session (`cut snap`,
+// `cut delaunay`): after the replay, the last N steps are undone through the session, so that
+// with `all` OUT is IN as the writer writes it.
+inline void add_undo_option(CLI::App& app, std::string& undo) {
+    app.add_option("--undo", undo,
+                   "After the replay, undo the last N steps (N or 'all': OUT is then IN as the writer writes it)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                if (text == "all") return std::string();
+                const auto n = parse_finite_number(text);
+                if (!n || *n < 0 || *n != static_cast<double>(static_cast<long long>(*n)))
+                    return "'" + text + "' is neither a whole number >= 0 nor 'all'";
+                return std::string();
+            },
+            "N|all"));
+}
+
+// The option words a ToolFactory's begin() gets ("--depth", "0.01"), parsed into `app` as the
+// command line would be; a refusal (bad_argument, "TOOL: --depth: ...") when they do not parse.
+inline std::optional<Refusal> parse_tool_words(CLI::App& app, std::span<const std::string> words,
+                                               std::string_view tool) {
+    std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
+    try {
+        app.parse(arguments);
+    } catch (const CLI::ParseError& error) {
+        return Refusal{RefusalCode::bad_argument, std::string(tool) + ": " + error.what()};
+    }
+    return std::nullopt;
+}
+
+// Undoes what `undo` (the option's text; empty: nothing) asks of `session`: the steps undone, or the
+// command's exit code after printing why not ("sxk: NAME: --undo 9: only 4 steps were taken", exit 2;
+// a refused undo, exit 1).
+inline std::variant<std::size_t, int> undo_steps(ToolSession& session, const std::string& undo,
+                                                 const std::string& name, std::ostream& err) {
+    if (undo.empty()) return std::size_t{0};
+    const std::size_t kept = session.steps();
+    const std::size_t count = undo == "all" ? kept : static_cast<std::size_t>(std::stoull(undo));
+    if (count > kept) {
+        err << "sxk: " << name << ": --undo " << undo << ": only " << kept << " steps were taken\n";
+        return 2;
+    }
+    for (std::size_t i = 0; i < count; ++i)
+        if (auto undone = session.undo_step(); !undone) {
+            err << "sxk: " << name << ": " << undone.reason() << '\n';
+            return 1;
+        }
+    return count;
 }
 
 }  // namespace sxk

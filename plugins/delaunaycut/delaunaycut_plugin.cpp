@@ -102,17 +102,7 @@ public:
         app.add_option("--histogram", options.histogram,
                        "Draw the triangles' smallest and largest angles before and after the cut into FILE (SVG)")
             ->type_name("FILE");
-        app.add_option("--undo", options.undo,
-                       "After the replay, undo the last N steps (N or 'all': OUT is then IN as the writer writes it)")
-            ->check(CLI::Validator(
-                [](std::string& text) {
-                    if (text == "all") return std::string();
-                    const auto n = parse_finite_number(text);
-                    if (!n || *n < 0 || *n != static_cast<double>(static_cast<long long>(*n)))
-                        return "'" + text + "' is neither a whole number >= 0 nor 'all'";
-                    return std::string();
-                },
-                "N|all"));
+        add_undo_option(app, options.undo);
         app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut delaunay", out, err)) return *done;
@@ -165,20 +155,9 @@ public:
                 << ": the scalpel never enters the mesh (no movement crosses its boundary inwards)\n";
             return 2;
         }
-        std::size_t undone = 0;
-        if (!options.undo.empty()) {
-            const std::size_t kept = (*session)->steps();
-            const std::size_t count = options.undo == "all" ? kept : std::stoull(options.undo);
-            if (count > kept) {
-                err << "sxk: cut delaunay: --undo " << options.undo << ": only " << kept << " steps were taken\n";
-                return 2;
-            }
-            for (; undone < count; ++undone)
-                if (auto back = (*session)->undo_step(); !back) {
-                    err << "sxk: cut delaunay: " << back.reason() << '\n';
-                    return 1;
-                }
-        }
+        const auto undoing = undo_steps(**session, options.undo, "cut delaunay", err);
+        if (const int* code = std::get_if<int>(&undoing)) return *code;
+        const std::size_t undone = std::get<std::size_t>(undoing);
         (*session)->end();
 
         WriteOptions writing;
@@ -289,12 +268,7 @@ Outcome<std::unique_ptr<ToolSession>> begin_delaunaycut(std::string_view tool, M
     CLI::App app("delaunaycut session", "delaunaycut");
     Options options;
     add_cut_options(app, options);
-    std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
-    try {
-        app.parse(arguments);
-    } catch (const CLI::ParseError& error) {
-        return Refusal{RefusalCode::bad_argument, std::string("delaunaycut: ") + error.what()};
-    }
+    if (auto refused = parse_tool_words(app, words, "delaunaycut")) return *refused;
     auto session = PlanarCutSession::make(mesh, options);
     if (!session) return session.refusal();
     return std::unique_ptr<ToolSession>(std::move(*session));

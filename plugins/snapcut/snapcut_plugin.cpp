@@ -87,18 +87,7 @@ public:
                        "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
             ->required();
         add_cut_options(app, options.cut);
-        app.add_option("--undo", options.undo,
-                       "After the replay, undo the last N steps (N or 'all': OUT is then IN as "
-                       "the writer writes it)")
-            ->check(CLI::Validator(
-                [](std::string& text) {
-                    if (text == "all") return std::string();
-                    const auto n = parse_finite_number(text);
-                    if (!n || *n < 0 || *n != static_cast<double>(static_cast<long long>(*n)))
-                        return "'" + text + "' is neither a whole number >= 0 nor 'all'";
-                    return std::string();
-                },
-                "N|all"));
+        add_undo_option(app, options.undo);
         app.add_option("--deform", options.deform,
                        "Cut a deforming body: `sxk deform`'s options in one word, e.g. \"--fix z<0.001 "
                        "--force z>7.99:0,0,-50 --E 1e4\" (the elasticity plug-in; the body is solved "
@@ -239,20 +228,9 @@ public:
                 << ": the scalpel never meets the mesh (no sweep crosses an edge)\n";
             return 2;
         }
-        if (!options.undo.empty()) {
-            const std::size_t kept = (*session)->steps();
-            const std::size_t count = options.undo == "all" ? kept : std::stoull(options.undo);
-            if (count > kept) {
-                err << "sxk: cut snap: --undo " << options.undo << ": only " << kept << " steps were taken\n";
-                return 2;
-            }
-            for (std::size_t i = 0; i < count; ++i)
-                if (auto undone = (*session)->undo_step(); !undone) {
-                    err << "sxk: cut snap: " << undone.reason() << '\n';
-                    return 1;
-                }
-            record.undone = count;
-        }
+        const auto undone = undo_steps(**session, options.undo, "cut snap", err);
+        if (const int* code = std::get_if<int>(&undone)) return *code;
+        record.undone = std::get<std::size_t>(undone);
         (*session)->end();
         record.elements_after = mesh->element_count();
         record.vertices_after = mesh->vertices_in_elements();
@@ -291,12 +269,7 @@ Outcome<std::unique_ptr<ToolSession>> begin_snapcut(std::string_view tool, Mesh&
     CLI::App app("snapcut session", "snapcut");
     Options options;
     add_cut_options(app, options);
-    std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
-    try {
-        app.parse(arguments);
-    } catch (const CLI::ParseError& error) {
-        return Refusal{RefusalCode::bad_argument, std::string("snapcut: ") + error.what()};
-    }
+    if (auto refused = parse_tool_words(app, words, "snapcut")) return *refused;
     auto session = SnapCutSession::make(mesh, options, services_from(plugin_host));
     if (!session) return session.refusal();
     return std::unique_ptr<ToolSession>(std::move(*session));

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "percentile.hpp"
 #include "planar_cut.hpp"
 #include "svg_picture.hpp"
 #include "sxk/generators.hpp"
@@ -39,12 +40,6 @@ using sxk::Point;
 using sxk::delaunaycut::Method;
 
 constexpr int runs = 5;
-
-double percentile(std::vector<double> values, double p) {
-    std::sort(values.begin(), values.end());
-    const auto index = static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size()))) - 1;
-    return values[std::min(index, values.size() - 1)];
-}
 
 void line(const std::string& name, const char* unit, double ours, double peer, const std::string& peer_name,
           const char* better) {

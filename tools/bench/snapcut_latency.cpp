@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "percentile.hpp"
 #include "degeneracy_plugin.hpp"
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
@@ -42,12 +43,6 @@ using sxk::Point;
 using sxk::snapcut::Scalpel;
 
 constexpr int runs = 5;
-
-double percentile(std::vector<double> values, double p) {
-    std::sort(values.begin(), values.end());
-    const auto index = static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size()))) - 1;
-    return values[std::min(index, values.size() - 1)];
-}
 
 struct Figures {
     std::string name;
