@@ -113,5 +113,24 @@ TEST(SxkCutDelaunay, BadPathsAndMeshesAreRefusedWithTheirLine) {
     EXPECT_NE(option.err.find("--eps-edge: '0' is not in (0, 10]"), std::string::npos) << option.err;
 }
 
+TEST(SxkGenerate, ThePlanarGridsOfTheThesis2DCuts) {
+    ScratchFolder folder;
+    const fs::path square = folder / "square.mesh", strip = folder / "strip.mesh";
+    const ProcessResult fig = sxk({"generate", square.string(), "--shape", "square", "--cells", "19"});
+    ASSERT_EQ(fig.exit_code, 0) << fig.err;
+    EXPECT_EQ(fig.out, square.string() + ": 400 vertices, 722 triangles\n");  // thesis Fig. 5.8
+    const ProcessResult two =
+        sxk({"generate", strip.string(), "--shape", "square", "--cells", "3,2", "--spacing", "0.5,2"});
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    EXPECT_EQ(two.out, strip.string() + ": 12 vertices, 12 triangles\n");
+    EXPECT_NE(slurp(strip).find("Dimension 2"), std::string::npos);
+    EXPECT_EQ(sxk({"validate", strip.string()}).exit_code, 0);
+    const ProcessResult three = sxk({"generate", strip.string(), "--shape", "square", "--cells", "3,2,1"});
+    EXPECT_EQ(three.exit_code, 2);
+    EXPECT_EQ(three.err, "sxk: generate: --cells: a square takes one number or two (X,Y), found 3 in '3,2,1'\n");
+    const ProcessResult zero = sxk({"generate", strip.string(), "--shape", "square", "--cells", "0"});
+    EXPECT_EQ(zero.err, "sxk: generate: --cells: '0' is not a whole number in 1..5000 per axis\n");
+}
+
 }  // namespace
 }  // namespace sxk::test

@@ -36,6 +36,17 @@ std::variant<std::array<double, 3>, std::string> three_numbers(const std::string
     return "expected one number or three (X,Y,Z), found " + std::to_string(numbers.size()) + " in '" + text + "'";
 }
 
+// The generated mesh written to OUT with "OUT: V vertices, N elements", or the generator's refusal.
+int write_generated(Context& context, const Outcome<Mesh>& mesh, const std::string& output) {
+    if (!mesh) {
+        context.err << "sxk: generate: " << mesh.reason() << '\n';
+        return exit_usage;
+    }
+    if (!save_mesh(context, *mesh, output)) return exit_refused;
+    context.out << output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
+    return exit_success;
+}
+
 // --shape square: a planar grid of right triangles (make_triangle_grid), the thesis' 2D cuts' meshes.
 int run_generate_square(Context& context, const GenerateOptions& options) {
     std::array<int, 2> counts{};
@@ -66,17 +77,11 @@ int run_generate_square(Context& context, const GenerateOptions& options) {
             }
         }
     }
-    auto mesh = make_triangle_grid(counts, spacing);
-    if (!mesh) {
-        context.err << "sxk: generate: " << mesh.reason() << '\n';
-        return exit_usage;
-    }
-    if (!save_mesh(context, *mesh, options.output)) return exit_refused;
-    context.out << options.output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
-    return exit_success;
+    return write_generated(context, make_triangle_grid(counts, spacing), options.output);
 }
 
 int run_generate(Context& context, const GenerateOptions& options) {
+    if (options.shape == "square") return run_generate_square(context, options);  // one or two numbers each
     const auto cells = three_numbers(options.cells);
     const auto spacing = three_numbers(options.spacing);
     for (const auto* problem : {std::get_if<std::string>(&cells), std::get_if<std::string>(&spacing)})
@@ -87,17 +92,9 @@ int run_generate(Context& context, const GenerateOptions& options) {
         }
     if (options.shape == "cylinder") {
         const double spacing_value = std::get<std::array<double, 3>>(spacing)[0];
-        auto mesh = make_delaunay(cylinder_cloud(options.rings, options.layers, spacing_value));
-        if (!mesh) {
-            context.err << "sxk: generate: " << mesh.reason() << '\n';
-            return exit_usage;
-        }
-        if (!save_mesh(context, *mesh, options.output)) return exit_refused;
-        context.out << options.output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh)
-                    << '\n';
-        return exit_success;
+        return write_generated(context, make_delaunay(cylinder_cloud(options.rings, options.layers, spacing_value)),
+                               options.output);
     }
-    if (options.shape == "square") return run_generate_square(context, options);
     std::array<int, 3> counts{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double n = std::get<std::array<double, 3>>(cells)[i];
@@ -107,14 +104,7 @@ int run_generate(Context& context, const GenerateOptions& options) {
         }
         counts[i] = static_cast<int>(n);
     }
-    auto mesh = make_kuhn_box(counts, std::get<std::array<double, 3>>(spacing));
-    if (!mesh) {
-        context.err << "sxk: generate: " << mesh.reason() << '\n';
-        return exit_usage;
-    }
-    if (!save_mesh(context, *mesh, options.output)) return exit_refused;
-    context.out << options.output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
-    return exit_success;
+    return write_generated(context, make_kuhn_box(counts, std::get<std::array<double, 3>>(spacing)), options.output);
 }
 
 }  // namespace
@@ -127,10 +117,12 @@ void add_generate_command(CLI::App& app, Context& context) {
         "planar grid of triangles (--shape square: the thesis' 2D cuts, --cells 5 gives Fig. 5.16's 50 triangles)");
     command->add_option("OUT", options->output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
         ->required();
-    command->add_option("--shape", options->shape, "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell")
+    command->add_option("--shape", options->shape,
+                        "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell")
         ->check(CLI::IsMember({"box", "cylinder", "square"}))
         ->capture_default_str();
-    command->add_option("--cells", options->cells, "box: cells per axis, N or NX,NY,NZ (each 1..1000); square: N or NX,NY (each 1..5000)")
+    command->add_option("--cells", options->cells,
+                        "box: cells per axis, N or NX,NY,NZ (each 1..1000); square: N or NX,NY (each 1..5000)")
         ->capture_default_str();
     command->add_option("--spacing", options->spacing,
                         "box: cell size, S or SX,SY,SZ; square: S or SX,SY; cylinder: ring and disc spacing (positive)")
