@@ -1,7 +1,6 @@
 // The planar cutter's options as words (cut_options.hpp).
 #include "cut_options.hpp"
 
-#include <map>
 #include <string>
 
 #include "command_line.hpp"
@@ -9,11 +8,14 @@
 namespace sxk::delaunaycut {
 
 void add_cut_options(CLI::App& app, Options& options) {
-    const std::map<std::string, Method> methods{{"delaunay", Method::delaunay}, {"subdivision", Method::subdivision}};
-    app.add_option("--method", options.method,
-                   "delaunay: drag a node, flip, remove and split (thesis 5.2); subdivision: split every crossed "
-                   "edge where it is crossed (the baseline of 5.4)")
-        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case))
+    app.add_option_function<std::string>(
+           "--method",
+           [&options](const std::string& method) {
+               options.method = method == "subdivision" ? Method::subdivision : Method::delaunay;
+           },
+           "delaunay: drag a node, flip, remove and split (thesis 5.2); subdivision: split every crossed "
+           "edge where it is crossed (the baseline of 5.4)")
+        ->check(CLI::IsMember({"delaunay", "subdivision"}))
         ->default_str("delaunay");
     app.add_option("--eps-edge", options.eps_edge,
                    "Remove an interior node nearer the active node than this many mean edge lengths, 0 < F <= 10")
