@@ -64,8 +64,8 @@ std::optional<double> crossing(const Point& a, const Point& b, const Point& c, c
 // Moves v to p in the deformed positions and to the matching point in the reference ones: p itself
 // where the two position sets agree on star(v) (a mesh no simulation deformed), else p's
 // barycentric coordinates in the triangle of star(v) that holds it (or that it is least outside
-// of, the coordinates extended), mapped to that triangle's reference corners. Refuses (nothing moves) when a triangle of the star would be inverted or flat
-// in either set.
+// of, the coordinates extended), mapped to that triangle's reference corners. Refuses (nothing
+// moves) when a triangle of the star would be inverted or flat in either set.
 Outcome<Done> place_vertex(Mesh& mesh, VertexId v, const Point& p);
 
 }  // namespace sxk::delaunaycut
