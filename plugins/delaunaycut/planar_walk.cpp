@@ -130,8 +130,8 @@ Outcome<Done> place_vertex(Mesh& mesh, VertexId v, const Point& p) {
     check.refuse_inverted = true;
     check.refuse_flat = true;
     if (reference == target) return mesh.move_vertices(moved, deformed, PositionSet::both, check);
-    // both sets in one edit: moved in one set, checked in it; then the other (a refusal there takes
-    // the first back, since the caller's step rolls back; here the first is undone explicitly)
+    // two moves, one per set, each checked in its set; when the second is refused the first is moved
+    // back, so that a refusal changes nothing
     const Point old_deformed = mesh.deformed(v);
     if (auto done = mesh.move_vertices(moved, deformed, PositionSet::deformed, check); !done) return done;
     if (auto done = mesh.move_vertices(moved, referenced, PositionSet::reference, check); !done) {
