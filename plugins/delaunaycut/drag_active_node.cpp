@@ -22,10 +22,10 @@
 namespace sxk::delaunaycut {
 
 namespace {
-// The angle at p between the directions to a and b, in radians.
+// The angle at p of the triangle (p, a, b), in radians.
 double angle_at(const Point& p, const Point& a, const Point& b) {
-    const double ax = a[0] - p[0], ay = a[1] - p[1], bx = b[0] - p[0], by = b[1] - p[1];
-    return std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by);
+    const std::array<Point, 3> corners{p, a, b};
+    return triangle_angles(corners)[0];
 }
 // Rounds of one drag: each at least quarters the height of the triangle in the way, or flips or
 // removes something; a piece of a movement (a quarter of the mean edge) takes a handful.
@@ -108,7 +108,8 @@ bool DelaunayCutSession::remove_close_node(CutStepReport& report) {
         if (m_options.short_angle > 0) {
             const Point& px = at(mesh(), x);
             const VertexId before = fan.ring[(i + fan.ring.size() - 1) % fan.ring.size()], after = fan.next(i);
-            const double opposite = std::max(angle_at(at(mesh(), before), a, px), angle_at(at(mesh(), after), a, px));
+            const double opposite =
+                std::max(angle_at(at(mesh(), before), a, px), angle_at(at(mesh(), after), a, px));
             if (opposite < m_options.short_angle * pi / 180) close.emplace_back(opposite, x);
         } else if (const double d = distance(a, at(mesh(), x)); d < eps_edge()) {
             close.emplace_back(d, x);

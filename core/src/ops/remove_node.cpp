@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk {
@@ -49,9 +50,8 @@ bool same_side_in_both(const Mesh& mesh, const Triangle& t, const Triangle& u) {
 // The angle at b between the directions to a and c (radians, doubles): which ear the thesis' rule
 // prefers on a surface, where it is a heuristic (§5.3.1).
 double angle_at(const Point& a, const Point& b, const Point& c) {
-    const std::array<double, 3> u{a[0] - b[0], a[1] - b[1], a[2] - b[2]}, w{c[0] - b[0], c[1] - b[1], c[2] - b[2]};
-    const std::array<double, 3> x{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-    return std::atan2(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), u[0] * w[0] + u[1] * w[1] + u[2] * w[2]);
+    const std::array<Point, 3> corners{b, a, c};
+    return triangle_angles(corners)[0];
 }
 
 // The edge x-y exists in an element outside `around` (sorted): a new edge there would be a second
