@@ -90,11 +90,11 @@ Outcome<Done> DelaunayCutSession::enter(const Entry& entry, CutStepReport& repor
     if (std::min(to_u, to_v) <= eps_entry()) {
         // close to a node: that node follows the scalpel, and the incision begins where it was
         m_state.active = to_u <= to_v ? entry.u : entry.v;
-    } else {
-        auto split = split_edge(mesh(), entry.u, entry.v, entry.on_edge);
-        if (!split) return split.refusal().prefixed("entry: ");
+    } else if (auto split = split_edge(mesh(), entry.u, entry.v, entry.on_edge)) {
         ++report.edges_split;
         m_state.active = split->vertex;
+    } else {
+        m_state.active = to_u <= to_v ? entry.u : entry.v;  // a split refused by rounding: the nearer end
     }
     m_state.entry = at(mesh(), m_state.active);
     m_state.entry_reference = mesh().reference(m_state.active);

@@ -52,7 +52,9 @@ Outcome<bool> DelaunayCutSession::fix_up(CutStepReport& report) {
     const int label = mesh().label(fan.triangles.front());
     const std::array<Simplex, 2> dent{Simplex(+1, {a, before, e[0]}), Simplex(+1, {after, a, e[1]})};
     const std::array<int, 2> labels{label, label};
-    if (auto filled = mesh().replace_elements({}, dent, labels); !filled) return filled.refusal().prefixed("fix-up: ");
+    // refused (a star the two triangles would pinch): `filling` takes the new nodes back when it
+    // goes out of scope, and the fix-up waits for the node to move on
+    if (!mesh().replace_elements({}, dent, labels)) return false;
     // the boundary's labels move from the dent's sides to the boundary they are again
     for (const auto& [side, outer] : {std::pair{Simplex(+1, {before, a}), Simplex(+1, {before, e[0]})},
                                       std::pair{Simplex(+1, {a, after}), Simplex(+1, {e[1], after})}}) {
