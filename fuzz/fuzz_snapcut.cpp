@@ -1,78 +1,30 @@
 // libFuzzer target for the snap cutter (issue 15): the input is a scalpel path's text (the
-// format of docs/formats.md, "Tool paths"). The reader must parse it or throw InputError; a path
-// that parses is replayed on a Kuhn cube (4^3 cells of 6 tetrahedra, edge 1: [0, 4]^3) through
-// SnapCutSession with the degeneracy plug-in linked in. Every step must complete or be refused
-// with the mesh bit for bit as before; after each one the mesh validates with every element
-// positive in both position sets. A sample whose time has an odd whole part takes the last step
-// back (undo_step) instead of cutting. At the end every step is undone and the mesh must be the
-// cube again, bit for bit. A broken rule prints what broke and aborts.
+// format of docs/formats.md, "Tool paths"), replayed on a Kuhn cube (4^3 cells of 6 tetrahedra,
+// edge 1: [0, 4]^3) through SnapCutSession with the degeneracy plug-in linked in, under the tool
+// oracle of tool_replay.hpp (steps complete or change nothing, the mesh validates with every element
+// positive in both position sets, undo gives the cube back).
 #include <array>
-#include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
-#include <string_view>
 
 #include "degeneracy_plugin.hpp"
 #include "degeneracy_service.hpp"
-#include "ops_driver.hpp"
 #include "snap_cut.hpp"
 #include "sxk/generators.hpp"
-#include "sxk/io.hpp"
-#include "sxk/tool_path.hpp"
-
-namespace {
-
-[[noreturn]] void finding(const std::string& what) {
-    std::fprintf(stderr, "fuzz_snapcut: %s\n", what.c_str());
-    std::abort();
-}
-
-void check(const sxk::Mesh& mesh, std::size_t step, const char* after) {
-    if (auto valid = mesh.validate({.orientation = true}); !valid)
-        finding("step " + std::to_string(step) + ", after " + after + ": " + valid.reason());
-}
-
-}  // namespace
+#include "tool_replay.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const std::string_view text(reinterpret_cast<const char*>(data), size);
     const std::array<int, 1> columns{6};
-    sxk::ToolPath path;
-    try {
-        path = sxk::parse_tool_path(text, "fuzz.path", columns);
-    } catch (const sxk::InputError&) {
-        return 0;  // refused with a line and a reason: what the reader must do
-    }
-    for (const sxk::ToolSample& sample : path.samples)
-        for (int k = 0; k < 6; ++k)
-            if (!std::isfinite(sample.values[static_cast<std::size_t>(k)])) finding("the reader let a non-finite value through");
-
+    const auto path = sxk::fuzz::parse_fuzzed_path({reinterpret_cast<const char*>(data), size}, columns);
+    if (!path) return 0;
     const sxk::Mesh original = sxk::make_kuhn_cube(4).value();
     sxk::Mesh mesh = original;
     auto made = sxk::snapcut::SnapCutSession::make(mesh, {}, {sxk::degeneracy::linked_in_service(), nullptr});
-    if (!made) finding("make: " + made.reason());
+    if (!made) sxk::fuzz::finding("make: " + made.reason());
     auto& session = **made;
-    std::size_t step = 0;
-    for (const sxk::ToolSample& sample : path.samples) {
-        ++step;
-        if (static_cast<long long>(std::floor(sample.time)) % 2 != 0 && session.steps() > 0) {
-            if (auto undone = session.undo_step(); !undone) finding("undo_step: " + undone.reason());
-            check(mesh, step, "undo");
-            continue;
-        }
-        const auto& v = sample.values;
-        const auto before = sxk::ops_driver::snapshot(mesh);
-        if (auto cut = session.cut({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}); !cut && !(sxk::ops_driver::snapshot(mesh) == before))
-            finding("step " + std::to_string(step) + " was refused (" + cut.reason() + ") and changed the mesh");
-        check(mesh, step, "cut");
-    }
-    while (session.steps() > 0)
-        if (auto undone = session.undo_step(); !undone) finding("undo_step: " + undone.reason());
-    session.end();
-    check(mesh, step, "undoing every step");
-    if (!(sxk::ops_driver::snapshot(mesh) == sxk::ops_driver::snapshot(original)))
-        finding("undoing every step did not give the cube back");
+    sxk::fuzz::replay_tool_path(session, mesh, original, *path, {.orientation = true},
+                                [&](const sxk::ToolSample& sample) {
+                                    const auto& v = sample.values;
+                                    return session.cut({{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+                                });
     return 0;
 }
