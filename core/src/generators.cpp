@@ -110,4 +110,30 @@ Outcome<Mesh> make_triangle_grid(std::array<int, 2> cells, std::array<double, 2>
     return mesh;
 }
 
+Outcome<Mesh> make_gaussian_bell(std::array<int, 2> cells, std::array<double, 2> spacing, double height,
+                                 double width) {
+    if (!std::isfinite(height))
+        return Refusal{RefusalCode::bad_argument, "make_gaussian_bell: height " + std::to_string(height) +
+                                                      " is not finite"};
+    if (!positive_finite(width))
+        return Refusal{RefusalCode::bad_argument, "make_gaussian_bell: width " + std::to_string(width) +
+                                                      " is not positive and finite"};
+    Outcome<Mesh> grid = make_triangle_grid(cells, spacing);
+    if (!grid) return Refusal{grid.refusal().code, "make_gaussian_bell: " + grid.reason().substr(20)};
+    const double cx = cells[0] * spacing[0] / 2, cy = cells[1] * spacing[1] / 2;
+    Mesh bell(2, 3);
+    bell.reserve(grid->vertex_count(), grid->element_count());
+    for (VertexId v = 0; v < grid->vertex_count(); ++v) {
+        const Point& p = grid->reference(v);
+        const double r2 = (p[0] - cx) * (p[0] - cx) + (p[1] - cy) * (p[1] - cy);
+        bell.add_vertex({p[0], p[1], height * std::exp(-r2 / (2 * width * width))});
+    }
+    std::vector<Simplex> triangles;
+    triangles.reserve(grid->element_count());
+    for (const ElementId t : elements(*grid)) triangles.push_back(grid->simplex(t));
+    if (auto built = bell.assign_elements(triangles); !built)
+        return Refusal{RefusalCode::internal_error, "make_gaussian_bell: " + built.reason()};  // cannot happen
+    return bell;
+}
+
 }  // namespace sxk

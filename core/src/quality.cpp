@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sxk/predicates.hpp"
+
 namespace sxk {
 
 namespace {
@@ -240,6 +242,27 @@ QualitySummary summarize_quality(const Mesh& mesh, const DegeneracyThresholds& t
         q.mean_radius_ratio = radius_sum / static_cast<double>(q.elements);
     }
     return q;
+}
+
+std::size_t folded_neighbours(const Mesh& mesh, Positions positions) {
+    if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 3) return 0;
+    auto corners = [&](ElementId t) {
+        const Simplex& s = mesh.simplex(t);
+        auto at = [&](int j) -> const Point& {
+            return positions == Positions::deformed ? mesh.deformed(s.vertex(j)) : mesh.reference(s.vertex(j));
+        };
+        return s.sign() > 0 ? std::array<const Point*, 3>{&at(0), &at(1), &at(2)}
+                            : std::array<const Point*, 3>{&at(0), &at(2), &at(1)};
+    };
+    std::size_t folds = 0;
+    for (const ElementId t : elements(mesh))
+        for (int i = 0; i < 3; ++i) {
+            const ElementId n = mesh.neighbor(t, i);
+            if (n == invalid_id || n < t) continue;  // each pair once
+            const auto a = corners(t), b = corners(n);
+            if (normal_alignment(*a[0], *a[1], *a[2], *b[0], *b[1], *b[2]) == Sign::negative) ++folds;
+        }
+    return folds;
 }
 
 }  // namespace sxk

@@ -17,6 +17,7 @@
 #include "cut_options.hpp"
 #include "incision_distance.hpp"
 #include "planar_cut.hpp"
+#include "surface_cut.hpp"
 #include "svg_picture.hpp"
 #include "sxk/atomic_write.hpp"
 #include "sxk/io.hpp"
@@ -269,6 +270,11 @@ Outcome<std::unique_ptr<ToolSession>> begin_delaunaycut(std::string_view tool, M
     Options options;
     add_cut_options(app, options);
     if (auto refused = parse_tool_words(app, words, "delaunaycut")) return *refused;
+    if (mesh.ambient_dimension() == 3) {
+        auto surface = SurfaceCutSession::make(mesh, options);
+        if (!surface) return surface.refusal();
+        return std::unique_ptr<ToolSession>(std::move(*surface));
+    }
     auto session = PlanarCutSession::make(mesh, options);
     if (!session) return session.refusal();
     return std::unique_ptr<ToolSession>(std::move(*session));

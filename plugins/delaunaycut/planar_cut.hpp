@@ -65,6 +65,10 @@ struct Options {
     int cut_label = 9999;
 };
 
+// The thresholds' refusals (not positive and finite, out of range) and a mesh with no triangle:
+// what both sessions' make() check first.
+Outcome<Done> check_options(const Mesh& mesh, const Options& options);
+
 // Where the scalpel is, as far as the session knows.
 enum class Phase { outside, entering, cutting };
 std::string_view phase_name(Phase phase);
@@ -83,6 +87,11 @@ struct CutStepReport {
     std::size_t edges_split = 0;       // edges split (entries, exits; subdivision: every crossing)
     std::size_t faces_dissected = 0;   // edges opened
     std::size_t collapses = 0;         // short edges contracted after an exit
+    // surfaces (surface_cut.hpp): incisions branched, pairs of incisions that met and ended, and
+    // the incisions under way after the movement
+    std::size_t branches = 0;
+    std::size_t annihilations = 0;
+    std::size_t incisions = 0;
     // The active node could not go where the scalpel is (a flip or removal it needed was refused):
     // how far it stayed behind, in the mesh's units (0: it is at the scalpel).
     double lag = 0;

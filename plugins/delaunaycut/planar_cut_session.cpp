@@ -25,10 +25,7 @@ std::string_view phase_name(Phase phase) {
     return "?";
 }
 
-Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, const Options& options) {
-    if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
-        return Refusal{RefusalCode::wrong_dimension,
-                       "delaunaycut: the planar cutter needs a triangle mesh in the plane (Dimension 2)"};
+Outcome<Done> check_options(const Mesh& mesh, const Options& options) {
     if (mesh.element_count() == 0) return Refusal{RefusalCode::bad_argument, "delaunaycut: the mesh has no triangle"};
     for (const auto& [name, value] : {std::pair{"eps-edge", options.eps_edge},
                                       std::pair{"eps-entry", options.eps_entry},
@@ -40,6 +37,14 @@ Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, co
         return Refusal{RefusalCode::bad_argument, "delaunaycut: --dilation must be in [0, 0.5)"};
     if (!(options.short_angle >= 0 && options.short_angle < 90))
         return Refusal{RefusalCode::bad_argument, "delaunaycut: --short-angle must be in [0, 90)"};
+    return Done{};
+}
+
+Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, const Options& options) {
+    if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
+        return Refusal{RefusalCode::wrong_dimension,
+                       "delaunaycut: the planar cutter needs a triangle mesh in the plane (Dimension 2)"};
+    if (auto checked = check_options(mesh, options); !checked) return checked.refusal();
     // the walks read corners counter-clockwise: an inverted triangle would send them astray
     for (const ElementId t : elements(mesh))
         if (element_orientation(mesh, t, Positions::deformed) != Sign::positive)

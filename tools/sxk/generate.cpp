@@ -6,7 +6,10 @@
 // other test object (§3.3's pie-like cuts: 891 vertices, 4020 tetrahedra).
 // sxk generate OUT --shape square [--cells N|NX,NY] [--spacing S|SX,SY]: a planar grid of right
 // triangles (make_triangle_grid), the meshes of the thesis' 2D cuts (§5.4).
+// sxk generate OUT --shape bell [--cells N|NX,NY] [--spacing S|SX,SY] [--height H] [--width W]: that
+// grid lifted into a Gaussian bell (make_gaussian_bell), the surface of the thesis' 3D cuts (Fig. 5.19).
 // For the experiments, the demos and anyone who wants a tetrahedral mesh without a mesher.
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <variant>
@@ -24,6 +27,10 @@ struct GenerateOptions {
     std::string spacing = "1";
     int rings = 4;
     int layers = 13;
+    // bell: the height of its top and the standard deviation of its Gaussian, in fractions of the
+    // grid's shorter side
+    double height = 1.0 / 3;
+    double width = 1.0 / 6;
 };
 
 // One number for all three axes, or three.
@@ -47,7 +54,8 @@ int write_generated(Context& context, const Outcome<Mesh>& mesh, const std::stri
     return exit_success;
 }
 
-// --shape square: a planar grid of right triangles (make_triangle_grid), the thesis' 2D cuts' meshes.
+// --shape square: a planar grid of right triangles (make_triangle_grid), the thesis' 2D cuts' meshes;
+// --shape bell: the same grid lifted into a Gaussian bell (make_gaussian_bell), their 3D cuts' surface.
 int run_generate_square(Context& context, const GenerateOptions& options) {
     std::array<int, 2> counts{};
     std::array<double, 2> spacing{};
@@ -77,11 +85,16 @@ int run_generate_square(Context& context, const GenerateOptions& options) {
             }
         }
     }
+    if (options.shape == "bell") {
+        const double side = std::min(counts[0] * spacing[0], counts[1] * spacing[1]);
+        return write_generated(context, make_gaussian_bell(counts, spacing, options.height * side, options.width * side),
+                               options.output);
+    }
     return write_generated(context, make_triangle_grid(counts, spacing), options.output);
 }
 
 int run_generate(Context& context, const GenerateOptions& options) {
-    if (options.shape == "square") return run_generate_square(context, options);  // one or two numbers each
+    if (options.shape == "square" || options.shape == "bell") return run_generate_square(context, options);  // one or two numbers each
     const auto cells = three_numbers(options.cells);
     const auto spacing = three_numbers(options.spacing);
     for (const auto* problem : {std::get_if<std::string>(&cells), std::get_if<std::string>(&spacing)})
@@ -114,24 +127,33 @@ void add_generate_command(CLI::App& app, Context& context) {
     CLI::App* command = app.add_subcommand(
         "generate",
         "A box of Kuhn tetrahedra (the thesis' test cube: --cells 8), a Delaunay cylinder (--shape cylinder) or a "
-        "planar grid of triangles (--shape square: the thesis' 2D cuts, --cells 5 gives Fig. 5.16's 50 triangles)");
+        "planar grid of triangles (--shape square: the thesis' 2D cuts, --cells 5 gives Fig. 5.16's 50 triangles), or "
+        "that grid lifted into a Gaussian bell (--shape bell: the thesis' 3D cuts, --cells 14 gives Fig. 5.19's 392)");
     command->add_option("OUT", options->output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
         ->required();
     command->add_option("--shape", options->shape,
-                        "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell")
-        ->check(CLI::IsMember({"box", "cylinder", "square"}))
+                        "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell; bell: the square "
+                        "lifted into a Gaussian bell (a surface in space)")
+        ->check(CLI::IsMember({"box", "cylinder", "square", "bell"}))
         ->capture_default_str();
     command->add_option("--cells", options->cells,
-                        "box: cells per axis, N or NX,NY,NZ (each 1..1000); square: N or NX,NY (each 1..5000)")
+                        "box: cells per axis, N or NX,NY,NZ (each 1..1000); square, bell: N or NX,NY (each 1..5000)")
         ->capture_default_str();
     command->add_option("--spacing", options->spacing,
-                        "box: cell size, S or SX,SY,SZ; square: S or SX,SY; cylinder: ring and disc spacing (positive)")
+                        "box: cell size, S or SX,SY,SZ; square, bell: S or SX,SY; cylinder: ring and disc spacing (positive)")
         ->capture_default_str();
     command->add_option("--rings", options->rings, "cylinder: rings around the axis")
         ->check(whole_number_in(1, 200))
         ->capture_default_str();
     command->add_option("--layers", options->layers, "cylinder: discs along the axis, minus one")
         ->check(whole_number_in(1, 2000))
+        ->capture_default_str();
+    command->add_option("--height", options->height, "bell: the height of its top, in fractions of the shorter side")
+        ->check(CLI::Range(-1e6, 1e6))
+        ->capture_default_str();
+    command->add_option("--width", options->width,
+                        "bell: the standard deviation of the Gaussian, in fractions of the shorter side (positive)")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
     command->callback([&context, options] { context.exit_code = run_generate(context, *options); });
 }

@@ -51,6 +51,14 @@ SXK_API Outcome<Mesh> make_kuhn_box(std::array<int, 3> cells, std::array<double,
 // positive and finite ("make_triangle_grid: ...").
 SXK_API Outcome<Mesh> make_triangle_grid(std::array<int, 2> cells, std::array<double, 2> spacing = {1.0, 1.0});
 
+// The grid of make_triangle_grid lifted into space as a Gaussian bell: vertex (x, y) of the grid
+// goes to (x, y, height * exp(-r^2 / (2 width^2))), r its distance from the grid's centre, the same
+// triangles (ambient dimension 3, labels 0). The surface of the thesis' 3D cuts (Fig. 5.19: 14 x 14
+// cells, 392 triangles). Refuses what make_triangle_grid refuses, a height that is not finite and a
+// width that is not positive and finite ("make_gaussian_bell: ...").
+SXK_API Outcome<Mesh> make_gaussian_bell(std::array<int, 2> cells, std::array<double, 2> spacing, double height,
+                                         double width);
+
 // The Delaunay tetrahedralisation of `points` (CGAL's Delaunay_triangulation_3, exact predicates):
 // vertex i is points[i] in both position sets (a point given twice is one vertex: the repeat is
 // in no element), every element positive, labels 0. Refuses fewer than 4 points, a coordinate

@@ -37,6 +37,12 @@ SXK_API double relative_distance_to_hull(std::span<const Point> face, const Poin
 // mesh without elements. Linear in the elements (pairs bucketed by their lower vertex).
 SXK_API double mean_edge_length(const Mesh& mesh, Positions positions = Positions::reference);
 
+// On a triangle surface in space: the pairs of neighbouring triangles whose normals, in the
+// orientation the mesh gives them, face against each other (negative dot product, exactly by
+// normal_alignment): folds of the surface, a flipped triangle among its neighbours. 0 for other
+// meshes. Linear in the elements.
+SXK_API std::size_t folded_neighbours(const Mesh& mesh, Positions positions = Positions::deformed);
+
 // The volume of a tetrahedron (4 points, unsigned), of a 3D mesh's element t, and the mean over a
 // 3D mesh's elements (0 for a mesh without elements), in the given positions: the material a
 // piece of the mesh holds, in elements' worth.
