@@ -41,7 +41,13 @@ Outcome<Done> EditJournal::commit() {
     m_marks.pop_back();
     if (!m_marks.empty()) return Done{};
     m_mesh.m_undo = nullptr;
-    if (m_open->empty()) return Done{};  // nothing happened: no step to undo
+    if (m_open->empty()) {
+        // Nothing happened, or all that happened was rolled back by inner steps: no step to undo.
+        // The rollbacks moved the revision on, but the mesh is as when the step opened, so the
+        // history still holds when it held then.
+        if (m_revision_at_open == m_history_revision) m_history_revision = m_mesh.revision();
+        return Done{};
+    }
     // the history holds only if nothing changed between its last step and this one
     if (m_revision_at_open != m_history_revision) clear_history();
     m_redo.clear();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <functional>
 #include <cstdio>
 #include <memory>
 #include <ostream>
@@ -22,6 +23,7 @@
 #include "sxk/atomic_write.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
+#include "sxk/quality.hpp"
 #include "sxk/tool_path.hpp"
 
 extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_delaunaycut();
@@ -67,6 +69,9 @@ nlohmann::ordered_json step_json(const ReplayedStep& step) {
     json["edges_split"] = r.edges_split;
     json["faces_dissected"] = r.faces_dissected;
     json["collapses"] = r.collapses;
+    json["branches"] = r.branches;
+    json["annihilations"] = r.annihilations;
+    json["incisions"] = r.incisions;
     json["lag"] = r.lag;
     if (!r.lag_reason.empty()) json["lag_reason"] = r.lag_reason;
     json["elements"] = r.elements;
@@ -79,8 +84,8 @@ class CutDelaunayCommand final : public PluginCommand {
 public:
     std::string_view name() const override { return "cut delaunay"; }
     std::string_view summary() const override {
-        return "cut a planar triangle mesh along a recorded point-scalpel path: drag, flip, remove, split "
-               "(thesis 5.2), or subdivide (the baseline)";
+        return "cut a planar triangle mesh along a recorded point-scalpel path, or a triangle surface in space "
+               "with a line scalpel: drag, flip, remove, split (thesis 5.2, 5.3), or subdivide (the baseline)";
     }
 
     int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) override {
@@ -88,17 +93,21 @@ public:
         CLI::App app("Cut a planar triangle mesh along a recorded scalpel path (thesis chapter 5): the scalpel "
                      "drags an active node through the mesh, edges around it flip by the empty-circle test, nodes "
                      "it comes close to are removed and the incision behind it is split where needed; or, with "
-                     "--method subdivision, every edge the path crosses is split there. Each movement is one "
-                     "undoable step.",
+                     "--method subdivision, every edge the path crosses is split there. A triangle surface in "
+                     "space is cut by a line scalpel the same way (thesis 5.3), with as many incisions as the "
+                     "blade makes: they branch and meet. Each movement is one undoable step.",
                      "sxk cut delaunay");
-        app.add_option("IN", options.input, "Planar triangle mesh (Dimension 2)")->required();
+        app.add_option("IN", options.input,
+                       "Planar triangle mesh (Dimension 2), or a triangle surface in space (Dimension 3)")
+            ->required();
         app.add_option("PATH", options.path,
-                       "Scalpel path: one sample per line, 'time x y' (docs/formats.md \"Tool paths\")")
+                       "Scalpel path: one sample per line, 'time x y' (planar), or 'time hx hy hz tx ty tz' (a "
+                       "blade from its handle end to its tip, surfaces) (docs/formats.md \"Tool paths\")")
             ->required();
         app.add_option("OUT", options.output, "Output mesh, format by extension (.mesh .msh .off .obj .vtu)")
             ->required();
         add_cut_options(app, options.cut);
-        app.add_option("--svg", options.svg, "Draw the cut mesh with the path over it into FILE (SVG)")
+        app.add_option("--svg", options.svg, "Planar cuts: draw the cut mesh with the path over it into FILE (SVG)")
             ->type_name("FILE");
         app.add_option("--histogram", options.histogram,
                        "Draw the triangles' smallest and largest angles before and after the cut into FILE (SVG)")
@@ -121,52 +130,97 @@ public:
             err << "sxk: " << error.what() << '\n';
             return 2;
         }
-        if (path.columns == 6) {
-            err << "sxk: " << options.path << ':' << path.samples.front().line
-                << ": a line scalpel ('time hx hy hz tx ty tz') cuts triangulated surfaces in space (thesis 5.3), "
-                   "which this version does not do yet; planar cuts take 'time x y'\n";
-            return 2;
-        }
         std::optional<Mesh> mesh = load_mesh_for_command(options.input, err, options.reading);
         if (!mesh) return 2;
-        const Mesh before = *mesh;
-        auto session = PlanarCutSession::make(*mesh, options.cut);
-        if (!session) {
-            err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
+        const bool surface = mesh->topological_dimension() == 2 && mesh->ambient_dimension() == 3;
+        const std::size_t first_line = path.samples.front().line;
+        if (path.columns == 6 && !surface) {
+            err << "sxk: " << options.path << ':' << first_line
+                << ": a line scalpel ('time hx hy hz tx ty tz') cuts triangle surfaces in space (thesis 5.3); "
+                << options.input << " is not one (planar cuts take 'time x y')\n";
             return 2;
         }
+        if (path.columns == 2 && surface) {
+            err << "sxk: " << options.path << ':' << first_line << ": a point scalpel ('time x y') cuts planar meshes; "
+                << options.input << " is a surface in space, cut by a line scalpel ('time hx hy hz tx ty tz')\n";
+            return 2;
+        }
+        if (surface && !options.svg.empty()) {
+            err << "sxk: --svg draws planar cuts; draw a surface's cut with 'sxk render " << options.output
+                << " PICTURE.png'\n";
+            return 2;
+        }
+        const Mesh before = *mesh;
+        // the session, and how a sample moves its scalpel
+        std::unique_ptr<ToolSession> session;
+        std::function<Outcome<StepReport>(const ToolSample&)> step;
+        std::function<const CutStepReport&()> last;
         std::vector<Point> scalpel;
+        std::vector<Blade> blades;
+        double h = 0;
+        if (surface) {
+            auto made = SurfaceCutSession::make(*mesh, options.cut);
+            if (!made) {
+                err << "sxk: " << options.input << ":0: " << made.reason() << '\n';
+                return 2;
+            }
+            SurfaceCutSession* cutter = made->get();
+            h = cutter->mean_edge();
+            step = [&, cutter](const ToolSample& sample) {
+                const auto& v = sample.values;
+                const Blade blade{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+                blades.push_back(blade);
+                return cutter->cut(blade.handle, blade.tip);
+            };
+            last = [cutter]() -> const CutStepReport& { return cutter->last_step(); };
+            session = std::move(*made);
+        } else {
+            auto made = PlanarCutSession::make(*mesh, options.cut);
+            if (!made) {
+                err << "sxk: " << options.input << ":0: " << made.reason() << '\n';
+                return 2;
+            }
+            PlanarCutSession* cutter = made->get();
+            h = cutter->mean_edge();
+            step = [&, cutter](const ToolSample& sample) {
+                const Point p{sample.values[0], sample.values[1], 0};
+                scalpel.push_back(p);
+                return cutter->cut(p);
+            };
+            last = [cutter]() -> const CutStepReport& { return cutter->last_step(); };
+            session = std::move(*made);
+        }
         std::vector<ReplayedStep> steps;
         std::size_t entries = 0;
         const auto started = std::chrono::steady_clock::now();
         for (const ToolSample& sample : path.samples) {
-            const Point p{sample.values[0], sample.values[1], 0};
-            if (auto stepped = (*session)->cut(p); !stepped) {
+            if (auto stepped = step(sample); !stepped) {
                 err << "sxk: " << options.path << ':' << sample.line
                     << ": the step was refused (the mesh is as before it): " << stepped.reason() << '\n';
                 return 1;
             }
-            scalpel.push_back(p);
-            steps.push_back({sample.time, sample.line, (*session)->last_step()});
+            steps.push_back({sample.time, sample.line, last()});
             entries += steps.back().report.entries;
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (entries == 0) {
-            err << "sxk: " << options.path << ':' << path.samples.front().line
-                << ": the scalpel never enters the mesh (no movement crosses its boundary inwards)\n";
+            err << "sxk: " << options.path << ':' << first_line
+                << (surface ? ": the blade never enters the surface (no movement meets an edge or takes the tip "
+                              "through a triangle)\n"
+                            : ": the scalpel never enters the mesh (no movement crosses its boundary inwards)\n");
             return 2;
         }
-        const auto undoing = undo_steps(**session, options.undo, "cut delaunay", err);
+        const auto undoing = undo_steps(*session, options.undo, "cut delaunay", err);
         if (const int* code = std::get_if<int>(&undoing)) return *code;
         const std::size_t undone = std::get<std::size_t>(undoing);
-        (*session)->end();
+        session->end();
 
         WriteOptions writing;
         writing.drop_unused_vertices = true;  // removals and contractions leave vertices in no element
         if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
         const AngleCounts angles_before = triangle_angle_degrees(before), angles_after = triangle_angle_degrees(*mesh);
-        const IncisionDistance incision = incision_distance(*mesh, scalpel, options.cut.cut_label);
-        const double h = (*session)->mean_edge();
+        const IncisionDistance incision = surface ? incision_distance(*mesh, blades, options.cut.cut_label)
+                                                  : incision_distance(*mesh, scalpel, options.cut.cut_label);
         try {
             if (!options.svg.empty())
                 write_file_atomically(options.svg,
@@ -190,6 +244,16 @@ public:
         }
         const auto growth =
             static_cast<long long>(mesh->element_count()) - static_cast<long long>(before.element_count());
+        CutStepReport total;
+        double slowest = 0;
+        for (const ReplayedStep& step : steps) {
+            const CutStepReport& r = step.report;
+            total.entries += r.entries, total.fix_ups += r.fix_ups, total.exits += r.exits;
+            total.flips += r.flips, total.nodes_removed += r.nodes_removed, total.incision_splits += r.incision_splits;
+            total.edges_split += r.edges_split, total.faces_dissected += r.faces_dissected;
+            total.collapses += r.collapses, total.branches += r.branches, total.annihilations += r.annihilations;
+            slowest = std::max(slowest, r.seconds);
+        }
         if (options.json) {
             nlohmann::ordered_json json;
             json["file"] = options.input;
@@ -210,6 +274,12 @@ public:
             json["smallest_angle_before"] = smallest(angles_before.smallest);
             json["smallest_angle_after"] = smallest(angles_after.smallest);
             json["largest_angle_after"] = largest(angles_after.largest);
+            if (surface) {
+                json["branches"] = total.branches;
+                json["annihilations"] = total.annihilations;
+                json["folded_neighbours_before"] = folded_neighbours(before);
+                json["folded_neighbours_after"] = folded_neighbours(*mesh);
+            }
             json["incision_nodes"] = incision.nodes;
             json["incision_farthest"] = incision.farthest / h;
             json["incision_mean"] = incision.mean / h;
@@ -217,22 +287,17 @@ public:
             out << json.dump(2) << '\n';
             return 0;
         }
-        CutStepReport total;
-        double slowest = 0;
-        for (const ReplayedStep& step : steps) {
-            const CutStepReport& r = step.report;
-            total.entries += r.entries, total.fix_ups += r.fix_ups, total.exits += r.exits;
-            total.flips += r.flips, total.nodes_removed += r.nodes_removed, total.incision_splits += r.incision_splits;
-            total.edges_split += r.edges_split, total.faces_dissected += r.faces_dissected;
-            total.collapses += r.collapses;
-            slowest = std::max(slowest, r.seconds);
-        }
         char line[160];
         out << method_name(options.cut.method) << " cut of " << options.input << " along " << options.path << " ("
             << steps.size() << " samples)\n";
         std::snprintf(line, sizeof line, "  entries %zu, incisions begun %zu, exits %zu\n", total.entries,
                       total.fix_ups, total.exits);
         out << line;
+        if (surface) {
+            std::snprintf(line, sizeof line, "  branches %zu, annihilations %zu; folded neighbours %zu -> %zu\n",
+                          total.branches, total.annihilations, folded_neighbours(before), folded_neighbours(*mesh));
+            out << line;
+        }
         std::snprintf(line, sizeof line,
                       "  flips %zu, nodes removed %zu, incision splits %zu, edges split %zu, edges dissected %zu, "
                       "contracted %zu\n",
@@ -247,8 +312,8 @@ public:
                       smallest(angles_before.smallest), smallest(angles_after.smallest), largest(angles_before.largest),
                       largest(angles_after.largest));
         out << line;
-        std::snprintf(line, sizeof line, "  incision from the path: farthest %.3f h, mean %.3f h (%zu nodes, h = %g)\n",
-                      incision.farthest / h, incision.mean / h, incision.nodes, h);
+        std::snprintf(line, sizeof line, "  incision from the %s: farthest %.3f h, mean %.3f h (%zu nodes, h = %g)\n",
+                      surface ? "sweep" : "path", incision.farthest / h, incision.mean / h, incision.nodes, h);
         out << line;
         std::snprintf(line, sizeof line, "  %.1f ms in all, slowest step %.3f ms\n", seconds * 1e3, slowest * 1e3);
         out << line << options.input << " -> " << options.output << '\n';

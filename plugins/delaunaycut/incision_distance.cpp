@@ -2,9 +2,12 @@
 #include "incision_distance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
+
+#include "sxk/locate.hpp"
 
 namespace sxk::delaunaycut {
 
@@ -21,7 +24,10 @@ double distance_to_path(const Point& p, std::span<const Point> path) {
     return nearest;
 }
 
-IncisionDistance incision_distance(const Mesh& mesh, std::span<const Point> path, int cut_label) {
+namespace {
+
+template <class Distance>
+IncisionDistance measure(const Mesh& mesh, int cut_label, const Distance& distance) {
     std::vector<VertexId> nodes;
     mesh.for_each_boundary_face([&](FaceId f) {
         const Simplex edge = mesh.face_simplex(f);
@@ -33,11 +39,38 @@ IncisionDistance incision_distance(const Mesh& mesh, std::span<const Point> path
     IncisionDistance result;
     result.nodes = nodes.size();
     for (const VertexId v : nodes) {
-        const double d = distance_to_path(mesh.deformed(v), path);
+        const double d = distance(mesh.deformed(v));
         result.farthest = std::max(result.farthest, d);
         result.mean += d / static_cast<double>(nodes.size());
     }
     return result;
+}
+
+}  // namespace
+
+IncisionDistance incision_distance(const Mesh& mesh, std::span<const Point> path, int cut_label) {
+    return measure(mesh, cut_label, [&](const Point& p) { return distance_to_path(p, path); });
+}
+
+double distance_to_sweep(const Point& p, std::span<const Blade> blades) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < blades.size(); ++i) {
+        const Blade& a = blades[i];
+        const Blade& b = i + 1 < blades.size() ? blades[i + 1] : blades[i];
+        for (const std::array<Point, 3>& t : {std::array<Point, 3>{a.handle, a.tip, b.tip},
+                                              std::array<Point, 3>{a.handle, b.tip, b.handle}}) {
+            const std::array<double, 3> w = nearest_on_triangle(t[0], t[1], t[2], p);
+            Point on{};
+            for (std::size_t j = 0; j < 3; ++j)
+                for (std::size_t k = 0; k < 3; ++k) on[k] += w[j] * t[j][k];
+            nearest = std::min(nearest, std::hypot(p[0] - on[0], p[1] - on[1], p[2] - on[2]));
+        }
+    }
+    return nearest;
+}
+
+IncisionDistance incision_distance(const Mesh& mesh, std::span<const Blade> blades, int cut_label) {
+    return measure(mesh, cut_label, [&](const Point& p) { return distance_to_sweep(p, blades); });
 }
 
 }  // namespace sxk::delaunaycut

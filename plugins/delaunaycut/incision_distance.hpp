@@ -1,10 +1,12 @@
-// How closely a planar cut follows the scalpel's path (thesis §5.4: "the subdivision cut follows
-// the scalpel path more closely"): the distance of the incision's nodes from the path.
+// How closely a cut follows the scalpel (thesis §5.4: "the subdivision cut follows the scalpel path
+// more closely"): the distance of the incision's nodes from the point scalpel's path in the plane, or
+// from the surface a line scalpel swept in space.
 #pragma once
 
 #include <cstddef>
 #include <span>
 
+#include "surface_cut.hpp"
 #include "sxk/mesh.hpp"
 
 namespace sxk::delaunaycut {
@@ -18,5 +20,10 @@ struct IncisionDistance {
     double farthest = 0, mean = 0;
 };
 IncisionDistance incision_distance(const Mesh& mesh, std::span<const Point> path, int cut_label);
+
+// The distance from p to the surface the blade swept along `blades`: each movement's two triangles
+// (h, t, t') and (h, t', h'), a bilinear patch's approximation; infinity for no blade.
+double distance_to_sweep(const Point& p, std::span<const Blade> blades);
+IncisionDistance incision_distance(const Mesh& mesh, std::span<const Blade> blades, int cut_label);
 
 }  // namespace sxk::delaunaycut

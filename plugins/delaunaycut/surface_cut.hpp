@@ -95,7 +95,8 @@ private:
     };
     struct State {
         std::vector<Incision> incisions;
-        // nodes where a cut ended: no entry within twice eps_exit of them until the blade is that far
+        // nodes where a cut ended (and their copies): no entry through their triangles until the
+        // blade is twice eps_exit from them (it touches them as it leaves)
         std::vector<VertexId> forbidden;
     };
 

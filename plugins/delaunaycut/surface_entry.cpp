@@ -27,6 +27,9 @@ namespace sxk::delaunaycut {
 
 namespace {
 
+// Entries of one movement at most (a movement of the thesis' mouse makes one or two).
+constexpr std::size_t most_entries = 64;
+
 struct Event {
     double time = 0;
     VertexId u = invalid_id, v = invalid_id;  // an edge (u < v), or invalid_id for the tip
@@ -66,19 +69,20 @@ Outcome<double> SurfaceCutSession::enter(const Blade& from, const Blade& to, Cut
             if (is_active(w)) return true;
         return false;
     };
-    auto forbidden_near = [&](const Point& p) {
-        return std::any_of(m_state.forbidden.begin(), m_state.forbidden.end(), [&](VertexId v) {
-            return distance3(mesh().deformed(v), p) <= 2 * eps_exit();
-        });
+    // where a cut ended the blade still touches the triangles around its last node as it leaves
+    auto near_an_end = [&](ElementId t) {
+        for (const VertexId w : mesh().simplex(t).vertices())
+            if (std::find(m_state.forbidden.begin(), m_state.forbidden.end(), w) != m_state.forbidden.end()) return true;
+        return false;
     };
     std::vector<Event> events;
     std::vector<std::array<VertexId, 2>> seen;
     for (const ElementId t : candidates) {
-        if (busy(t)) continue;
+        if (busy(t) || near_an_end(t)) continue;
         const Simplex s = mesh().simplex(t);
         for (int i = 0; i < 3; ++i) {
             const ElementId other = mesh().neighbor(t, i);
-            if (other != invalid_id && busy(other)) continue;
+            if (other != invalid_id && (busy(other) || near_an_end(other))) continue;
             VertexId u = s.vertex((i + 1) % 3), v = s.vertex((i + 2) % 3);
             if (v < u) std::swap(u, v);
             seen.push_back({u, v});
@@ -91,15 +95,14 @@ Outcome<double> SurfaceCutSession::enter(const Blade& from, const Blade& to, Cut
                                                  mesh().deformed(s.vertex(2))))
             continue;
         const double time = std::clamp(d0 / (d0 - d1), 0.0, 1.0);
-        const Point at = lerp3(from.tip, to.tip, time);
-        if (!forbidden_near(at)) events.push_back({time, invalid_id, invalid_id, t, 0, at});
+        events.push_back({time, invalid_id, invalid_id, t, 0, lerp3(from.tip, to.tip, time)});
     }
     std::sort(seen.begin(), seen.end());
     seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
     for (const auto& [u, v] : seen) {
         const std::optional<SweepHit> hit = first_sweep_hit(from.handle, from.tip, to.handle, to.tip,
                                                             mesh().deformed(u), mesh().deformed(v));
-        if (hit && !forbidden_near(hit->point)) events.push_back({hit->time, u, v, invalid_id, hit->along_edge, hit->point});
+        if (hit) events.push_back({hit->time, u, v, invalid_id, hit->along_edge, hit->point});
     }
     std::sort(events.begin(), events.end());
 
@@ -117,6 +120,8 @@ Outcome<double> SurfaceCutSession::enter(const Blade& from, const Blade& to, Cut
         around.erase(std::unique(around.begin(), around.end()), around.end());
         return !pierce_points(mesh(), around, blade, 0).empty();
     };
+    // a safety net: a blade that keeps meeting the surface at one place would add an entry per piece
+    if (report.entries >= most_entries) return 1.0;
     for (std::size_t first = 0; first < events.size();) {
         std::size_t last = first;
         while (last < events.size() && events[last].time <= events[first].time + 1e-12) ++last;

@@ -19,6 +19,7 @@
 // to entries until the blade is away (as after a planar exit).
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 #include "planar_walk.hpp"
 #include "surface_cut.hpp"
@@ -61,7 +62,8 @@ Outcome<bool> SurfaceCutSession::try_exit(std::size_t i, const Point& heading, C
         // a separating edge is interior, ends and all (after a branch, the edges from the cut's node
         // behind both new incisions separate them and are cut at that end already)
         bool exit_edge = beyond == invalid_id;
-        if (!exit_edge && !on_boundary(mesh(), u) && !on_boundary(mesh(), v))
+        if (!exit_edge && !on_boundary(mesh(), u) && !on_boundary(mesh(), v) &&
+            !mesh().face_label(Simplex(+1, {std::min(u, v), std::max(u, v)})))  // not another's constrained edge
             for (const VertexId w : mesh().simplex(beyond).vertices())
                 if (w != u && w != v && other_incision(w)) exit_edge = true;
         if (!exit_edge) continue;
@@ -101,7 +103,7 @@ Outcome<Done> SurfaceCutSession::annihilate(VertexId meeting, CutStepReport& rep
         const bool here = incision.node == meeting;
         if (!here && std::find(fan.ring.begin(), fan.ring.end(), incision.node) == fan.ring.end()) continue;
         if (!here) cut.push_back(Simplex(+1, {std::min(meeting, incision.node), std::max(meeting, incision.node)}));
-        if (incision.stage == Stage::constrained)
+        if (incision.stage == Stage::constrained && edge_face(mesh(), incision.entry_node, incision.node))
             cut.push_back(Simplex(+1, {std::min(incision.entry_node, incision.node),
                                        std::max(incision.entry_node, incision.node)}));
         ending.push_back(j);
@@ -114,8 +116,12 @@ Outcome<Done> SurfaceCutSession::annihilate(VertexId meeting, CutStepReport& rep
     report.faces_dissected += cut.size();
     if (ending.size() > 1) ++report.annihilations;
     else ++report.exits;
-    for (const std::size_t j : ending) m_state.incisions[j].node = invalid_id;
+    std::vector<VertexId> ending_nodes(m_state.incisions.size(), invalid_id);
+    for (const std::size_t j : ending) ending_nodes[j] = std::exchange(m_state.incisions[j].node, invalid_id);
+    // the meeting node, the ended incisions' nodes and the copies the dissection made of them
     m_state.forbidden.push_back(meeting);
+    for (const std::size_t j : ending) m_state.forbidden.push_back(ending_nodes[j]);
+    for (const auto& [original, copy] : opened->new_vertices) m_state.forbidden.push_back(copy);
     return Done{};
 }
 

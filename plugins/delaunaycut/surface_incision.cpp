@@ -115,6 +115,7 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
     const VertexId o = was.node;
     EditStep attempt(*EditJournal::of(mesh()));
     std::vector<std::pair<VertexId, Point>> nodes;
+    bool runs_along_boundary = false;
     for (const auto& pierce : pierces) {
         const Point& p = pierce.second;
         if (distance3(p, mesh().deformed(o)) <= 1e-3 * m_mean_edge) continue;
@@ -124,10 +125,24 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
         if (holder == invalid_id) continue;
         auto placed = node_on_triangle(mesh(), holder, p, 1e-3 * m_mean_edge);
         if (!placed || *placed == o || is_active(*placed)) continue;
+        // a boundary edge from o: the blade along the boundary, nothing to cut there
+        const std::optional<FaceId> along = edge_face(mesh(), o, *placed);
+        if (along && mesh().neighbor(mesh().face_element(*along), mesh().face_slot(*along)) == invalid_id) {
+            runs_along_boundary = true;
+            continue;
+        }
         if (std::none_of(nodes.begin(), nodes.end(), [&](const auto& known) { return known.first == *placed; }))
             nodes.emplace_back(*placed, p);
     }
-    if (nodes.empty()) return Done{};  // nothing to open yet (the new nodes' splits were refused)
+    if (nodes.empty()) {
+        if (runs_along_boundary) {  // the incision is over before it began
+            m_state.incisions[i].node = invalid_id;
+            m_state.forbidden.push_back(o);
+            ++report.retractions;
+            return attempt.commit();
+        }
+        return Done{};  // nothing to open yet (the new nodes' splits were refused)
+    }
     const bool from_boundary = on_boundary(mesh(), o);
     if (was.stage == Stage::entered && !from_boundary && nodes.size() == 1) {
         // thesis §5.3.2: the edge from the entry node to the active node, constrained
@@ -148,7 +163,7 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
         cut.push_back(edge(o, n));
         reaches_boundary.push_back(on_boundary(mesh(), n));
     }
-    if (was.stage == Stage::constrained) cut.push_back(edge(was.entry_node, o));
+    if (was.stage == Stage::constrained && edge_face(mesh(), was.entry_node, o)) cut.push_back(edge(was.entry_node, o));
     DissectOptions options;
     options.cut_label = m_options.cut_label;
     auto opened = dissect(mesh(), cut, options);

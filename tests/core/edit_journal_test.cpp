@@ -146,6 +146,33 @@ TEST(EditJournal, UndoAndRedoWalkTheCommittedSteps) {
     mesh.remove_watcher(mirror);
 }
 
+// A step whose edits were all rolled back by an inner step records nothing, and the history before
+// it still holds (the rollback moved the mesh's revision on, but not the mesh): the next step is
+// undone, then the one before it.
+TEST(EditJournal, AStepWhoseInnerStepRolledBackKeepsTheHistory) {
+    Mesh mesh = test::unit_square();
+    EditJournal journal(mesh);
+    const auto s0 = snapshot(mesh);
+    journal.checkpoint();
+    ASSERT_TRUE(flip_diagonal(mesh).ok());
+    ASSERT_TRUE(journal.commit().ok());
+    const auto s1 = snapshot(mesh);
+    journal.checkpoint();
+    journal.checkpoint();
+    mesh.set_label(1, 5);
+    ASSERT_TRUE(journal.rollback().ok());
+    ASSERT_TRUE(journal.commit().ok());
+    EXPECT_EQ(journal.undo_count(), 1u);
+    journal.checkpoint();
+    mesh.set_label(0, 7);
+    ASSERT_TRUE(journal.commit().ok());
+    EXPECT_EQ(journal.undo_count(), 2u);
+    ASSERT_TRUE(journal.undo().ok());
+    EXPECT_TRUE(snapshot(mesh) == s1);
+    ASSERT_TRUE(journal.undo().ok());
+    EXPECT_TRUE(snapshot(mesh) == s0);
+}
+
 TEST(EditJournal, RefusesWhatItCannotDo) {
     Mesh mesh = test::unit_square();
     EditJournal journal(mesh);
