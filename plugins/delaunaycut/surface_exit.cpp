@@ -24,6 +24,8 @@
 #include "planar_walk.hpp"
 #include "surface_cut.hpp"
 #include "surface_geometry.hpp"
+#include "sxk/edit_journal.hpp"
+#include "sxk/ops/collapse_edge.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/ops/split_edge.hpp"
 #include "sxk/traversal.hpp"
@@ -119,9 +121,30 @@ Outcome<Done> SurfaceCutSession::annihilate(VertexId meeting, CutStepReport& rep
     std::vector<VertexId> ending_nodes(m_state.incisions.size(), invalid_id);
     for (const std::size_t j : ending) ending_nodes[j] = std::exchange(m_state.incisions[j].node, invalid_id);
     // the meeting node, the ended incisions' nodes and the copies the dissection made of them
-    m_state.forbidden.push_back(meeting);
-    for (const std::size_t j : ending) m_state.forbidden.push_back(ending_nodes[j]);
-    for (const auto& [original, copy] : opened->new_vertices) m_state.forbidden.push_back(copy);
+    std::vector<VertexId> meetings{meeting}, nodes;
+    for (const std::size_t j : ending) nodes.push_back(ending_nodes[j]);
+    for (const auto& [original, copy] : opened->new_vertices)
+        (original == meeting ? meetings : nodes).push_back(copy);
+    m_state.forbidden.insert(m_state.forbidden.end(), meetings.begin(), meetings.end());
+    m_state.forbidden.insert(m_state.forbidden.end(), nodes.begin(), nodes.end());
+    // Fig. 5.7 (d): the short edges from the incisions' nodes to the meeting node are contracted,
+    // the nodes onto the meeting node (the boundary there may bend by half an edge's length), where
+    // that folds nothing
+    CollapseOptions loose;
+    loose.boundary_tolerance = 0.5;
+    for (const VertexId from : nodes)
+        for (const VertexId to : meetings) {
+            if (!edge_face(mesh(), from, to) || distance3(mesh().deformed(from), mesh().deformed(to)) > eps_exit())
+                continue;
+            const std::vector<ElementId> around = star(mesh(), from);
+            const std::size_t folds_before = folds_at(mesh(), around);
+            EditStep attempt(*EditJournal::of(mesh()));
+            if (!collapse_edge(mesh(), from, to, loose)) continue;
+            const std::vector<ElementId> after = star(mesh(), to);
+            if (folds_at(mesh(), after) > folds_before || !attempt.commit()) continue;  // rolled back
+            ++report.collapses;
+            break;
+        }
     return Done{};
 }
 
