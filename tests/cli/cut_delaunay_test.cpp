@@ -90,9 +90,9 @@ TEST(SxkCutDelaunay, BadPathsAndMeshesAreRefusedWithTheirLine) {
         {"0 -1 -1 -1\n0.1 -1 -2 -1\n", ":1: 3 values after the time; expected 2 or 6"},
         {"# outside all along\n0 -1 2\n0.1 -1 4\n", ":2: the scalpel never enters the mesh (no movement crosses its "
                                                     "boundary inwards)"},
-        {"0 0 0 1 0 0 0\n0.1 1 0 1 1 0 0\n", ":1: a line scalpel ('time hx hy hz tx ty tz') cuts triangulated "
-                                             "surfaces in space (thesis 5.3), which this version does not do yet; "
-                                             "planar cuts take 'time x y'"},
+        {"0 0 0 1 0 0 0\n0.1 1 0 1 1 0 0\n", ":1: a line scalpel ('time hx hy hz tx ty tz') cuts triangle surfaces "
+                                             "in space (thesis 5.3); " + f.square.string() +
+                                             " is not one (planar cuts take 'time x y')"},
     };
     for (const Case& c : cases) {
         const fs::path path = f.path("bad.path", c.text);
@@ -111,6 +111,49 @@ TEST(SxkCutDelaunay, BadPathsAndMeshesAreRefusedWithTheirLine) {
     const ProcessResult option = f.cut(f.curve, {"--eps-edge", "0"});
     EXPECT_EQ(option.exit_code, 2);
     EXPECT_NE(option.err.find("--eps-edge: '0' is not in (0, 10]"), std::string::npos) << option.err;
+}
+
+// Thesis Fig. 5.19: the 392-triangle Gaussian bell cut twice by a line scalpel
+// (tests/data/paths/bell-two-cuts.path): an upright blade from boundary to boundary, then a level one
+// across the top, which branches around it and meets itself behind it, crossing the first cut twice.
+TEST(SxkCutDelaunay, CutsTheThesisBellTwiceWithALineScalpel) {
+    ScratchFolder folder;
+    const fs::path bell = folder / "bell.off", out = folder / "cut.mesh";
+    const std::string path = SXK_SOURCE_DIR "/tests/data/paths/bell-two-cuts.path";
+    const ProcessResult made = sxk({"generate", bell.string(), "--shape", "bell", "--cells", "14"});
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+    EXPECT_EQ(made.out, bell.string() + ": 225 vertices, 392 triangles\n");
+    const ProcessResult run = sxk({"cut", "delaunay", bell.string(), path, out.string(), "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["triangles_before"], 392);
+    EXPECT_EQ(json["branches"], 1);
+    EXPECT_EQ(json["annihilations"], 1);
+    EXPECT_EQ(json["folded_neighbours_after"], 0);
+    EXPECT_LT(json["incision_farthest"].get<double>(), 1.0 / 3);  // within eps_edge of the sweep
+    EXPECT_GT(json["smallest_angle_after"].get<double>(), 10.0);
+    for (const char* key : {"branches", "annihilations", "incisions"})
+        EXPECT_TRUE(json["steps"][1].contains(key)) << key;
+    EXPECT_EQ(sxk({"validate", out.string()}).exit_code, 0);
+    // two halves of the bell, each with a piece of its top
+    EXPECT_EQ(sxk({"components", out.string()}).out.substr(0, 14), "components: 4\n");
+    // every step undone: the bell as the writer writes it
+    const fs::path undone = folder / "undone.off";
+    const ProcessResult back = sxk({"cut", "delaunay", bell.string(), path, undone.string(), "--undo", "all"});
+    ASSERT_EQ(back.exit_code, 0) << back.err;
+    EXPECT_EQ(slurp(undone), slurp(bell));
+    // the scalpel must fit the mesh
+    const ProcessResult point = sxk({"cut", "delaunay", bell.string(), SXK_SOURCE_DIR "/tests/data/paths/square-curve.path",
+                                     out.string()});
+    EXPECT_EQ(point.exit_code, 2);
+    EXPECT_NE(point.err.find(": a point scalpel ('time x y') cuts planar meshes; " + bell.string() +
+                             " is a surface in space, cut by a line scalpel ('time hx hy hz tx ty tz')\n"),
+              std::string::npos)
+        << point.err;
+    const ProcessResult svg = sxk({"cut", "delaunay", bell.string(), path, out.string(), "--svg", "x.svg"});
+    EXPECT_EQ(svg.exit_code, 2);
+    EXPECT_EQ(svg.err, "sxk: --svg draws planar cuts; draw a surface's cut with 'sxk render " + out.string() +
+                           " PICTURE.png'\n");
 }
 
 TEST(SxkGenerate, ThePlanarGridsOfTheThesis2DCuts) {

@@ -103,5 +103,22 @@ TEST(MakeDelaunay, TetrahedralisesACloudAndRefusesWhatSpansNoTetrahedron) {
     EXPECT_EQ(make_delaunay(nan).reason(), "make_delaunay: point 3 is not finite");
 }
 
+// The thesis' Fig. 5.19 surface: the 14 x 14 grid lifted into a Gaussian bell, its top at the centre.
+TEST(MakeGaussianBell, LiftsTheGridIntoABellAndRefusesBadShapes) {
+    auto bell = make_gaussian_bell({14, 14}, {1.0, 1.0}, 5.0, 2.0);
+    ASSERT_TRUE(bell.ok()) << bell.reason();
+    EXPECT_EQ(bell->topological_dimension(), 2);
+    EXPECT_EQ(bell->ambient_dimension(), 3);
+    EXPECT_EQ(bell->element_count(), 392u);
+    EXPECT_EQ(bell->vertex_count(), 225u);
+    EXPECT_TRUE(bell->validate().ok());
+    const VertexId top = 7 * 15 + 7;
+    EXPECT_EQ(bell->reference(top), (Point{7, 7, 5}));
+    EXPECT_DOUBLE_EQ(bell->reference(0)[2], 5 * std::exp(-98.0 / 8));
+    EXPECT_EQ(make_gaussian_bell({14, 14}, {1, 1}, 5, 0).reason(), "make_gaussian_bell: width 0.000000 is not positive and finite");
+    EXPECT_EQ(make_gaussian_bell({0, 14}, {1, 1}, 5, 2).reason(), "make_gaussian_bell: 0 cells along x is not in 1..5000");
+    EXPECT_EQ(make_gaussian_bell({2, 2}, {1, 1}, std::nan(""), 2).reason(), "make_gaussian_bell: height nan is not finite");
+}
+
 }  // namespace
 }  // namespace sxk
