@@ -17,7 +17,10 @@
 #include "surface_cut.hpp"
 #include "sxk/components.hpp"
 #include "sxk/generators.hpp"
+#include "sxk/plugin_host.hpp"
 #include "sxk/quality.hpp"
+
+extern "C" const sxk_plugin_info* sxk_plugin_entry_delaunaycut();
 
 namespace sxk::delaunaycut {
 namespace {
@@ -112,6 +115,60 @@ TEST(DelaunayCutSurface, ALevelBladeBranchesAroundTheTopAndTheIncisionsMeetBehin
     EXPECT_EQ(cut.total.branches, 1u);
     EXPECT_EQ(cut.total.annihilations, 1u);
     EXPECT_EQ(connected_components(*cut.mesh).count, 2u);
+}
+
+// The tip goes into the bell's flank from above and the blade moves on with its tip under the
+// surface: one pierce point, a constrained edge from the entry node, opened by the incision split;
+// then the blade is pulled out. A slit in the middle of the surface, the bell still in one piece.
+TEST(DelaunayCutSurface, ATipEntryCutsASlitInTheMiddleOfTheSurface) {
+    const Mesh surface = bell();
+    BladePath path = sweep({{4.3, 6.1, 8}, {4.3, 6.1, 3}}, {{4.3, 6.1, 6}, {4.3, 6.1, 1}}, 10);  // down through
+    const BladePath along = sweep({{4.3, 6.1, 6}, {4.3, 6.1, 1}}, {{4.3, 10.2, 6}, {4.3, 10.2, 1}}, 40);
+    path.insert(path.end(), along.begin() + 1, along.end());
+    const BladePath out = sweep({{4.3, 10.2, 6}, {4.3, 10.2, 1}}, {{4.3, 10.2, 12}, {4.3, 10.2, 7}}, 10);
+    path.insert(path.end(), out.begin() + 1, out.end());
+    const SurfaceCut cut = cut_along(surface, path);
+    print(cut, surface);
+    EXPECT_EQ(cut.total.entries, 1u);
+    EXPECT_EQ(cut.total.fix_ups, 1u);       // the constrained edge
+    EXPECT_GE(cut.total.incision_splits, 1u);  // which opened
+    EXPECT_EQ(cut.total.retractions, 1u);   // the blade pulled out
+    EXPECT_EQ(connected_components(*cut.mesh).count, 1u);
+    std::size_t cut_edges = 0;
+    cut.mesh->for_each_boundary_face([&](FaceId f) {
+        if (cut.mesh->face_label(cut.mesh->face_simplex(f)) == Options{}.cut_label) ++cut_edges;
+    });
+    EXPECT_GE(cut_edges, 6u);  // both sides of a slit about four cells long
+}
+
+// The plug-in's ToolFactory makes the surface session for a surface in space; a ToolPose is the
+// blade: its tip at the position, the handle `length` back along axes[2].
+TEST(DelaunayCutSurface, TheHostOffersTheSurfaceCutterForASurface) {
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_delaunaycut(), "linked-in delaunaycut"));
+    auto factory = host.service<ToolFactory>("delaunaycut");
+    ASSERT_TRUE(factory) << factory.reason();
+    Mesh mesh = bell();
+    const std::vector<std::string> options{"--eps-edge", "0.25"};
+    auto session = (*factory)->begin("delaunaycut", mesh, options);
+    ASSERT_TRUE(session) << session.reason();
+    auto* cutter = dynamic_cast<SurfaceCutSession*>(session->get());
+    ASSERT_NE(cutter, nullptr);
+    EXPECT_EQ(cutter->options().eps_edge, 0.25);
+    ToolPose pose;
+    pose.axes[2] = {0, 0, -1};  // the blade points down, its handle 11 above the tip
+    pose.length = 11;
+    for (const Blade& blade : sweep({{-1, 7.3, 10}, {-1, 7.3, -1}}, {{15, 7.6, 10}, {15, 7.6, -1}}, 80)) {
+        pose.position = blade.tip;
+        ASSERT_TRUE((*session)->step(pose));
+    }
+    EXPECT_EQ(cutter->last_step().incisions, 0u);
+    EXPECT_EQ(connected_components(mesh).count, 2u);
+    EXPECT_TRUE(mesh.validate().ok());
+    const std::vector<std::string> planar_only{"--method", "subdivision"};
+    auto subdivision = (*factory)->begin("delaunaycut", mesh, planar_only);
+    ASSERT_FALSE(subdivision);
+    EXPECT_EQ(subdivision.code(), RefusalCode::bad_argument);
 }
 
 // Undoing every movement gives the input back, bit for bit (positions, connectivity, labels).

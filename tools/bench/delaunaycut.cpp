@@ -10,6 +10,14 @@
 // larger mesh only larger. --rate HZ replays every movement as the steps a device sampling at HZ
 // takes over the movement's time (default 1000: a haptic loop). Each method, 5 cuts on fresh copies.
 //
+// Surface latency (§5.3): a line scalpel cuts the top of a Gaussian bell (height 10, width 8, unit
+// cells) in the middle of a 72 x 72 (10,368 triangles) and a 708 x 708 grid (1,002,528): the same top,
+// the larger surface only larger. An upright blade goes in by its tip, along a curve across the top
+// and out again (a slit in the middle of the surface); then a level blade is swept through the top,
+// which touches the flank, branches around the summit and annihilates behind it, crossing the slit
+// twice; movements of a fifth of a cell (a blade moving 200 cells a second sampled at 1 kHz). 5 cuts
+// on fresh copies.
+//
 // Random paths: 100 paths (seeds 1..100) of 120 movements on the 19 x 19 grid jittered by up to
 // 0.15 and made Delaunay; each cut by both methods. Growth (triangles added) and the smallest angle
 // after the cut, per method: their means, and the worst smallest angle.
@@ -27,6 +35,7 @@
 
 #include "percentile.hpp"
 #include "planar_cut.hpp"
+#include "surface_cut.hpp"
 #include "svg_picture.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/ops/make_delaunay_by_flips.hpp"
@@ -80,6 +89,54 @@ Latency latency(const Mesh& input, const std::vector<Point>& path, Method method
         (*session)->end();
     }
     return {percentile(ms, 0.5), percentile(ms, 0.99), *std::max_element(ms.begin(), ms.end()), ms.size() / runs};
+}
+
+// The surface cut's movements around the bell's top at (c, c): see the header.
+std::vector<sxk::delaunaycut::Blade> bell_path(double c) {
+    std::vector<sxk::delaunaycut::Blade> blades;
+    constexpr double step = 0.2;
+    auto upright = [&](double x, double y, double tip) { blades.push_back({{c + x, c + y, tip + 17}, {c + x, c + y, tip}}); };
+    for (double tip = 8; tip >= -2; tip -= 5 * step) upright(-20, -4 - 2 * std::sin(20.0 / 12), tip);  // the tip in
+    for (double x = -20; x <= 20; x += step) upright(x, -4 + 2 * std::sin(x / 12), -2);                // along
+    for (double tip = -2; tip <= 12; tip += 5 * step) upright(20, -4 + 2 * std::sin(20.0 / 12), tip);  // and out
+    for (double x = 20; x >= -25; x -= 5 * step) upright(x, -3, 12);  // over the top, back
+    for (double x = -25; x <= 20; x += step) blades.push_back({{c + x, c - 20, 6}, {c + x, c + 20, 6.2}});
+    return blades;
+}
+
+struct SurfaceLatency {
+    Latency latency;
+    std::size_t branches = 0, annihilations = 0, growth = 0;
+};
+
+SurfaceLatency surface_latency(const Mesh& input, const std::vector<sxk::delaunaycut::Blade>& path) {
+    std::vector<double> ms;
+    SurfaceLatency result;
+    for (int run = 0; run < runs; ++run) {
+        Mesh mesh = input;
+        auto session = sxk::delaunaycut::SurfaceCutSession::make(mesh, {});
+        if (!session) {
+            std::fprintf(stderr, "delaunaycut: %s\n", session.reason().c_str());
+            std::exit(1);
+        }
+        result.branches = result.annihilations = 0;
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            if (auto stepped = (*session)->cut(path[i].handle, path[i].tip); !stepped) {
+                std::fprintf(stderr, "delaunaycut: surface step %zu refused: %s\n", i, stepped.reason().c_str());
+                std::exit(1);
+            }
+            const auto took = std::chrono::steady_clock::now() - start;
+            if (i > 0) ms.push_back(std::chrono::duration<double, std::milli>(took).count());
+            result.branches += (*session)->last_step().branches;
+            result.annihilations += (*session)->last_step().annihilations;
+        }
+        (*session)->end();
+        result.growth = mesh.element_count() - input.element_count();
+    }
+    result.latency = {percentile(ms, 0.5), percentile(ms, 0.99), *std::max_element(ms.begin(), ms.end()),
+                      ms.size() / runs};
+    return result;
 }
 
 Mesh random_mesh(std::mt19937_64& random, int cells) {
@@ -157,6 +214,23 @@ int main(int argc, char** argv) {
     line("delaunaycut/latency/subdivision/median", "ms", subdivision[1].median, subdivision[0].median, "10k triangles",
          "lower");
     line("delaunaycut/latency/subdivision/p99", "ms", subdivision[1].p99, subdivision[0].p99, "10k triangles", "lower");
+
+    // ---- surface latency: the same cut of the bell's top in a 10k and a 1M surface -----------------
+    std::array<SurfaceLatency, 2> surface;
+    // 72 rather than 71 cells: the top at a vertex in both, so the surface around it is the same
+    const std::array<int, 2> bell_sizes{72, 708};
+    for (std::size_t k = 0; k < bell_sizes.size(); ++k) {
+        const Mesh bell = sxk::make_gaussian_bell({bell_sizes[k], bell_sizes[k]}, {1.0, 1.0}, 10.0, 8.0).value();
+        surface[k] = surface_latency(bell, bell_path(bell_sizes[k] / 2.0));
+        std::fprintf(stderr, "%9zu-triangle bell, %zu movements: median %.4f ms, p99 %.4f ms, max %.3f ms "
+                             "(%zu branches, %zu annihilations, +%zu triangles)\n",
+                     bell.element_count(), surface[k].latency.steps, surface[k].latency.median, surface[k].latency.p99,
+                     surface[k].latency.max, surface[k].branches, surface[k].annihilations, surface[k].growth);
+    }
+    line("delaunaycut/surface_latency/median", "ms", surface[1].latency.median, surface[0].latency.median,
+         "10k triangles", "lower");
+    line("delaunaycut/surface_latency/p99", "ms", surface[1].latency.p99, surface[0].latency.p99, "10k triangles",
+         "lower");
 
     // ---- random paths: growth and smallest angle, Delaunay against subdivision --------------------
     constexpr int paths = 100;
