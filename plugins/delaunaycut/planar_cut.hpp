@@ -100,6 +100,9 @@ struct CutStepReport {
     double seconds = 0;
 };
 
+// The step's report in words, for StepReport::actions ("3 flips", ...): what both sessions say.
+void describe(const CutStepReport& step, StepReport& report);
+
 class PlanarCutSession : public ToolSession {
 public:
     // A session of options.method on a planar triangle mesh (topological and ambient dimension

@@ -40,6 +40,24 @@ Outcome<Done> check_options(const Mesh& mesh, const Options& options) {
     return Done{};
 }
 
+void describe(const CutStepReport& step, StepReport& report) {
+    const auto say = [&](std::size_t count, const char* what) {
+        if (count > 0) report.actions.push_back(std::to_string(count) + " " + what);
+    };
+    say(step.entries, "entries");
+    say(step.fix_ups, "incisions begun");
+    say(step.branches, "branches");
+    say(step.flips, "flips");
+    say(step.nodes_removed, "nodes removed");
+    say(step.incision_splits, "incision splits");
+    say(step.edges_split, "edges split");
+    say(step.faces_dissected, "edges dissected");
+    say(step.collapses, "edges contracted");
+    say(step.exits, "exits");
+    say(step.annihilations, "annihilations");
+    if (step.lag > 0) report.actions.push_back("an active node stays behind: " + step.lag_reason);
+}
+
 Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, const Options& options) {
     if (mesh.topological_dimension() != 2 || mesh.ambient_dimension() != 2)
         return Refusal{RefusalCode::wrong_dimension,
@@ -104,19 +122,7 @@ Outcome<Done> PlanarCutSession::apply(const ToolPose& pose, StepReport& report) 
     m_last.phase = m_state.phase;
     m_last.elements = mesh().element_count();
     m_last.vertices = mesh().vertices_in_elements();
-    const auto say = [&](std::size_t count, const char* what) {
-        if (count > 0) report.actions.push_back(std::to_string(count) + " " + what);
-    };
-    say(m_last.entries, "entries");
-    say(m_last.fix_ups, "incisions begun");
-    say(m_last.flips, "flips");
-    say(m_last.nodes_removed, "nodes removed");
-    say(m_last.incision_splits, "incision splits");
-    say(m_last.edges_split, "edges split");
-    say(m_last.faces_dissected, "edges dissected");
-    say(m_last.collapses, "edges contracted");
-    say(m_last.exits, "exits");
-    if (m_last.lag > 0) report.actions.push_back("the active node stays behind: " + m_last.lag_reason);
+    describe(m_last, report);
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return Done{};
 }

@@ -111,11 +111,8 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
             return moved.refusal();
         }
         // the cut's ends accept entries again once the blade is away from them
-        std::erase_if(m_state.forbidden, [&](VertexId v) {
-            const Point& p = mesh().deformed(v);
-            return distance3(p, lerp3(to.handle, to.tip, nearest_on_segment(to.handle, to.tip, p))) >
-                   2 * eps_exit();
-        });
+        std::erase_if(m_state.forbidden,
+                      [&](VertexId v) { return distance_to_blade(to, mesh().deformed(v)) > 2 * eps_exit(); });
     } else {
         report.actions.push_back("placed the blade");
     }
@@ -132,21 +129,9 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
     m_last.incisions = m_state.incisions.size();
     m_last.elements = mesh().element_count();
     m_last.vertices = mesh().vertices_in_elements();
-    const auto say = [&](std::size_t count, const char* what) {
-        if (count > 0) report.actions.push_back(std::to_string(count) + " " + what);
-    };
-    say(m_last.entries, "entries");
-    say(m_last.fix_ups, "incisions begun");
-    say(m_last.branches, "branches");
-    say(m_last.flips, "flips");
-    say(m_last.nodes_removed, "nodes removed");
-    say(m_last.incision_splits, "incision splits");
-    say(m_last.edges_split, "edges split");
-    say(m_last.faces_dissected, "edges dissected");
-    say(m_last.exits, "exits");
-    say(m_last.annihilations, "annihilations");
-    say(m_last.retractions, "incisions left by the blade");
-    if (m_last.lag > 0) report.actions.push_back("an active node stays behind: " + m_last.lag_reason);
+    describe(m_last, report);
+    if (m_last.retractions > 0)
+        report.actions.push_back(std::to_string(m_last.retractions) + " incisions left by the blade");
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return Done{};
 }

@@ -56,7 +56,8 @@ Outcome<Done> SurfaceCutSession::drag(std::size_t i, const Point& target, CutSte
     const double behind = distance3(mesh().deformed(m_state.incisions[i].node), target);
     if (behind > 1e-12 * m_mean_edge) {
         report.lag = std::max(report.lag, behind);
-        report.lag_reason = "the remeshing around it did not let it through in " + std::to_string(max_rounds) + " rounds";
+        report.lag_reason =
+            "the remeshing around it did not let it through in " + std::to_string(max_rounds) + " rounds";
     }
     return Done{};
 }

@@ -71,8 +71,9 @@ Outcome<double> SurfaceCutSession::enter(const Blade& from, const Blade& to, Cut
     };
     // where a cut ended the blade still touches the triangles around its last node as it leaves
     auto near_an_end = [&](ElementId t) {
+        const std::vector<VertexId>& ends = m_state.forbidden;
         for (const VertexId w : mesh().simplex(t).vertices())
-            if (std::find(m_state.forbidden.begin(), m_state.forbidden.end(), w) != m_state.forbidden.end()) return true;
+            if (std::find(ends.begin(), ends.end(), w) != ends.end()) return true;
         return false;
     };
     std::vector<Event> events;

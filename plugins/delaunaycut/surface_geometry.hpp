@@ -32,6 +32,11 @@ inline Blade lerp(const Blade& a, const Blade& b, double s) {
 // The point of segment a-b nearest p, as the fraction of the way from a to b.
 double nearest_on_segment(const Point& a, const Point& b, const Point& p);
 
+// The distance from p to the blade (the segment).
+inline double distance_to_blade(const Blade& blade, const Point& p) {
+    return distance3(p, lerp3(blade.handle, blade.tip, nearest_on_segment(blade.handle, blade.tip, p)));
+}
+
 // Where the blade crosses triangle (p, q, r): none when they do not meet (decided exactly); the
 // point where the blade's line crosses the triangle's plane, or for a blade in that plane the
 // point of the blade nearest the triangle's centroid.

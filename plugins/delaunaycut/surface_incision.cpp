@@ -67,8 +67,7 @@ Outcome<Done> SurfaceCutSession::follow(const Blade& blade, CutStepReport& repor
             // position (an entry node on an exposed edge the blade only touches yet); an entered
             // incision waits while the blade is within eps_entry of it. Else the blade left: out of
             // the surface, or back into the incision behind the node.
-            const Point& at = mesh().deformed(m_state.incisions[i].node);
-            const double away = distance3(at, lerp3(blade.handle, blade.tip, nearest_on_segment(blade.handle, blade.tip, at)));
+            const double away = distance_to_blade(blade, mesh().deformed(m_state.incisions[i].node));
             if (away <= (m_state.incisions[i].stage == Stage::entered ? eps_entry() : 1e-6 * m_mean_edge)) continue;
             end_incision(i);
             ++report.retractions;
@@ -89,7 +88,9 @@ Outcome<Done> SurfaceCutSession::follow(const Blade& blade, CutStepReport& repor
         }
         // a pierce point at the node itself (the blade still through it) is no branch
         if (pierces.size() > 1)
-            std::erase_if(pierces, [&](const auto& pierce) { return distance3(pierce.second, before) <= 1e-3 * m_mean_edge; });
+            std::erase_if(pierces, [&](const auto& pierce) {
+                return distance3(pierce.second, before) <= 1e-3 * m_mean_edge;
+            });
         if (pierces.size() > 1) {
             if (auto branched = open_from(i, pierces, report); !branched) return branched;
             continue;

@@ -143,8 +143,8 @@ TEST(SxkCutDelaunay, CutsTheThesisBellTwiceWithALineScalpel) {
     ASSERT_EQ(back.exit_code, 0) << back.err;
     EXPECT_EQ(slurp(undone), slurp(bell));
     // the scalpel must fit the mesh
-    const ProcessResult point = sxk({"cut", "delaunay", bell.string(), SXK_SOURCE_DIR "/tests/data/paths/square-curve.path",
-                                     out.string()});
+    const std::string square_path = SXK_SOURCE_DIR "/tests/data/paths/square-curve.path";
+    const ProcessResult point = sxk({"cut", "delaunay", bell.string(), square_path, out.string()});
     EXPECT_EQ(point.exit_code, 2);
     EXPECT_NE(point.err.find(": a point scalpel ('time x y') cuts planar meshes; " + bell.string() +
                              " is a surface in space, cut by a line scalpel ('time hx hy hz tx ty tz')\n"),

@@ -115,9 +115,12 @@ TEST(MakeGaussianBell, LiftsTheGridIntoABellAndRefusesBadShapes) {
     const VertexId top = 7 * 15 + 7;
     EXPECT_EQ(bell->reference(top), (Point{7, 7, 5}));
     EXPECT_DOUBLE_EQ(bell->reference(0)[2], 5 * std::exp(-98.0 / 8));
-    EXPECT_EQ(make_gaussian_bell({14, 14}, {1, 1}, 5, 0).reason(), "make_gaussian_bell: width 0.000000 is not positive and finite");
-    EXPECT_EQ(make_gaussian_bell({0, 14}, {1, 1}, 5, 2).reason(), "make_gaussian_bell: 0 cells along x is not in 1..5000");
-    EXPECT_EQ(make_gaussian_bell({2, 2}, {1, 1}, std::nan(""), 2).reason(), "make_gaussian_bell: height nan is not finite");
+    EXPECT_EQ(make_gaussian_bell({14, 14}, {1, 1}, 5, 0).reason(),
+              "make_gaussian_bell: width 0.000000 is not positive and finite");
+    EXPECT_EQ(make_gaussian_bell({0, 14}, {1, 1}, 5, 2).reason(),
+              "make_gaussian_bell: 0 cells along x is not in 1..5000");
+    EXPECT_EQ(make_gaussian_bell({2, 2}, {1, 1}, std::nan(""), 2).reason(),
+              "make_gaussian_bell: height nan is not finite");
 }
 
 }  // namespace

@@ -95,7 +95,9 @@ Latency latency(const Mesh& input, const std::vector<Point>& path, Method method
 std::vector<sxk::delaunaycut::Blade> bell_path(double c) {
     std::vector<sxk::delaunaycut::Blade> blades;
     constexpr double step = 0.2;
-    auto upright = [&](double x, double y, double tip) { blades.push_back({{c + x, c + y, tip + 17}, {c + x, c + y, tip}}); };
+    auto upright = [&](double x, double y, double tip) {
+        blades.push_back({{c + x, c + y, tip + 17}, {c + x, c + y, tip}});
+    };
     for (double tip = 8; tip >= -2; tip -= 5 * step) upright(-20, -4 - 2 * std::sin(20.0 / 12), tip);  // the tip in
     for (double x = -20; x <= 20; x += step) upright(x, -4 + 2 * std::sin(x / 12), -2);                // along
     for (double tip = -2; tip <= 12; tip += 5 * step) upright(20, -4 + 2 * std::sin(20.0 / 12), tip);  // and out

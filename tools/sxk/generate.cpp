@@ -87,14 +87,15 @@ int run_generate_square(Context& context, const GenerateOptions& options) {
     }
     if (options.shape == "bell") {
         const double side = std::min(counts[0] * spacing[0], counts[1] * spacing[1]);
-        return write_generated(context, make_gaussian_bell(counts, spacing, options.height * side, options.width * side),
-                               options.output);
+        return write_generated(
+            context, make_gaussian_bell(counts, spacing, options.height * side, options.width * side), options.output);
     }
     return write_generated(context, make_triangle_grid(counts, spacing), options.output);
 }
 
 int run_generate(Context& context, const GenerateOptions& options) {
-    if (options.shape == "square" || options.shape == "bell") return run_generate_square(context, options);  // one or two numbers each
+    // one or two numbers each
+    if (options.shape == "square" || options.shape == "bell") return run_generate_square(context, options);
     const auto cells = three_numbers(options.cells);
     const auto spacing = three_numbers(options.spacing);
     for (const auto* problem : {std::get_if<std::string>(&cells), std::get_if<std::string>(&spacing)})
@@ -132,15 +133,16 @@ void add_generate_command(CLI::App& app, Context& context) {
     command->add_option("OUT", options->output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
         ->required();
     command->add_option("--shape", options->shape,
-                        "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell; bell: the square "
-                        "lifted into a Gaussian bell (a surface in space)")
+                        "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell; "
+                        "bell: the square lifted into a Gaussian bell (a surface in space)")
         ->check(CLI::IsMember({"box", "cylinder", "square", "bell"}))
         ->capture_default_str();
     command->add_option("--cells", options->cells,
                         "box: cells per axis, N or NX,NY,NZ (each 1..1000); square, bell: N or NX,NY (each 1..5000)")
         ->capture_default_str();
     command->add_option("--spacing", options->spacing,
-                        "box: cell size, S or SX,SY,SZ; square, bell: S or SX,SY; cylinder: ring and disc spacing (positive)")
+                        "box: cell size, S or SX,SY,SZ; square, bell: S or SX,SY; cylinder: ring and disc spacing "
+                        "(positive)")
         ->capture_default_str();
     command->add_option("--rings", options->rings, "cylinder: rings around the axis")
         ->check(whole_number_in(1, 200))
