@@ -13,8 +13,8 @@ void add_cut_options(CLI::App& app, Options& options) {
            [&options](const std::string& method) {
                options.method = method == "subdivision" ? Method::subdivision : Method::delaunay;
            },
-           "delaunay: drag a node, flip, remove and split (thesis 5.2); subdivision: split every crossed "
-           "edge where it is crossed (the baseline of 5.4)")
+           "delaunay: drag a node, flip, remove and split (thesis 5.2, 5.3); subdivision: split every crossed "
+           "edge where it is crossed (the baseline of 5.4; planar meshes only)")
         ->check(CLI::IsMember({"delaunay", "subdivision"}))
         ->default_str("delaunay");
     app.add_option("--eps-edge", options.eps_edge,
