@@ -83,6 +83,26 @@ Outcome<Done> SurfaceCutSession::follow(const Blade& blade, CutStepReport& repor
             const bool cramped =
                 largest_safe_move(blade.handle, blade.tip, far_edges(mesh(), node)) < 2 * least_piece * m_mean_edge;
             if (farthest <= eps_entry() && !cramped) continue;
+            // an interior entry node with one pierce point: the other of a blade touching a curved
+            // surface may have run one triangle beyond in the last piece; it is found there, and the
+            // cut branches towards the edge in between
+            if (pierces.size() == 1 && !on_boundary(mesh(), node)) {
+                const VertexFan fan = fan_around(mesh(), node);
+                for (std::size_t k = 0; k < fan.triangles.size() && pierces.size() == 1; ++k) {
+                    const ElementId t = fan.triangles[k];
+                    const Simplex& s = mesh().simplex(t);
+                    int slot = 0;
+                    while (s.vertex(slot) != node) ++slot;
+                    const ElementId beyond = mesh().neighbor(t, slot);
+                    if (beyond == invalid_id) continue;
+                    const std::array<ElementId, 1> one{beyond};
+                    const auto found = pierce_points(mesh(), one, blade, 0);
+                    if (found.empty()) continue;
+                    const Point& px = mesh().deformed(fan.ring[k]);
+                    const Point& py = mesh().deformed(fan.next(k));
+                    pierces.emplace_back(t, lerp3(px, py, nearest_on_segment(px, py, found.front().second)));
+                }
+            }
             if (auto opened = open_from(i, pierces, report); !opened) return opened;
             continue;
         }
@@ -135,6 +155,8 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
         if (std::none_of(nodes.begin(), nodes.end(), [&](const auto& known) { return known.first == *placed; }))
             nodes.emplace_back(*placed, p);
     }
+    // a later node may have split the edge from o to an earlier one: that one is no longer next to o
+    std::erase_if(nodes, [&](const auto& node) { return !edge_face(mesh(), o, node.first); });
     if (nodes.empty()) {
         if (runs_along_boundary) {  // the incision is over before it began
             m_state.incisions[i].node = invalid_id;
