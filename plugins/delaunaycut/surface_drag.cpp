@@ -66,26 +66,12 @@ Outcome<std::vector<std::pair<ElementId, Point>>> SurfaceCutSession::catch_up(st
                                                                               CutStepReport& report) {
     for (int round = 0; round < 4; ++round) {
         const VertexId a = m_state.incisions[i].node;
-        const VertexFan fan = fan_around(mesh(), a);
-        std::optional<Point> toward;
-        for (std::size_t k = 0; k < fan.triangles.size() && !toward; ++k) {
-            const ElementId t = fan.triangles[k];
-            const Simplex& s = mesh().simplex(t);
-            int slot = 0;
-            while (s.vertex(slot) != a) ++slot;
-            const ElementId beyond = mesh().neighbor(t, slot);
-            if (beyond == invalid_id) continue;
-            const std::array<ElementId, 1> one{beyond};
-            const auto found = pierce_points(mesh(), one, blade, 0);
-            if (found.empty()) continue;
-            // the point of the edge between nearest the pierce point, a little inside the node's triangle
-            const Point& px = mesh().deformed(fan.ring[k]);
-            const Point& py = mesh().deformed(fan.next(k));
-            toward = lerp3(lerp3(px, py, nearest_on_segment(px, py, found.front().second)), mesh().deformed(a), 0.1);
-        }
-        if (!toward) return std::vector<std::pair<ElementId, Point>>{};
+        const std::optional<Beyond> beyond = pierced_beyond(mesh(), a, blade);
+        if (!beyond) return std::vector<std::pair<ElementId, Point>>{};
+        // the point of the edge between nearest the pierce point, a little inside the node's triangle
+        const Point toward = lerp3(beyond->on_edge, mesh().deformed(a), 0.1);
         const std::size_t changes = report.moves + report.flips + report.nodes_removed;
-        if (auto dragged = drag(i, *toward, report); !dragged) return dragged.refusal();
+        if (auto dragged = drag(i, toward, report); !dragged) return dragged.refusal();
         const std::vector<ElementId> around = star(mesh(), m_state.incisions[i].node);
         auto pierces = pierce_points(mesh(), around, blade, 1e-6 * m_mean_edge);
         if (!pierces.empty() || report.moves + report.flips + report.nodes_removed == changes) return pierces;

@@ -160,6 +160,25 @@ std::size_t folds_at(const Mesh& mesh, std::span<const ElementId> triangles) {
     return folds;
 }
 
+std::optional<Beyond> pierced_beyond(const Mesh& mesh, VertexId v, const Blade& blade) {
+    const VertexFan fan = fan_around(mesh, v);
+    for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
+        const ElementId t = fan.triangles[k];
+        const Simplex& s = mesh.simplex(t);
+        int slot = 0;
+        while (s.vertex(slot) != v) ++slot;
+        const ElementId beyond = mesh.neighbor(t, slot);
+        if (beyond == invalid_id) continue;
+        const std::array<ElementId, 1> one{beyond};
+        const auto found = pierce_points(mesh, one, blade, 0);
+        if (found.empty()) continue;
+        const Point& px = mesh.deformed(fan.ring[k]);
+        const Point& py = mesh.deformed(fan.next(k));
+        return Beyond{t, lerp3(px, py, nearest_on_segment(px, py, found.front().second))};
+    }
+    return std::nullopt;
+}
+
 std::vector<std::array<Point, 2>> far_edges(const Mesh& mesh, VertexId v) {
     const VertexFan fan = fan_around(mesh, v);
     std::vector<std::array<Point, 2>> edges;

@@ -66,6 +66,15 @@ Outcome<Done> place_on_surface(Mesh& mesh, VertexId v, const Point& point);
 // remove_node check the new triangles among themselves only.
 std::size_t folds_at(const Mesh& mesh, std::span<const ElementId> triangles);
 
+// The blade one triangle beyond v's star: the first triangle of star(v) whose neighbour across the
+// edge opposite v the blade pierces, with the point of that edge nearest the pierce point; none
+// when the blade pierces no such neighbour.
+struct Beyond {
+    ElementId triangle = invalid_id;  // of star(v)
+    Point on_edge{};
+};
+std::optional<Beyond> pierced_beyond(const Mesh& mesh, VertexId v, const Blade& blade);
+
 // The edges of star(v) opposite v, as point pairs (deformed positions).
 std::vector<std::array<Point, 2>> far_edges(const Mesh& mesh, VertexId v);
 

@@ -86,23 +86,9 @@ Outcome<Done> SurfaceCutSession::follow(const Blade& blade, CutStepReport& repor
             // an interior entry node with one pierce point: the other of a blade touching a curved
             // surface may have run one triangle beyond in the last piece; it is found there, and the
             // cut branches towards the edge in between
-            if (pierces.size() == 1 && !on_boundary(mesh(), node)) {
-                const VertexFan fan = fan_around(mesh(), node);
-                for (std::size_t k = 0; k < fan.triangles.size() && pierces.size() == 1; ++k) {
-                    const ElementId t = fan.triangles[k];
-                    const Simplex& s = mesh().simplex(t);
-                    int slot = 0;
-                    while (s.vertex(slot) != node) ++slot;
-                    const ElementId beyond = mesh().neighbor(t, slot);
-                    if (beyond == invalid_id) continue;
-                    const std::array<ElementId, 1> one{beyond};
-                    const auto found = pierce_points(mesh(), one, blade, 0);
-                    if (found.empty()) continue;
-                    const Point& px = mesh().deformed(fan.ring[k]);
-                    const Point& py = mesh().deformed(fan.next(k));
-                    pierces.emplace_back(t, lerp3(px, py, nearest_on_segment(px, py, found.front().second)));
-                }
-            }
+            if (pierces.size() == 1 && !on_boundary(mesh(), node))
+                if (const std::optional<Beyond> beyond = pierced_beyond(mesh(), node, blade))
+                    pierces.emplace_back(beyond->triangle, beyond->on_edge);
             if (auto opened = open_from(i, pierces, report); !opened) return opened;
             continue;
         }
