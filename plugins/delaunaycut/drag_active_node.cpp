@@ -13,8 +13,7 @@
 #include <cmath>
 
 #include "cut_methods.hpp"
-#include "sxk/ops/flip_edge.hpp"
-#include "sxk/ops/make_delaunay_by_flips.hpp"
+#include "star_flips.hpp"
 #include "sxk/ops/remove_node.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
@@ -125,23 +124,9 @@ bool DelaunayCutSession::remove_close_node(CutStepReport& report) {
 }
 
 bool DelaunayCutSession::flip_around_active(CutStepReport& report) {
-    bool any = false;
-    for (int flips = 0; flips < 64; ++flips) {
-        bool flipped = false;
-        for (const ElementId t : star(mesh(), m_state.active)) {
-            for (int i = 0; i < 3 && !flipped; ++i) {
-                if (mesh().neighbor(t, i) == invalid_id) continue;
-                const FaceId edge = mesh().face(t, i);
-                if (is_locally_delaunay(mesh(), edge, Positions::deformed)) continue;
-                flipped = flip_edge(mesh(), edge).ok();
-            }
-            if (flipped) break;
-        }
-        if (!flipped) return any;
-        ++report.flips;
-        any = true;
-    }
-    return any;
+    const std::size_t flips = flip_star(mesh(), m_state.active);
+    report.flips += flips;
+    return flips > 0;
 }
 
 }  // namespace sxk::delaunaycut

@@ -18,10 +18,9 @@
 
 #include "planar_walk.hpp"
 #include "surface_cut.hpp"
+#include "star_flips.hpp"
 #include "surface_geometry.hpp"
 #include "sxk/edit_journal.hpp"
-#include "sxk/ops/flip_edge.hpp"
-#include "sxk/ops/make_delaunay_by_flips.hpp"
 #include "sxk/ops/remove_node.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
@@ -123,35 +122,12 @@ bool SurfaceCutSession::remove_close_node(std::size_t i, CutStepReport& report) 
 }
 
 bool SurfaceCutSession::flip_around(std::size_t i, CutStepReport& report) {
-    bool any = false;
-    for (int flips = 0; flips < 64; ++flips) {
-        bool flipped = false;
-        for (const ElementId t : star(mesh(), m_state.incisions[i].node)) {
-            const Simplex s = mesh().simplex(t);
-            for (int k = 0; k < 3 && !flipped; ++k) {
-                const ElementId other = mesh().neighbor(t, k);
-                if (other == invalid_id) continue;
-                const FaceId edge = mesh().face(t, k);
-                if (is_locally_delaunay(mesh(), edge, Positions::deformed)) continue;
-                // the flip's new edge joins the vertices opposite this one: not two incisions' nodes
-                const VertexId c = s.vertex(k);
-                VertexId d = invalid_id;
-                for (const VertexId w : mesh().simplex(other).vertices())
-                    if (w != s.vertex((k + 1) % 3) && w != s.vertex((k + 2) % 3)) d = w;
-                if (is_active(c) && is_active(d)) continue;
-                const std::array<ElementId, 2> was{t, other};
-                const std::size_t folds_before = folds_at(mesh(), was);
-                EditStep attempt(*EditJournal::of(mesh()));
-                auto made = flip_edge(mesh(), edge);
-                flipped = made && folds_at(mesh(), *made) <= folds_before && attempt.commit().ok();
-            }
-            if (flipped) break;
-        }
-        if (!flipped) return any;
-        ++report.flips;
-        any = true;
-    }
-    return any;
+    StarFlipRules rules;
+    rules.may_join = [&](VertexId c, VertexId d) { return !(is_active(c) && is_active(d)); };
+    rules.no_new_folds = true;
+    const std::size_t flips = flip_star(mesh(), m_state.incisions[i].node, rules);
+    report.flips += flips;
+    return flips > 0;
 }
 
 }  // namespace sxk::delaunaycut
