@@ -15,6 +15,15 @@
 namespace sxk::delaunaycut {
 
 namespace {
+// The longest edge of triangle t (deformed positions).
+double longest_edge(const Mesh& mesh, ElementId t) {
+    const Simplex& s = mesh.simplex(t);
+    double longest = 0;
+    for (int j = 0; j < 3; ++j)
+        longest = std::max(longest, distance3(mesh.deformed(s.vertex(j)), mesh.deformed(s.vertex((j + 1) % 3))));
+    return longest;
+}
+
 // Pieces of one movement at most: past them the rest of the movement is one piece, and an incision
 // the blade left behind in it ends.
 constexpr int most_pieces = 4096;
@@ -44,12 +53,7 @@ Outcome<std::unique_ptr<SurfaceCutSession>> SurfaceCutSession::make(Mesh& mesh, 
 SurfaceCutSession::SurfaceCutSession(Mesh& mesh, const Options& options, double mean_edge)
     : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_longest_edge(0),
       m_index(mesh, Positions::deformed) {
-    for (const ElementId t : elements(mesh)) {
-        const Simplex& s = mesh.simplex(t);
-        for (int j = 0; j < 3; ++j)
-            m_longest_edge = std::max(m_longest_edge,
-                                      distance3(mesh.deformed(s.vertex(j)), mesh.deformed(s.vertex((j + 1) % 3))));
-    }
+    for (const ElementId t : elements(mesh)) m_longest_edge = std::max(m_longest_edge, longest_edge(mesh, t));
 }
 
 SurfaceCutSession::~SurfaceCutSession() = default;
@@ -118,13 +122,8 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
     }
     m_blade = to;
     m_undo.push_back({blade_before, state_before});
-    for (const ElementId t : elements_edited_in_step()) {
-        if (!mesh().is_element(t)) continue;
-        const Simplex& s = mesh().simplex(t);
-        for (int j = 0; j < 3; ++j)
-            m_longest_edge = std::max(
-                m_longest_edge, distance3(mesh().deformed(s.vertex(j)), mesh().deformed(s.vertex((j + 1) % 3))));
-    }
+    for (const ElementId t : elements_edited_in_step())
+        if (mesh().is_element(t)) m_longest_edge = std::max(m_longest_edge, longest_edge(mesh(), t));
     m_last.phase = m_state.incisions.empty() ? Phase::outside : Phase::cutting;
     m_last.incisions = m_state.incisions.size();
     m_last.elements = mesh().element_count();

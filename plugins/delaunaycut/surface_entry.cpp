@@ -46,6 +46,8 @@ struct Event {
 Outcome<double> SurfaceCutSession::enter(const Blade& from, const Blade& to, CutStepReport& report) {
     const double fastest = std::max(distance3(from.handle, to.handle), distance3(from.tip, to.tip));
     if (fastest == 0) return 1.0;
+    // a safety net: a blade that keeps meeting the surface at one place would add an entry per piece
+    if (report.entries >= most_entries) return 1.0;
     const double blade_length = std::max(distance3(from.handle, from.tip), distance3(to.handle, to.tip));
     const int parts = static_cast<int>(std::clamp(std::ceil(blade_length / (4 * m_mean_edge)), 1.0, 64.0));
     std::vector<ElementId> candidates;
@@ -121,8 +123,6 @@ Outcome<double> SurfaceCutSession::enter(const Blade& from, const Blade& to, Cut
         around.erase(std::unique(around.begin(), around.end()), around.end());
         return !pierce_points(mesh(), around, blade, 0).empty();
     };
-    // a safety net: a blade that keeps meeting the surface at one place would add an entry per piece
-    if (report.entries >= most_entries) return 1.0;
     for (std::size_t first = 0; first < events.size();) {
         std::size_t last = first;
         while (last < events.size() && events[last].time <= events[first].time + 1e-12) ++last;

@@ -57,15 +57,12 @@ Outcome<bool> SurfaceCutSession::try_exit(std::size_t i, const Point& heading, C
     for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
         const ElementId t = fan.triangles[k];
         const VertexId u = fan.ring[k], v = fan.next(k);
-        const Simplex& s = mesh().simplex(t);
-        int slot = 0;
-        while (s.vertex(slot) != a) ++slot;
-        const ElementId beyond = mesh().neighbor(t, slot);
+        const ElementId beyond = mesh().neighbor(t, mesh().simplex(t).index(a));
         // a separating edge is interior, ends and all (after a branch, the edges from the cut's node
         // behind both new incisions separate them and are cut at that end already)
         bool exit_edge = beyond == invalid_id;
         if (!exit_edge && !on_boundary(mesh(), u) && !on_boundary(mesh(), v) &&
-            !mesh().face_label(Simplex(+1, {std::min(u, v), std::max(u, v)})))  // not another's constrained edge
+            !mesh().face_label(Simplex(+1, {u, v})))  // not another's constrained edge
             for (const VertexId w : mesh().simplex(beyond).vertices())
                 if (w != u && w != v && other_incision(w)) exit_edge = true;
         if (!exit_edge) continue;
@@ -104,10 +101,9 @@ Outcome<Done> SurfaceCutSession::annihilate(VertexId meeting, CutStepReport& rep
         if (incision.node == invalid_id || incision.stage == Stage::entered) continue;
         const bool here = incision.node == meeting;
         if (!here && std::find(fan.ring.begin(), fan.ring.end(), incision.node) == fan.ring.end()) continue;
-        if (!here) cut.push_back(Simplex(+1, {std::min(meeting, incision.node), std::max(meeting, incision.node)}));
+        if (!here) cut.push_back(Simplex(+1, {meeting, incision.node}));
         if (incision.stage == Stage::constrained && edge_face(mesh(), incision.entry_node, incision.node))
-            cut.push_back(Simplex(+1, {std::min(incision.entry_node, incision.node),
-                                       std::max(incision.entry_node, incision.node)}));
+            cut.push_back(Simplex(+1, {incision.entry_node, incision.node}));
         ending.push_back(j);
     }
     if (cut.empty()) return Done{};

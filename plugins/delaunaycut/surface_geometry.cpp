@@ -58,14 +58,29 @@ std::vector<std::pair<ElementId, Point>> pierce_points(const Mesh& mesh, std::sp
     return found;
 }
 
+NearestPoint nearest_point(const Mesh& mesh, std::span<const ElementId> triangles, const Point& p) {
+    NearestPoint nearest;
+    double least = std::numeric_limits<double>::infinity();
+    for (const ElementId t : triangles) {
+        const Simplex& s = mesh.simplex(t);
+        const std::array<double, 3> w =
+            nearest_on_triangle(mesh.deformed(s.vertex(0)), mesh.deformed(s.vertex(1)), mesh.deformed(s.vertex(2)), p);
+        Point on{};
+        for (int j = 0; j < 3; ++j)
+            for (std::size_t k = 0; k < 3; ++k) on[k] += w[static_cast<std::size_t>(j)] * mesh.deformed(s.vertex(j))[k];
+        if (const double d = distance3(on, p); d < least) least = d, nearest = {t, w, on};
+    }
+    return nearest;
+}
+
 Outcome<VertexId> node_on_triangle(Mesh& mesh, ElementId t, const Point& point, double snap) {
     const Simplex s = mesh.simplex(t);
     std::array<Point, 3> p{};
     for (int j = 0; j < 3; ++j) p[static_cast<std::size_t>(j)] = mesh.deformed(s.vertex(j));
-    const std::array<double, 3> w = nearest_on_triangle(p[0], p[1], p[2], point);
-    Point on{};
-    for (std::size_t j = 0; j < 3; ++j)
-        for (std::size_t k = 0; k < 3; ++k) on[k] += w[j] * p[j][k];
+    const std::array<ElementId, 1> one{t};
+    const NearestPoint near = nearest_point(mesh, one, point);
+    const std::array<double, 3>& w = near.weights;
+    const Point& on = near.point;
     // a corner
     std::size_t nearest = 0;
     for (std::size_t j = 1; j < 3; ++j)
@@ -94,19 +109,12 @@ Outcome<Done> place_on_surface(Mesh& mesh, VertexId v, const Point& point) {
         for (const VertexId w : mesh.simplex(t).vertices()) same = same && mesh.reference(w) == mesh.deformed(w);
     Point reference = point;
     if (!same) {
-        double best = std::numeric_limits<double>::infinity();
-        for (const ElementId t : around) {
-            const Simplex& s = mesh.simplex(t);
-            const std::array<double, 3> w = nearest_on_triangle(
-                mesh.deformed(s.vertex(0)), mesh.deformed(s.vertex(1)), mesh.deformed(s.vertex(2)), point);
-            Point on{}, mapped{};
-            for (int j = 0; j < 3; ++j)
-                for (std::size_t k = 0; k < 3; ++k) {
-                    on[k] += w[static_cast<std::size_t>(j)] * mesh.deformed(s.vertex(j))[k];
-                    mapped[k] += w[static_cast<std::size_t>(j)] * mesh.reference(s.vertex(j))[k];
-                }
-            if (const double d = distance3(on, point); d < best) best = d, reference = mapped;
-        }
+        const NearestPoint near = nearest_point(mesh, around, point);
+        const Simplex& s = mesh.simplex(near.triangle);
+        reference = {0, 0, 0};
+        for (int j = 0; j < 3; ++j)
+            for (std::size_t k = 0; k < 3; ++k)
+                reference[k] += near.weights[static_cast<std::size_t>(j)] * mesh.reference(s.vertex(j))[k];
     }
     // the star after the move: no triangle collinear, none turned against a neighbour it faced along with
     for (const bool in_reference : {false, true}) {
@@ -164,10 +172,7 @@ std::optional<Beyond> pierced_beyond(const Mesh& mesh, VertexId v, const Blade& 
     const VertexFan fan = fan_around(mesh, v);
     for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
         const ElementId t = fan.triangles[k];
-        const Simplex& s = mesh.simplex(t);
-        int slot = 0;
-        while (s.vertex(slot) != v) ++slot;
-        const ElementId beyond = mesh.neighbor(t, slot);
+        const ElementId beyond = mesh.neighbor(t, mesh.simplex(t).index(v));
         if (beyond == invalid_id) continue;
         const std::array<ElementId, 1> one{beyond};
         const auto found = pierce_points(mesh, one, blade, 0);

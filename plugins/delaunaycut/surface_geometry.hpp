@@ -48,6 +48,15 @@ std::optional<Point> blade_meets_triangle(const Blade& blade, const Point& p, co
 std::vector<std::pair<ElementId, Point>> pierce_points(const Mesh& mesh, std::span<const ElementId> triangles,
                                                        const Blade& blade, double merge);
 
+// The point of `triangles` nearest p (deformed positions): its triangle (the first of the nearest),
+// its barycentric weights there (of simplex(triangle).vertex(j)), the point; no triangle for none.
+struct NearestPoint {
+    ElementId triangle = invalid_id;
+    std::array<double, 3> weights{};
+    Point point{};
+};
+NearestPoint nearest_point(const Mesh& mesh, std::span<const ElementId> triangles, const Point& p);
+
 // A node at `point` on triangle t (on it or near it): t's corner when the point is within `snap` of
 // it, else a split of t's edge when within `snap` of it, else a split of t (the node where the
 // point's nearest point on t is, barycentric weights in both position sets).

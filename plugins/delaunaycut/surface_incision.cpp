@@ -24,29 +24,10 @@
 
 namespace sxk::delaunaycut {
 
-namespace {
-Simplex edge(VertexId a, VertexId b) { return Simplex(+1, {std::min(a, b), std::max(a, b)}); }
-
-// The triangle of `triangles` nearest p.
-ElementId nearest_triangle(const Mesh& mesh, std::span<const ElementId> triangles, const Point& p) {
-    ElementId best = invalid_id;
-    double least = std::numeric_limits<double>::infinity();
-    for (const ElementId t : triangles) {
-        const Simplex& s = mesh.simplex(t);
-        const std::array<double, 3> w =
-            nearest_on_triangle(mesh.deformed(s.vertex(0)), mesh.deformed(s.vertex(1)), mesh.deformed(s.vertex(2)), p);
-        Point on{};
-        for (int j = 0; j < 3; ++j)
-            for (std::size_t k = 0; k < 3; ++k) on[k] += w[static_cast<std::size_t>(j)] * mesh.deformed(s.vertex(j))[k];
-        if (const double d = distance3(on, p); d < least) least = d, best = t;
-    }
-    return best;
-}
-}  // namespace
-
 void SurfaceCutSession::end_incision(std::size_t i) {
     Incision& incision = m_state.incisions[i];
-    if (incision.stage == Stage::constrained) mesh().erase_face_label(edge(incision.entry_node, incision.node));
+    if (incision.stage == Stage::constrained)
+        mesh().erase_face_label(Simplex(+1, {incision.entry_node, incision.node}));
     incision.node = invalid_id;
 }
 
@@ -128,7 +109,7 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
         if (distance3(p, mesh().deformed(o)) <= 1e-3 * m_mean_edge) continue;
         // found again: the node before may have split the pierce point's triangle (and its id be reused)
         const std::vector<ElementId> around = star(mesh(), o);
-        const ElementId holder = nearest_triangle(mesh(), around, p);
+        const ElementId holder = nearest_point(mesh(), around, p).triangle;
         if (holder == invalid_id) continue;
         auto placed = node_on_triangle(mesh(), holder, p, 1e-3 * m_mean_edge);
         if (!placed || *placed == o || is_active(*placed)) continue;
@@ -156,7 +137,7 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
     if (was.stage == Stage::entered && !from_boundary && nodes.size() == 1) {
         // thesis §5.3.2: the edge from the entry node to the active node, constrained
         const auto [n, p] = nodes.front();
-        mesh().set_face_label(edge(o, n), m_options.cut_label);
+        mesh().set_face_label(Simplex(+1, {o, n}), m_options.cut_label);
         if (auto kept = attempt.commit(); !kept) return kept.refusal();
         Incision& incision = m_state.incisions[i];
         incision.stage = Stage::constrained;
@@ -169,10 +150,11 @@ Outcome<Done> SurfaceCutSession::open_from(std::size_t i, const std::vector<std:
     std::vector<Simplex> cut;
     std::vector<bool> reaches_boundary;
     for (const auto& [n, p] : nodes) {
-        cut.push_back(edge(o, n));
+        cut.push_back(Simplex(+1, {o, n}));
         reaches_boundary.push_back(on_boundary(mesh(), n));
     }
-    if (was.stage == Stage::constrained && edge_face(mesh(), was.entry_node, o)) cut.push_back(edge(was.entry_node, o));
+    if (was.stage == Stage::constrained && edge_face(mesh(), was.entry_node, o))
+        cut.push_back(Simplex(+1, {was.entry_node, o}));
     DissectOptions options;
     options.cut_label = m_options.cut_label;
     auto opened = dissect(mesh(), cut, options);

@@ -25,7 +25,6 @@ namespace sxk::delaunaycut {
 
 namespace {
 
-Simplex edge(VertexId a, VertexId b) { return Simplex(+1, {std::min(a, b), std::max(a, b)}); }
 
 // The point of the polyline `path` nearest the line through o1 and o2, and the index of the first
 // path point after it; none for a path of fewer than two points.
@@ -100,7 +99,7 @@ void SurfaceCutSession::split_incision(std::size_t i, CutStepReport& report) {
             (void)place_on_surface(mesh(), m, q);  // refused: the node stays on the edge, as good a place
             DissectOptions options;
             options.cut_label = m_options.cut_label;
-            const std::array<Simplex, 2> halves{edge(e, m), edge(m, a)};
+            const std::array<Simplex, 2> halves{Simplex(+1, {e, m}), Simplex(+1, {m, a})};
             auto opened = dissect(mesh(), halves, options);
             if (!opened || opened->new_vertices.empty()) return;  // rolled back: the edge stays constrained
             report.faces_dissected += 2;
