@@ -52,6 +52,11 @@ void add_body_options(CLI::App& app, BodySetup& setup) {
                    "6.9), 0 < tol < 1")
         ->check(number_in(0, false, 1, false, "(0, 1)"))
         ->capture_default_str();
+    app.add_option("--rounding", setup.rounding,
+                   "epsilon_round of eq. 6.9: the part of the stop threshold that stands for rounding, "
+                   "relative to E times the body's area (the thesis' needle runs: 1e-8), 0 <= x < 1")
+        ->check(number_in(0, true, 1, false, "[0, 1)"))
+        ->capture_default_str();
     app.add_option("--max-iterations", setup.max_iterations, "Most CG iterations before giving up")
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
         ->capture_default_str();

@@ -5,7 +5,7 @@
 //     BodyOptions words:  --fix EXPR  --displace EXPR:DX,DY,DZ  --force EXPR:FX,FY,FZ
 //                         --share equal|area  --gravity GX,GY,GZ  --density RHO
 //                         --material linear|neohookean  --E  --nu  --thickness  --tol
-//                         --max-iterations  --stop reactions|external
+//                         --max-iterations  --stop reactions|external  --rounding
 //
 // Two stages, as the command checks them: the words alone (parse_body_setup: selectors, vectors,
 // something holds the body), then on the mesh (build_body: the body, its constraints and loads;
@@ -30,7 +30,7 @@ namespace sxk::elasticity {
 struct BodySetup {
     std::vector<std::string> fix, force, displace;
     std::string material = "linear", share = "equal";
-    double young = 1e6, poisson = 0.25, tolerance = 1e-6;
+    double young = 1e6, poisson = 0.25, tolerance = 1e-6, rounding = 1e-12;
     std::optional<double> thickness;
     std::string gravity;
     double density = 1000;

@@ -30,9 +30,12 @@ double stop_threshold(const ElasticBody& body, const SolveOptions& options,
         return options.tolerance * external;
     const double reaction = reaction_norm(body, ku);
     const double n = static_cast<double>(std::max<std::size_t>(body.dof_count(), 1));
+    // the force scale E * area: d H for a slab of thickness d (eq. 6.9 as printed for 2D), H^2 in
+    // space (the thesis' suggestion for 3D)
     const double h = body.diameter();
+    const double area = body.dimension() == 2 ? body.thickness() * h : h * h;
     return options.tolerance * std::sqrt(external * external + reaction * reaction) +
-           body.largest_young() * h * h * options.rounding / std::sqrt(n);
+           body.largest_young() * area * options.rounding / std::sqrt(n);
 }
 
 Outcome<Done> prepare_solve(ElasticBody& body) {

@@ -97,7 +97,8 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const auto report =
         solve(*body, {.tolerance = o.body.tolerance,
                       .max_iterations = o.body.max_iterations,
-                      .stop = o.body.stop == "external" ? StopCriterion::external_force : StopCriterion::with_reactions});
+                      .stop = o.body.stop == "external" ? StopCriterion::external_force : StopCriterion::with_reactions,
+                      .rounding = o.body.rounding});
     if (!report) {
         err << "sxk: " << o.input << ":0: " << report.reason() << '\n';
         return 2;

@@ -1,5 +1,6 @@
 // The elasticity plug-in's service, for the tools that run a simulation while they edit (the snap
-// cutter re-solves after every cut step, thesis §3.3) and for applications that load
+// cutter re-solves after every cut step, thesis §3.3; the needle holds the vertices on its shaft,
+// §6.3.2) and for applications that load
 // elasticity.so at run time:
 //
 //     auto elasticity = host.service<sxk::elasticity::ElasticityService>();
@@ -13,17 +14,21 @@
 // only the kernel's types.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
 
 namespace sxk::elasticity {
+
+using Vector3 = std::array<double, 3>;  // as in elastic_body.hpp
 
 // What one relax call did.
 struct RelaxReport {
@@ -52,11 +57,41 @@ public:
     virtual Outcome<bool> hold_piece(std::span<const ElementId> piece) = 0;
     // CG iterations over all relax calls.
     virtual std::size_t total_iterations() const = 0;
+
+    // ---- vertices a tool holds (a needle's stick-slip friction, thesis §6.3.2 and §6.6) -------
+    // Displacements are from the reference position (metres), forces in newtons; a planar body
+    // ignores z. The vertices the options constrain (--fix, --displace) are not the tool's: hold,
+    // hold_on_line and release refuse them (bad_argument, "vertex 7 is held by the body's options").
+    // Refusals name the vertex; a vertex in no element is not_found.
+
+    // u(v) = displacement (sticking).
+    virtual Outcome<Done> hold(VertexId v, Vector3 displacement) = 0;
+    // u(v) = displacement + s * direction for any s (slipping along a line).
+    virtual Outcome<Done> hold_on_line(VertexId v, Vector3 direction, Vector3 displacement) = 0;
+    // v free again (its displacement stays where it is).
+    virtual Outcome<Done> release(VertexId v) = 0;
+    // The tool's force on v, replacing the tool's previous force there (the options' loads stay).
+    virtual Outcome<Done> set_tool_force(VertexId v, Vector3 force) = 0;
+    // The forces on `vertices` at the current displacements: what the body exerts (the elastic
+    // force, -dPi/du) and what is loaded (options and tool). At a solution, the force a constraint
+    // exerts on a held vertex is -(elastic + loaded) (its reaction). Refuses as relax does when
+    // the body cannot be brought in step with the mesh, and with would_invert when the current
+    // displacements invert an element of a neo-Hookean body.
+    struct VertexForces {
+        Vector3 elastic{0, 0, 0};
+        Vector3 loaded{0, 0, 0};
+    };
+    virtual Outcome<std::vector<VertexForces>> forces_at(std::span<const VertexId> vertices) = 0;
+    virtual Vector3 displacement(VertexId v) const = 0;
+    // Sets every displacement to the mesh's deformed minus reference position: after the mesh
+    // was taken back to a state whose deformed positions this body wrote (an undo), the body
+    // starts from that state again.
+    virtual Outcome<Done> displacements_from_mesh() = 0;
 };
 
 struct ElasticityService {
     static constexpr std::string_view service_id = "sxk.elasticity";
-    static constexpr std::uint32_t service_version = 1;
+    static constexpr std::uint32_t service_version = 2;  // 2: vertices a tool holds
 
     // A simulation of `mesh` (which must stay where it is while the simulation lives) set up from
     // `sxk deform`'s options; refuses bad options and empty selections with `sxk deform`'s

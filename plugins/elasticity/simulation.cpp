@@ -2,6 +2,7 @@
 // options, attached to its mesh, relaxed a bounded number of CG iterations per call.
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <sstream>
 
 #include "body_setup.hpp"
@@ -18,6 +19,10 @@ class BodySimulation final : public Simulation {
 public:
     BodySimulation(Mesh& mesh, BuiltBody built, const SolveOptions& options)
         : m_mesh(mesh), m_built(std::move(built)), m_options(options) {
+        const ElasticBody& body = *m_built.body;
+        m_held_by_options.resize(body.vertex_count());
+        for (VertexId v = 0; v < body.vertex_count(); ++v)
+            m_held_by_options[v] = body.freedom(v) != Freedom::free;
         m_mesh.add_watcher(*m_built.body);
     }
     ~BodySimulation() override { m_mesh.remove_watcher(*m_built.body); }
@@ -74,11 +79,79 @@ public:
 
     std::size_t total_iterations() const override { return m_total; }
 
+    Outcome<Done> hold(VertexId v, Vector3 displacement) override {
+        if (auto mine = tools_vertex(v, "hold"); !mine) return mine;
+        return m_built.body->fix(v, displacement);
+    }
+    Outcome<Done> hold_on_line(VertexId v, Vector3 direction, Vector3 displacement) override {
+        if (auto mine = tools_vertex(v, "hold_on_line"); !mine) return mine;
+        return m_built.body->constrain_to_line(v, direction, displacement);
+    }
+    Outcome<Done> release(VertexId v) override {
+        if (auto mine = tools_vertex(v, "release"); !mine) return mine;
+        return m_built.body->free(v);
+    }
+    Outcome<Done> set_tool_force(VertexId v, Vector3 force) override {
+        if (auto fresh = m_built.body->refresh(); !fresh) return fresh.refusal().prefixed("set_tool_force: ");
+        Vector3& was = m_tool_force[v];
+        const Vector3 change{force[0] - was[0], force[1] - was[1], force[2] - was[2]};
+        if (auto added = m_built.body->add_force(v, change); !added) {
+            if (was == Vector3{0, 0, 0}) m_tool_force.erase(v);
+            return added.refusal().prefixed("set_tool_force: ");
+        }
+        was = force;
+        if (force == Vector3{0, 0, 0}) m_tool_force.erase(v);
+        return Done{};
+    }
+    Outcome<std::vector<VertexForces>> forces_at(std::span<const VertexId> vertices) override {
+        ElasticBody& body = *m_built.body;
+        if (auto fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("forces_at: ");
+        if (!body.elastic_forces(body.displacements(), m_gradient))
+            return Refusal{RefusalCode::would_invert, "forces_at: the displacements invert an element"};
+        std::vector<VertexForces> forces(vertices.size());
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            const VertexId v = vertices[i];
+            if (v >= body.vertex_count()) continue;
+            for (int k = 0; k < 3; ++k) forces[i].elastic[k] = -m_gradient[3 * v + k];
+            forces[i].loaded = body.force(v);
+        }
+        return forces;
+    }
+    Vector3 displacement(VertexId v) const override {
+        return v < m_built.body->vertex_count() ? m_built.body->displacement(v) : Vector3{0, 0, 0};
+    }
+    Outcome<Done> displacements_from_mesh() override {
+        ElasticBody& body = *m_built.body;
+        if (auto fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("displacements_from_mesh: ");
+        Eigen::VectorXd& u = body.displacements();
+        for (VertexId v = 0; v < body.vertex_count(); ++v) {
+            if (m_mesh.vertex_element(v) == invalid_id) continue;
+            const Point& reference = m_mesh.reference(v);
+            const Point& deformed = m_mesh.deformed(v);
+            for (int k = 0; k < 3; ++k) u[3 * v + k] = deformed[k] - reference[k];
+        }
+        // tool forces on vertices the mesh no longer has went with them
+        std::erase_if(m_tool_force, [&](const auto& entry) { return entry.first >= body.vertex_count(); });
+        return Done{};
+    }
+
 private:
+    // v is a vertex of the body the options do not hold
+    Outcome<Done> tools_vertex(VertexId v, const char* what) const {
+        if (v < m_held_by_options.size() && m_held_by_options[v])
+            return Refusal{RefusalCode::bad_argument, std::string(what) + ": vertex " + std::to_string(v) +
+                                                          " is held by the body's options",
+                           v};
+        return Done{};
+    }
+
     Mesh& m_mesh;
     BuiltBody m_built;
     SolveOptions m_options;
     std::size_t m_total = 0;
+    std::vector<char> m_held_by_options;  // per vertex of the mesh as built: --fix or --displace
+    std::map<VertexId, Vector3> m_tool_force;
+    Eigen::VectorXd m_gradient;  // forces_at's scratch
 };
 
 }  // namespace
@@ -108,7 +181,8 @@ Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, std::span<const std::s
     const SolveOptions options{.tolerance = setup.tolerance,
                                .max_iterations = setup.max_iterations,
                                .stop = setup.stop == "external" ? StopCriterion::external_force
-                                                                : StopCriterion::with_reactions};
+                                                                : StopCriterion::with_reactions,
+                               .rounding = setup.rounding};
     return std::unique_ptr<Simulation>(std::make_unique<BodySimulation>(mesh, std::move(*built), options));
 }
 

@@ -19,9 +19,9 @@ enum class StopCriterion {
     // ||r|| <= tolerance * ||f_ex|| (eq. 6.8, the thesis' chapters 3 and 4). Never met when the
     // loads are zero and only displacements are prescribed: use with_reactions then.
     external_force,
-    // ||r|| <= tolerance * sqrt(||f_ex||^2 + ||f_react||^2) + E H^2 rounding / sqrt(n) (eq. 6.9
-    // with the 3D area term H^2, H the body's diameter, n the number of unknowns), f_react the
-    // forces that hold the constrained vertices.
+    // ||r|| <= tolerance * sqrt(||f_ex||^2 + ||f_react||^2) + E A rounding / sqrt(n) (eq. 6.9:
+    // A = d H for a slab of thickness d in the plane, the 3D area term H^2 in space; H the body's
+    // diameter, n the number of unknowns), f_react the forces that hold the constrained vertices.
     with_reactions,
 };
 
@@ -29,7 +29,7 @@ struct SolveOptions {
     double tolerance = 1e-3;
     std::size_t max_iterations = 100000;
     StopCriterion stop = StopCriterion::with_reactions;
-    double rounding = 1e-12;           // epsilon_round of eq. 6.9
+    double rounding = 1e-12;           // epsilon_round of eq. 6.9 (the thesis' needle runs: 1e-8)
     std::size_t recompute_every = 50;  // r = P(f - K u) afresh every so many steps (drift)
     // Nonlinear CG: the line search along d stops when |d . r(u + alpha d)| <= this times
     // |d . r(u)| (the thesis' epsilon_newton, §4.5: 0.1 worked best), or after

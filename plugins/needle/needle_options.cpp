@@ -1,0 +1,43 @@
+// The needle's options (needle_options.hpp).
+#include "needle_options.hpp"
+
+#include "command_line.hpp"
+
+namespace sxk::needle {
+
+void add_needle_options(CLI::App& app, Options& options) {
+    app.add_option("--h-ref", options.h_ref,
+                   "Element size around the needle: the mesh is bisected along the tip's path until the "
+                   "elements there are of this size (the spacing of a uniform grid of them; thesis h_ref)")
+        ->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
+        ->capture_default_str();
+    app.add_option("--friction", options.friction.shaft,
+                   "Dynamic friction along the shaft, force per length (N/m; thesis Fig. 6.4)")
+        ->check(number_in(0, true, 1e300, true, "[0, 1e300]"))
+        ->capture_default_str();
+    app.add_option("--tip-friction", options.friction.tip,
+                   "Dynamic friction at the tip, force per length (N/m), falling linearly to --friction "
+                   "over --tip-length: the cutting force's bulge")
+        ->check(number_in(0, true, 1e300, true, "[0, 1e300]"))
+        ->capture_default_str();
+    app.add_option("--tip-length", options.friction.tip_length, "Length of the bulge behind the tip (m)")
+        ->check(number_in(0, true, 1e300, true, "[0, 1e300]"))
+        ->capture_default_str();
+    app.add_option("--static-ratio", options.friction.static_ratio,
+                   "Static friction threshold over the dynamic one (thesis 6.8.1: 2)")
+        ->check(number_in(1, true, 1e300, true, "[1, 1e300]"))
+        ->capture_default_str();
+    app.add_flag("!--no-relocation", options.relocate,
+                 "Needle nodes keep their offset from the needle (thesis 6.4) instead of going onto it "
+                 "(6.8.6)");
+    app.add_option("--rearrangements", options.rearrangements,
+                   "Solves per step: after each, the nodes' stick/slip grips are rearranged, and a change "
+                   "is solved again, at most this many times (the thesis' loop: 1)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}))
+        ->capture_default_str();
+    app.add_option("--iterations", options.iterations, "CG iterations per solve, at most (a frame's budget)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->capture_default_str();
+}
+
+}  // namespace sxk::needle

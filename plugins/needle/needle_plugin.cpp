@@ -1,0 +1,333 @@
+// The needle plug-in: `sxk needle IN PATH OUT` replays a recorded needle path through a
+// NeedleSession (needle.hpp), and the plug-in's ToolFactory offers the session as the tool
+// "needle". The simulation is the elasticity plug-in's service and the pictures the bezier
+// plug-in's renderer, found through the host (Plugin::attach): no plug-in links another.
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "command_line.hpp"
+#include "elasticity_service.hpp"
+#include "line_plot.hpp"
+#include "needle.hpp"
+#include "needle_options.hpp"
+#include "needle_report.hpp"
+#include "render_service.hpp"
+#include "sxk/io.hpp"
+#include "sxk/plugin.hpp"
+#include "sxk/tool_path.hpp"
+#include "uniform_refinement.hpp"
+
+extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_needle();
+
+namespace sxk::needle {
+
+namespace {
+
+// The host's services (Plugin::attach); see the snapcut plug-in: a process loads the plug-in once,
+// and the last host to attach it is the one whose services its sessions use.
+const sxk::Services* plugin_host = nullptr;
+
+std::vector<std::string> words_of(const std::string& text) {
+    std::vector<std::string> words;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) words.push_back(word);
+    return words;
+}
+
+struct CommandOptions {
+    std::string input, path, output, deform, frames, plot;
+    std::optional<double> h_start;
+    Options needle;
+    bool json = false;
+    std::string undo;
+    ReadOptions reading;
+};
+
+// The force profile along the needle after the replay: the needle's force on each needle node
+// along the axis, by the node's distance behind the tip, and the friction profile it works with.
+void draw_profile(const std::string& file, const NeedleSession& session) {
+    pictures::Plot plot;
+    plot.title = "forces along the needle";
+    plot.x_label = "distance behind the tip (mm)";
+    plot.y_label = "force along the needle (N)";
+    std::vector<NeedleNode> nodes(session.nodes().begin(), session.nodes().end());
+    std::sort(nodes.begin(), nodes.end(), [](const NeedleNode& a, const NeedleNode& b) { return a.along > b.along; });
+    pictures::Series on_node{"on each needle node", {}, {}};
+    pictures::Series dynamic{"dynamic threshold", {}, {}};
+    pictures::Series fixed{"static threshold", {}, {}};
+    for (const NeedleNode& node : nodes) {
+        const double mm = -node.along * 1000;
+        on_node.x.push_back(mm);
+        on_node.y.push_back(node.axial);
+        dynamic.x.push_back(mm);
+        dynamic.y.push_back(node.threshold);
+        fixed.x.push_back(mm);
+        fixed.y.push_back(node.threshold * session.options().friction.static_ratio);
+    }
+    plot.series = {on_node, dynamic, fixed};
+    pictures::write_png(file, pictures::draw(plot));
+}
+
+class NeedleCommand final : public PluginCommand {
+public:
+    std::string_view name() const override { return "needle"; }
+    std::string_view summary() const override {
+        return "insert a needle along a recorded path: refine around it, stick-slip friction, solve "
+               "(thesis chapter 6)";
+    }
+
+    int run(std::span<const std::string> args, std::ostream& out, std::ostream& err) override {
+        CommandOptions o;
+        CLI::App app("Insert a rigid needle into an elastic body along a recorded path (thesis chapter 6): "
+                     "each movement refines the mesh by bisection around the tip's path, makes the nodes "
+                     "of the edges the tip enters needle nodes, solves the body with the needle nodes "
+                     "sticking or slipping (static and dynamic friction), as one undoable step.",
+                     "sxk needle");
+        app.add_option("IN", o.input, "Triangle mesh in the plane, or tetrahedral mesh")->required();
+        app.add_option("PATH", o.path,
+                       "Needle path: one sample per line, 'time bx by tx ty' (2D) or 'time bx by bz tx ty "
+                       "tz' (3D): base and tip (docs/formats.md)")
+            ->required();
+        app.add_option("OUT", o.output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+            ->required();
+        app.add_option("--h-start", o.h_start,
+                       "Refine the whole mesh to elements of this size first (thesis h_start; not a step)")
+            ->check(number_in(0, false, 1e300, true, "(0, 1e300]"));
+        add_needle_options(app, o.needle);
+        app.add_option("--deform,--material", o.deform,
+                       "The body: `sxk deform`'s options in one word, e.g. \"--fix x>0.0999 --E 34e3 --nu "
+                       "0.34 --thickness 0.01 --tol 0.01 --rounding 1e-8\" (the elasticity plug-in). "
+                       "Without it the needle only refines and tracks its nodes (geometry only)");
+        app.add_option("--frames", o.frames,
+                       "Write a picture of the mesh per step into folder DIR (made if missing): step-0000.png "
+                       "before the first step, then one per step (the bezier plug-in's renderer)")
+            ->type_name("DIR");
+        app.add_option("--plot", o.plot,
+                       "Draw the forces along the needle after the replay (PNG): per needle node, and "
+                       "the friction thresholds");
+        add_undo_option(app, o.undo);
+        app.add_flag("--json", o.json, "Print one JSON object (with a 'steps' array) instead of the table");
+        add_read_options(app, o.reading);
+        if (const auto done = parse_command_line(app, args, "needle", out, err)) return *done;
+
+        if (!format_from_extension(o.output)) {
+            err << "sxk: " << o.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+            return 2;
+        }
+        if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {
+            err << "sxk: needle: --plot " << o.plot << ": the plot is a PNG picture; name it *.png\n";
+            return 2;
+        }
+        ToolPath path;
+        try {
+            const std::array<int, 2> columns{4, 6};
+            path = read_tool_path(o.path, columns);
+        } catch (const InputError& error) {
+            err << "sxk: " << error.what() << '\n';
+            return 2;
+        }
+        std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
+        if (!mesh) return 2;
+        const bool planar = mesh->topological_dimension() == 2 && mesh->ambient_dimension() == 2;
+        const bool solid = mesh->topological_dimension() == 3 && mesh->ambient_dimension() == 3;
+        if (!planar && !solid) {
+            err << "sxk: " << o.input << ":0: the needle goes into triangle meshes in the plane or tetrahedral "
+                << "meshes\n";
+            return 2;
+        }
+        if ((path.columns == 4) != planar) {
+            err << "sxk: " << o.path << ':' << path.samples.front().line << ": a "
+                << (path.columns == 4 ? "2D needle path (time bx by tx ty)" : "3D needle path (time bx by bz tx ty tz)")
+                << " does not fit " << o.input << ", a " << (planar ? "planar triangle" : "tetrahedral") << " mesh\n";
+            return 2;
+        }
+        for (const ToolSample& sample : path.samples) {
+            const int half = path.columns / 2;
+            if (std::equal(sample.values.begin(), sample.values.begin() + half, sample.values.begin() + half)) {
+                err << "sxk: " << o.path << ':' << sample.line << ": the needle has zero length (base = tip)\n";
+                return 2;
+            }
+        }
+        Replay record;
+        if (o.h_start) {
+            auto refined = refine_uniformly(*mesh, *o.h_start);
+            if (!refined) {
+                err << "sxk: " << o.input << ":0: --h-start: " << refined.reason() << '\n';
+                return 2;
+            }
+            record.start_bisections = *refined;
+        }
+        std::unique_ptr<elasticity::Simulation> simulation;
+        if (!o.deform.empty()) {
+            auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
+                                          : Outcome<elasticity::ElasticityService*>(
+                                                Refusal{RefusalCode::not_found, "no plug-in host"});
+            if (!elasticity) {
+                err << "sxk: needle: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
+                return 2;
+            }
+            auto made = (*elasticity)->simulate(*mesh, words_of(o.deform));
+            if (!made) {
+                err << "sxk: needle: --deform: " << made.reason() << '\n';
+                return 2;
+            }
+            simulation = std::move(*made);
+            auto settled = simulation->relax(std::numeric_limits<std::size_t>::max());
+            if (!settled) {
+                err << "sxk: needle: --deform: " << settled.reason() << '\n';
+                return 2;
+            }
+        } else {
+            err << "sxk: note: no --deform: geometry only (the mesh is refined and needle nodes are tracked; "
+                   "nothing moves)\n";
+        }
+        auto session = NeedleSession::make(*mesh, o.needle, simulation.get());
+        if (!session) {
+            err << "sxk: " << o.input << ":0: " << session.reason() << '\n';
+            return 2;
+        }
+        // --frames: one camera, framing the body before the first step
+        std::vector<std::string> frame_words;
+        const bezier::RenderService* renderer = nullptr;
+        if (!o.frames.empty()) {
+            auto found = plugin_host ? plugin_host->service<bezier::RenderService>()
+                                     : Outcome<bezier::RenderService*>(Refusal{RefusalCode::not_found, "no plug-in host"});
+            if (!found) {
+                err << "sxk: needle: --frames: " << found.reason() << " (the bezier plug-in)\n";
+                return 2;
+            }
+            renderer = *found;
+            std::error_code error;
+            std::filesystem::create_directories(o.frames, error);
+            if (error || !std::filesystem::is_directory(o.frames)) {
+                err << "sxk: needle: --frames: cannot make folder " << o.frames
+                    << (error ? ": " + error.message() : std::string()) << '\n';
+                return 2;
+            }
+            frame_words = {"--colour", "plain", "--camera", renderer->default_camera(*mesh)};
+        }
+        auto frame = [&](std::size_t index) {
+            if (renderer == nullptr) return true;
+            char name[32];
+            std::snprintf(name, sizeof name, "step-%04zu.png", index);
+            if (auto drawn = renderer->draw_mesh(*mesh, std::filesystem::path(o.frames) / name, frame_words); !drawn) {
+                err << "sxk: needle: --frames: " << drawn.reason() << '\n';
+                return false;
+            }
+            return true;
+        };
+        if (!frame(0)) return 1;
+
+        record.elements_before = mesh->element_count();
+        record.vertices_before = mesh->vertices_in_elements();
+        record.geometry_only = simulation == nullptr;
+        for (const ToolSample& sample : path.samples) {
+            const auto& v = sample.values;
+            const Needle needle = planar ? Needle{{v[0], v[1], 0}, {v[2], v[3], 0}}
+                                         : Needle{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+            const auto stepped = (*session)->move(needle);
+            if (!stepped) {
+                err << "sxk: " << o.path << ':' << sample.line << ": the step was refused (the mesh is as before it): "
+                    << stepped.reason() << '\n';
+                return 1;
+            }
+            record.steps.push_back({sample.time, sample.line, *stepped});
+            if (!frame(record.steps.size())) return 1;
+        }
+        if (std::none_of(record.steps.begin(), record.steps.end(),
+                         [](const ReplayStep& step) { return step.report.tip_inside || step.report.intercepted > 0; })) {
+            err << "sxk: " << o.path << ':' << path.samples.front().line
+                << ": the needle never meets the mesh (its tip is never inside)\n";
+            return 2;
+        }
+        if (!o.plot.empty()) {
+            try {
+                draw_profile(o.plot, **session);
+            } catch (const std::exception& error) {
+                err << "sxk: needle: --plot " << o.plot << ": " << error.what() << '\n';
+                return 1;
+            }
+        }
+        const auto undone = undo_steps(**session, o.undo, "needle", err);
+        if (const int* code = std::get_if<int>(&undone)) return *code;
+        record.undone = std::get<std::size_t>(undone);
+        (*session)->end();
+        record.elements_after = mesh->element_count();
+        record.vertices_after = mesh->vertices_in_elements();
+        if (!save_mesh_for_command(*mesh, o.output, err)) return 1;
+        if (o.json) {
+            nlohmann::ordered_json json;
+            json["file"] = o.input;
+            json["path"] = o.path;
+            json["output"] = o.output;
+            json["options"] = to_json(o.needle);
+            if (o.h_start) json["options"]["h_start"] = *o.h_start;
+            const nlohmann::ordered_json body = to_json(record);
+            for (const auto& [key, value] : body.items()) json[key] = value;
+            out << json.dump(2) << '\n';
+        } else {
+            print_replay(out, record);
+            out << o.input << " -> " << o.output << '\n';
+        }
+        return 0;
+    }
+};
+
+std::span<const std::string_view> needle_tools() {
+    static constexpr std::array<std::string_view, 1> tools{"needle"};
+    return tools;
+}
+
+// The tool "needle", options as add_needle_options reads them. Geometry only: a body's
+// simulation outlives a session, so an application that wants one makes the session itself
+// (NeedleSession::make with its Simulation).
+Outcome<std::unique_ptr<ToolSession>> begin_needle(std::string_view tool, Mesh& mesh, std::span<const std::string> words) {
+    if (tool != "needle")
+        return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " in needle (it has: needle)"};
+    CLI::App app("needle session", "needle");
+    Options options;
+    add_needle_options(app, options);
+    if (auto refused = parse_tool_words(app, words, "needle")) return *refused;
+    auto session = NeedleSession::make(mesh, options, nullptr);
+    if (!session) return session.refusal();
+    return std::unique_ptr<ToolSession>(std::move(*session));
+}
+
+class NeedlePlugin final : public Plugin {
+public:
+    std::span<PluginCommand* const> commands() override { return m_commands; }
+    ServiceOffer offer(std::string_view service_id) override {
+        if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
+        return {};
+    }
+    void attach(const sxk::Services& services) override {
+        m_attached = &services;
+        plugin_host = &services;
+    }
+    ~NeedlePlugin() override {
+        if (plugin_host == m_attached) plugin_host = nullptr;
+    }
+
+private:
+    const sxk::Services* m_attached = nullptr;
+    NeedleCommand m_command;
+    PluginCommand* m_commands[1] = {&m_command};
+    ToolFactory m_tools{&needle_tools, &begin_needle};
+};
+
+}  // namespace
+}  // namespace sxk::needle
+
+SXK_PLUGIN(needle, sxk::needle::NeedlePlugin, "0.1.0",
+           "needle insertion: bisection around the needle, stick-slip friction, projected CG (thesis 6)");

@@ -1,0 +1,36 @@
+// Refinement around the needle's tip as it moves (thesis §6.5 refine-around, §6.7 "refine mesh
+// down to h_ref around the needle tip"): along the tip's whole path of a movement, so that a fast
+// needle leaves no coarse stretch behind, and so the whole inserted shaft ends up refined.
+#pragma once
+
+#include <cstddef>
+
+#include "sxk/locate.hpp"
+#include "sxk/outcome.hpp"
+
+namespace sxk::needle {
+
+// Element sizes h are the thesis' h_k: the spacing of a uniform grid of that size, the legs of its
+// right triangles (2D) or the cube edges of its Kuhn tetrahedra (3D). An element is of size h
+// once its bisection edge (the hypotenuse; the longest edge) is at most sqrt(d) h long, d the
+// dimension: a uniform grid of size h is then refined no further.
+inline double bisection_edge_limit(const Mesh& mesh, double h) {
+    return mesh.topological_dimension() == 2 ? h * 1.4142135623730951 : h * 1.7320508075688772;
+}
+
+struct Refinement {
+    std::size_t bisections = 0;          // new vertices
+    ElementId tip_element = invalid_id;  // the element containing the tip afterwards (deformed)
+};
+
+// Points of the tip's path [from, to] (deformed positions) at most h / 2 apart, `to` last, each
+// located in the deformed positions (walking from the previous one), taken into the reference
+// positions through its element's barycentric coordinates (the tip moves through deformed
+// material) and refined around there to size h: refine_around (triangles) or refine_around_tetrahedra
+// (longest-edge bisection; on Kuhn meshes Maubach's newest-vertex bisection), located through
+// `reference`. Points outside the mesh are skipped. One call is not a transaction by itself: the
+// session's step is.
+Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, const SpatialIndex& deformed,
+                                 const Point& from, const Point& to, double h, ElementId hint);
+
+}  // namespace sxk::needle
