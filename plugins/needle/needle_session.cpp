@@ -252,10 +252,11 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
                 } else {
                     // kinetic friction acts while the needle slides past the node in its sense;
                     // when it no longer does (the needle stopped or turned back, or the node caught
-                    // up), the node sticks again (docs/needle.md "Friction")
+                    // up: slid less than a thousandth of h_ref, the solver's noise), the node
+                    // sticks again (docs/needle.md "Friction")
                     node.along = along_now;
                     const double slid = along_before[i] - along_now;
-                    if (node.sense * slid <= 0) {
+                    if (node.sense * slid <= 1e-3 * m_options.h_ref) {
                         node.grip = Grip::stick;
                         node.sense = 0;
                         ++report.gripped;

@@ -1,0 +1,351 @@
+// The needle plug-in (thesis chapter 6): insertion into the thesis' slab (2D, right triangles) and
+// a Kuhn cube (3D), with the elasticity plug-in's simulation; the shapes bisection keeps, needle
+// nodes on the needle, stick-slip friction, undo, geometry only, refusals, the ToolFactory tool,
+// and seeded random needle paths.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+
+#include "core/fixtures.hpp"
+#include "needle.hpp"
+#include "simulation.hpp"
+#include "sxk/generators.hpp"
+#include "sxk/plugin_host.hpp"
+
+extern "C" const sxk_plugin_info* sxk_plugin_entry_needle();
+
+namespace sxk::needle {
+namespace {
+
+// The thesis' slab (§6.8.1): 0.1 x 0.1 m in right triangles of size h3 = 12.5 mm, fixed at x = 0.1,
+// E = 34 kPa, nu = 0.34, 1 cm thick; eq. 6.9 with tol 0.01 and eps_round 1e-8.
+const std::vector<std::string> slab_body{"--fix", "x>0.0999", "--E", "34e3", "--nu", "0.34", "--thickness", "0.01",
+                                         "--tol", "0.01", "--rounding", "1e-8"};
+const std::vector<std::string> cube_body{"--fix", "x>0.0999", "--E", "34e3", "--nu", "0.34", "--tol", "0.01",
+                                         "--rounding", "1e-8"};
+
+struct Insertion {
+    Mesh mesh;
+    Mesh before{mesh};
+    std::unique_ptr<elasticity::Simulation> simulation;
+    std::unique_ptr<NeedleSession> session;
+
+    Insertion(Mesh start, const std::vector<std::string>& body, Options options = {})
+        : mesh(std::move(start)), before(mesh) {
+        if (!body.empty()) {
+            auto made = elasticity::simulate(mesh, body);
+            EXPECT_TRUE(made.ok()) << made.reason();
+            simulation = std::move(*made);
+        }
+        auto made = NeedleSession::make(mesh, options, simulation.get());
+        EXPECT_TRUE(made.ok()) << made.reason();
+        session = std::move(*made);
+    }
+};
+
+Mesh slab() { return *make_triangle_grid({8, 8}, {0.0125, 0.0125}); }
+Mesh cube() { return *make_kuhn_cube(8, 0.0125); }
+
+// Needle of length 0.1 along +x at height y (2D) / y, z (3D), tip at x.
+Needle along_x(double x, double y, double z = 0) { return {{x - 0.1, y, z}, {x, y, z}}; }
+
+// Where a needle node is: the body's solution.
+Point position_of(const Insertion& run, VertexId v) {
+    const auto u = run.simulation->displacement(v);
+    const Point& x = run.mesh.reference(v);
+    return {x[0] + u[0], x[1] + u[1], x[2] + u[2]};
+}
+
+// Every needle node where its needle coordinates put it: on the line at d_perp from the axis (with
+// relocation: on the needle), and a sticking one at its d_needle; within 1e-12 of the needle's
+// length.
+void expect_nodes_on_needle(const Insertion& run) {
+    const Needle needle = *run.session->needle();
+    const Eigen::Vector3d tip(needle.tip[0], needle.tip[1], needle.tip[2]);
+    const Eigen::Vector3d base(needle.base[0], needle.base[1], needle.base[2]);
+    const double length = (tip - base).norm();
+    const Eigen::Vector3d axis = (tip - base) / length;
+    for (const NeedleNode& node : run.session->nodes()) {
+        const Point x = position_of(run, node.vertex);
+        const Eigen::Vector3d d = Eigen::Vector3d(x[0], x[1], x[2]) - tip;
+        const Eigen::Vector3d across = d - d.dot(axis) * axis;
+        const Eigen::Vector3d perp(node.perp[0], node.perp[1], node.perp[2]);
+        EXPECT_LE((across - perp).norm(), 1e-12 * length) << "node " << node.vertex;
+        if (run.session->options().relocate) {
+            EXPECT_LE(across.norm(), 1e-12 * length) << "node " << node.vertex;
+        }
+        if (node.grip == Grip::stick) {
+            EXPECT_NEAR(d.dot(axis), node.along, 1e-12 * length) << "node " << node.vertex;
+        }
+    }
+}
+
+// Every triangle right-angled and isosceles (congruent, up to scale, to the starting ones).
+void expect_right_isosceles(const Mesh& mesh) {
+    for (const ElementId t : elements(mesh)) {
+        const auto v = mesh.simplex(t).vertices();
+        std::array<double, 3> squared{};
+        for (int k = 0; k < 3; ++k) {
+            const Point& a = mesh.reference(v[k]);
+            const Point& b = mesh.reference(v[(k + 1) % 3]);
+            squared[k] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+        }
+        std::sort(squared.begin(), squared.end());
+        EXPECT_NEAR(squared[0], squared[1], 1e-9 * squared[2]) << "triangle " << t;
+        EXPECT_NEAR(squared[0] + squared[1], squared[2], 1e-9 * squared[2]) << "triangle " << t;
+    }
+}
+
+// The shape of a tetrahedron up to scale: its sorted squared edge lengths over the largest,
+// rounded.
+std::array<long, 6> tetrahedron_shape(const Mesh& mesh, ElementId t) {
+    const auto v = mesh.simplex(t).vertices();
+    std::array<double, 6> squared{};
+    int n = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+            const Point& a = mesh.reference(v[i]);
+            const Point& b = mesh.reference(v[j]);
+            squared[n++] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+        }
+    std::sort(squared.begin(), squared.end());
+    std::array<long, 6> shape{};
+    for (int k = 0; k < 6; ++k) shape[k] = std::lround(1e6 * squared[k] / squared[5]);
+    return shape;
+}
+
+TEST(Needle, InsertsIntoTheThesisSlabKeepingEveryTriangleCongruentAndTheNodesOnTheNeedle) {
+    Insertion run(slab(), slab_body);
+    const double h6 = 0.1 / 64, speed = 0.3 * h6;
+    std::size_t intercepted = 0, slipping_steps = 0;
+    for (double x = -0.01; x <= 0.07 + 1e-12; x += speed) {
+        auto step = run.session->move(along_x(x, 0.05));
+        ASSERT_TRUE(step.ok()) << step.reason();
+        ASSERT_TRUE(run.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok()) << "x = " << x;
+        expect_nodes_on_needle(run);
+        intercepted += step->intercepted;
+        slipping_steps += step->slip > 0;
+        EXPECT_TRUE(step->converged);
+    }
+    expect_right_isosceles(run.mesh);
+    // nodes on y = 0.05 every h6 or so over the 70 mm inserted
+    EXPECT_GE(run.session->nodes().size(), 20u);
+    EXPECT_EQ(intercepted, run.session->nodes().size());
+    EXPECT_GT(slipping_steps, 100u);
+    // refined around the shaft: triangles of size h6 (hypotenuse sqrt 2 h6) all along it
+    std::size_t fine = 0;
+    for (const ElementId t : elements(run.mesh)) {
+        const auto v = run.mesh.simplex(t).vertices();
+        const Point& a = run.mesh.reference(v[0]);
+        if (std::abs(a[1] - 0.05) < 0.002 && a[0] < 0.07) {
+            double longest = 0;
+            for (int k = 0; k < 3; ++k) {
+                const Point& p = run.mesh.reference(v[k]);
+                const Point& q = run.mesh.reference(v[(k + 1) % 3]);
+                longest = std::max(longest, std::hypot(p[0] - q[0], p[1] - q[1]));
+            }
+            EXPECT_LE(longest, std::sqrt(2.0) * 0.1 / 32 + 1e-12) << "triangle " << t;
+            ++fine;
+        }
+    }
+    EXPECT_GT(fine, 40u);
+    // sliding through the whole shaft, the needle drags with the dynamic friction of the inserted
+    // length: 20 N/m over 70 mm and the bulge at the tip (1.4 N + 0.1 N)
+    const double inserted = 0.07;
+    const Friction f;
+    const double friction = f.force(0, inserted);
+    EXPECT_NEAR(run.session->last_step().axial_force, friction, 0.1 * friction);
+    EXPECT_LT(run.session->last_step().lateral_force, 0.01 * friction);
+}
+
+TEST(Needle, NodesStickWhenTheNeedleStopsAndSlipWhenItIsPulledBack) {
+    Insertion run(slab(), slab_body);
+    const double speed = 0.3 * 0.1 / 64;
+    double x = -0.01;
+    for (; x <= 0.04; x += speed) ASSERT_TRUE(run.session->move(along_x(x, 0.05)).ok());
+    ASSERT_GT(run.session->last_step().slip, 0u);
+    // the needle stops: the loop runs on until no grip changes (thesis §6.8.4): the tissue slides
+    // back along the needle for a few steps, then every node sticks
+    int still_steps = 0;
+    for (;; ++still_steps) {
+        auto still = run.session->move(along_x(x - speed, 0.05));
+        ASSERT_TRUE(still.ok());
+        if ((still->loosened + still->gripped == 0 && still->slip == 0) || still_steps == 100) break;
+    }
+    EXPECT_LT(still_steps, 100);
+    EXPECT_EQ(run.session->last_step().slip, 0u);
+    EXPECT_GT(run.session->last_step().stick, 10u);
+    // pulled back: the tissue is dragged back until the nodes slip the other way, and the
+    // needle's force turns round
+    for (int k = 0; k < 60; ++k) ASSERT_TRUE(run.session->move(along_x(x - speed * (2 + k), 0.05)).ok());
+    EXPECT_GT(run.session->last_step().slip, 0u);
+    EXPECT_LT(run.session->last_step().axial_force, 0);
+    for (const NeedleNode& node : run.session->nodes())
+        if (node.grip == Grip::slip) {
+            EXPECT_EQ(node.sense, -1);
+        }
+    // pulled out: every node released, the tip outside
+    for (double back = x; back > -0.02; back -= 10 * speed) ASSERT_TRUE(run.session->move(along_x(back, 0.05)).ok());
+    EXPECT_TRUE(run.session->nodes().empty());
+    EXPECT_FALSE(run.session->last_step().tip_inside);
+    EXPECT_TRUE(run.mesh.validate({.orientation = true}).ok());
+}
+
+TEST(Needle, UndoingEveryStepGivesTheSlabBackBitForBit) {
+    Insertion run(slab(), slab_body);
+    double last = 0;
+    for (double x = -0.01; x <= 0.03; x += 0.002) {
+        ASSERT_TRUE(run.session->move(along_x(x, 0.047)).ok());
+        last = x;
+    }
+    ASSERT_GT(run.mesh.element_count(), run.before.element_count());
+    // one step back, then forward again: the same as never having undone it
+    const std::size_t nodes = run.session->nodes().size();
+    ASSERT_TRUE(run.session->undo_step().ok());
+    auto again = run.session->move(along_x(last, 0.047));
+    ASSERT_TRUE(again.ok()) << again.reason();
+    EXPECT_EQ(run.session->nodes().size(), nodes);
+    expect_nodes_on_needle(run);
+    ASSERT_TRUE(run.session->cancel().ok());
+    ASSERT_TRUE(run.mesh.validate().ok());
+    test::expect_same_state(run.mesh, run.before);
+    EXPECT_TRUE(run.session->nodes().empty());
+}
+
+TEST(Needle, InsertsIntoAKuhnCubeKeepingThreeShapesOfTetrahedra) {
+    Options options;
+    options.h_ref = 0.1 / 32;
+    Insertion run(cube(), cube_body, options);
+    std::set<std::array<long, 6>> start_shapes;
+    for (const ElementId t : elements(run.mesh)) start_shapes.insert(tetrahedron_shape(run.mesh, t));
+    EXPECT_EQ(start_shapes.size(), 1u);
+    for (double x = -0.01; x <= 0.07 + 1e-12; x += 0.001) {
+        auto step = run.session->move(along_x(x, 0.051, 0.049));
+        ASSERT_TRUE(step.ok()) << step.reason();
+        ASSERT_TRUE(run.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok()) << "x = " << x;
+        expect_nodes_on_needle(run);
+    }
+    std::set<std::array<long, 6>> shapes;
+    for (const ElementId t : elements(run.mesh)) shapes.insert(tetrahedron_shape(run.mesh, t));
+    EXPECT_LE(shapes.size(), 3u);  // Maubach's three classes (sxk/ops/tet_bisection.hpp)
+    EXPECT_GE(run.session->nodes().size(), 15u);
+    EXPECT_GT(run.session->last_step().axial_force, 0);
+    ASSERT_TRUE(run.session->cancel().ok());
+    test::expect_same_state(run.mesh, run.before);
+}
+
+TEST(Needle, WithoutABodyRefinesAndTracksNodesButMovesNothing) {
+    Insertion run(slab(), {});
+    EXPECT_TRUE(run.session->geometry_only());
+    for (double x = -0.01; x <= 0.05; x += 0.001) ASSERT_TRUE(run.session->move(along_x(x, 0.0437)).ok());
+    EXPECT_GT(run.session->nodes().size(), 10u);
+    for (VertexId v = 0; v < run.mesh.vertex_count(); ++v)
+        EXPECT_EQ(run.mesh.deformed(v), run.mesh.reference(v)) << "vertex " << v;
+    // without relocation the nodes keep their offsets, which the tracking reports
+    for (const NeedleNode& node : run.session->nodes()) {
+        const Point& x = run.mesh.deformed(node.vertex);
+        EXPECT_NEAR(node.perp[1], x[1] - 0.0437, 1e-15);
+        EXPECT_LE(std::abs(node.perp[1]), 0.1 / 64);
+    }
+    EXPECT_EQ(run.session->last_step().iterations, 0u);
+    expect_right_isosceles(run.mesh);
+}
+
+TEST(Needle, RefusesWhatItCannotDoWithTheReason) {
+    Mesh surface = *make_gaussian_bell({4, 4}, {1, 1}, 1, 1);
+    auto on_surface = NeedleSession::make(surface, {});
+    ASSERT_FALSE(on_surface.ok());
+    EXPECT_EQ(on_surface.refusal().code, RefusalCode::wrong_dimension);
+    EXPECT_EQ(on_surface.reason(),
+              "needle: needs a triangle mesh in the plane or a tetrahedral mesh (this one has 2-simplices in 3D)");
+    Mesh square = slab();
+    Options bad;
+    bad.h_ref = 0;
+    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: h_ref = 0.000000 is not a positive number");
+    bad = {};
+    bad.friction.static_ratio = 0.5;
+    EXPECT_EQ(NeedleSession::make(square, bad).reason(),
+              "needle: the static friction ratio must be >= 1 (static >= dynamic)");
+    auto session = NeedleSession::make(square, {});
+    ASSERT_TRUE(session.ok());
+    const Mesh before = square;
+    EXPECT_EQ((*session)->move({{0, 0, 0}, {0, 0, 0}}).reason(), "needle: the needle has zero length (base = tip)");
+    EXPECT_EQ((*session)->move({{0, 0, 0}, {NAN, 0, 0}}).reason(),
+              "needle: a coordinate of the needle is not a finite number");
+    EXPECT_EQ((*session)->steps(), 0u);
+    test::expect_same_state(square, before);
+}
+
+TEST(Needle, TheToolFactoryOffersTheNeedle) {
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_needle(), "linked-in needle"));
+    auto factory = host.service<ToolFactory>("needle");
+    ASSERT_TRUE(factory.ok()) << factory.reason();
+    Mesh square = slab();
+    const std::vector<std::string> words{"--h-ref", "0.003", "--no-relocation"};
+    auto session = (*factory)->begin("needle", square, words);
+    ASSERT_TRUE(session.ok()) << session.reason();
+    ASSERT_TRUE((*session)->step(NeedleSession::pose_of(along_x(-0.01, 0.05))).ok());
+    ASSERT_TRUE((*session)->step(NeedleSession::pose_of(along_x(0.02, 0.05))).ok());
+    EXPECT_GT(square.element_count(), 128u);
+    EXPECT_TRUE(square.validate().ok());
+    const std::vector<std::string> wrong{"--h-ref", "-1"};
+    auto refused = (*factory)->begin("needle", square, wrong);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.refusal().code, RefusalCode::bad_argument);
+    EXPECT_NE(refused.reason().find("--h-ref"), std::string::npos) << refused.reason();
+}
+
+// Seeded random needle paths into slabs and cubes: every step valid (no inverted or flat element
+// in either position set), nodes on the needle, and undoing everything gives the start back.
+TEST(Needle, RandomNeedlePathsNeverBreakTheMesh) {
+    const char* replay = std::getenv("SXK_SEED");
+    const unsigned seed = replay ? static_cast<unsigned>(std::atol(replay)) : 20261205u;
+    std::printf("seed %u\n", seed);
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::size_t steps = 0;
+    for (int run_index = 0; steps < 10000; ++run_index) {
+        const bool solid = run_index % 5 == 4;
+        SCOPED_TRACE("run " + std::to_string(run_index) + " of seed " + std::to_string(seed));
+        Options options;
+        options.h_ref = (solid ? 0.1 / 16 : 0.1 / 64) * (0.5 + unit(random));
+        options.relocate = unit(random) < 0.7;
+        options.friction.shaft = 5 + 40 * unit(random);
+        Insertion run(solid ? cube() : slab(), solid ? cube_body : slab_body, options);
+        // a wandering needle: enters from the left, turns, advances and withdraws at random
+        Eigen::Vector3d tip(-0.01, 0.02 + 0.06 * unit(random), solid ? 0.02 + 0.06 * unit(random) : 0.0);
+        double angle = 0.4 * (unit(random) - 0.5), lift = solid ? 0.4 * (unit(random) - 0.5) : 0.0;
+        const int moves = solid ? 60 : 400;
+        for (int k = 0; k < moves; ++k, ++steps) {
+            angle += 0.03 * (unit(random) - 0.5);
+            lift += solid ? 0.03 * (unit(random) - 0.5) : 0.0;
+            const Eigen::Vector3d axis =
+                Eigen::Vector3d(std::cos(angle) * std::cos(lift), std::sin(angle) * std::cos(lift), std::sin(lift));
+            const double advance = (unit(random) < 0.8 ? 1 : -1.5) * 0.002 * unit(random);
+            tip += advance * axis;
+            const Eigen::Vector3d base = tip - 0.1 * axis;
+            auto step = run.session->move({{base[0], base[1], base[2]}, {tip[0], tip[1], tip[2]}});
+            ASSERT_TRUE(step.ok()) << "move " << k << ": " << step.reason();
+            const auto valid = run.mesh.validate({.orientation = true, .flat_is_invalid = true});
+            ASSERT_TRUE(valid.ok()) << "move " << k << ": " << valid.reason();
+            if (step->shown) expect_nodes_on_needle(run);
+        }
+        ASSERT_TRUE(run.session->cancel().ok());
+        test::expect_same_state(run.mesh, run.before);
+    }
+    std::printf("%zu needle movements\n", steps);
+}
+
+}  // namespace
+}  // namespace sxk::needle
