@@ -76,9 +76,13 @@ struct Options {
     // (reference positions). The default is the thesis' h6 on its 0.1 m slab.
     double h_ref = 0.1 / 64;
     Friction friction;
-    // Intercepted nodes go onto the needle (d_perp = 0, thesis §6.8.6) instead of keeping their
-    // offset (§6.4).
-    bool relocate = true;
+    // Intercepted nodes are moved onto the needle (thesis §6.8.6: "nodes selected as needle nodes
+    // are projected orthogonally onto the needle"): both positions shift by -d_perp, so that the
+    // displacement stays, and d_perp = 0. A move that would invert or flatten an element in either
+    // position set is not made (the node keeps its offset; the step report counts it). Off by
+    // default, as in the thesis (§6.4: "nodes are not moved within the mesh", which keeps the
+    // bisection's triangles congruent).
+    bool relocate = false;
     // Solve and rearrange at most this many times per step (the thesis' loop: once).
     std::size_t rearrangements = 1;
     // CG iterations per solve, at most (a frame's budget; the body's options bound them too).
@@ -105,6 +109,8 @@ struct NeedleStepReport {
     bool tip_inside = false;       // the tip is in the mesh after the movement
     std::size_t bisections = 0;    // new vertices of the refinement
     std::size_t intercepted = 0;   // new needle nodes
+    std::size_t relocated = 0;     // of them, moved onto the needle (Options::relocate)
+    std::size_t not_relocated = 0; // of them, left where they were: the move would invert
     std::size_t released = 0;      // needle nodes freed (slid off)
     std::size_t stick = 0, slip = 0;  // needle nodes after the step
     std::size_t loosened = 0;      // stick -> slip
@@ -156,6 +162,9 @@ private:
     // The body's constraints and tool forces as `state` says (after an undo or a refusal).
     void restore(State state);
     Outcome<Done> hold(const NeedleNode& node, const Needle& needle);
+    // Options::relocate: moves v by -offset in both position sets; false (nothing moved) when that
+    // would invert or flatten an element.
+    bool relocate(VertexId v, const Point& offset);
 
     Options m_options;
     elasticity::Simulation* m_simulation;

@@ -27,9 +27,9 @@ void add_needle_options(CLI::App& app, Options& options) {
                    "Static friction threshold over the dynamic one (thesis 6.8.1: 2)")
         ->check(number_in(1, true, 1e300, true, "[1, 1e300]"))
         ->capture_default_str();
-    app.add_flag("!--no-relocation", options.relocate,
-                 "Needle nodes keep their offset from the needle (thesis 6.4) instead of going onto it "
-                 "(6.8.6)");
+    app.add_flag("--relocate", options.relocate,
+                 "Move intercepted nodes onto the needle (thesis 6.8.6; both positions, unless that would "
+                 "invert an element) instead of keeping their offset from it (6.4)");
     app.add_option("--rearrangements", options.rearrangements,
                    "Solves per step: after each, the nodes' stick/slip grips are rearranged, and a change "
                    "is solved again, at most this many times (the thesis' loop: 1)")

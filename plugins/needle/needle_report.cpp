@@ -36,6 +36,8 @@ nlohmann::ordered_json to_json(const Replay& replay) {
         s["tip_inside"] = r.tip_inside;
         s["bisections"] = r.bisections;
         s["intercepted"] = r.intercepted;
+        s["relocated"] = r.relocated;
+        s["not_relocated"] = r.not_relocated;
         s["released"] = r.released;
         s["stick"] = r.stick;
         s["slip"] = r.slip;

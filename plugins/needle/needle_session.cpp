@@ -126,6 +126,23 @@ Outcome<Done> NeedleSession::hold(const NeedleNode& node, const Needle& needle) 
     return m_simulation->set_tool_force(node.vertex, vector3(node.sense * node.threshold * frame.axis));
 }
 
+bool NeedleSession::relocate(VertexId v, const Point& offset) {
+    Mesh& mesh = this->mesh();
+    const Eigen::Vector3d shift = vec(offset);
+    const VertexId moved[] = {v};
+    const MoveCheck check{.refuse_inverted = true, .refuse_flat = true};
+    const Point was = mesh.reference(v);
+    const Point reference[] = {point(vec(was) - shift)};
+    if (!mesh.move_vertices(moved, reference, PositionSet::reference, check)) return false;
+    const Point deformed[] = {point(vec(mesh.deformed(v)) - shift)};
+    if (!mesh.move_vertices(moved, deformed, PositionSet::deformed, check)) {
+        const Point back[] = {was};
+        (void)mesh.move_vertices(moved, back, PositionSet::reference);
+        return false;
+    }
+    return true;
+}
+
 void NeedleSession::restore(State state) {
     if (m_simulation != nullptr) {
         for (const NeedleNode& node : m_state.nodes) {
@@ -195,7 +212,15 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
             NeedleNode node;
             node.vertex = v;
             node.along = node.entered = to.along(x);
-            node.perp = m_options.relocate && m_simulation != nullptr ? Point{0, 0, 0} : to.perp(x);
+            node.perp = to.perp(x);
+            if (m_options.relocate && node.perp != Point{0, 0, 0}) {
+                if (relocate(v, node.perp)) {
+                    node.perp = {0, 0, 0};
+                    ++report.relocated;
+                } else {
+                    ++report.not_relocated;
+                }
+            }
             // a vertex the body's options hold (a fixed side) stays theirs
             if (auto held = hold(node, needle); !held) {
                 if (held.refusal().code == RefusalCode::bad_argument) continue;
