@@ -79,7 +79,8 @@ struct Options {
     // Intercepted nodes are moved onto the needle (thesis §6.8.6: "nodes selected as needle nodes
     // are projected orthogonally onto the needle"): both positions shift by -d_perp, so that the
     // displacement stays, and d_perp = 0. A move that would invert or flatten an element in either
-    // position set is not made (the node keeps its offset; the step report counts it). Off by
+    // position set, or halve the aspect ratio of one (thesis §6.4: relocation "can easily lead to
+    // flattened elements"), is not made (the node keeps its offset; the step report counts it). Off by
     // default, as in the thesis (§6.4: "nodes are not moved within the mesh", which keeps the
     // bisection's triangles congruent).
     bool relocate = false;

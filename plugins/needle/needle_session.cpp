@@ -12,6 +12,8 @@
 #include "needle.hpp"
 #include "needle_frame.hpp"
 #include "shaft_refinement.hpp"
+#include "sxk/quality.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk::needle {
 
@@ -129,6 +131,15 @@ Outcome<Done> NeedleSession::hold(const NeedleNode& node, const Needle& needle) 
 bool NeedleSession::relocate(VertexId v, const Point& offset) {
     Mesh& mesh = this->mesh();
     const Eigen::Vector3d shift = vec(offset);
+    // thesis §6.4: "node relocation can easily lead to flattened elements": no element around v
+    // may lose more than half its aspect ratio (reference positions), or CG stalls on it
+    for (const ElementId t : star(mesh, v)) {
+        std::vector<Point> corners = element_points(mesh, t, Positions::reference);
+        const double before = aspect_ratio(corners);
+        const Simplex element = mesh.simplex(t);
+        corners[element.index(v)] = point(vec(mesh.reference(v)) - shift);
+        if (aspect_ratio(corners) < 0.5 * before) return false;
+    }
     const VertexId moved[] = {v};
     const MoveCheck check{.refuse_inverted = true, .refuse_flat = true};
     const Point was = mesh.reference(v);
