@@ -43,6 +43,7 @@
 
 #include "elasticity_service.hpp"
 #include "sxk/locate.hpp"
+#include "sxk/ops/tet_bisection.hpp"
 #include "sxk/tool_session.hpp"
 
 namespace sxk::needle {
@@ -130,7 +131,8 @@ class NeedleSession final : public ToolSession {
 public:
     // A session on a planar triangle mesh or a tetrahedral mesh. `simulation` (the elasticity
     // plug-in's, on this mesh, may be null: geometry only) must outlive the session. Refuses
-    // another kind of mesh and options out of range, with the reason.
+    // another kind of mesh and options out of range, with the reason. A tetrahedral mesh gets its
+    // bisection marks here (Maubach's on a Kuhn mesh, else AMP's: O(n), once).
     static Outcome<std::unique_ptr<NeedleSession>> make(Mesh& mesh, const Options& options,
                                                         elasticity::Simulation* simulation = nullptr);
     ~NeedleSession() override;
@@ -158,6 +160,7 @@ private:
         std::optional<Needle> needle;
         std::vector<NeedleNode> nodes;
         ElementId tip_element = invalid_id;  // a hint for locating the tip (deformed positions)
+        std::size_t bisection_mark = 0;      // m_bisection's undo_mark() then
     };
     Outcome<Done> step_to(const Needle& needle, StepReport& words);
     // The body's constraints and tool forces as `state` says (after an undo or a refusal).
@@ -170,6 +173,10 @@ private:
     Options m_options;
     elasticity::Simulation* m_simulation;
     std::unique_ptr<SpatialIndex> m_reference_index, m_deformed_index;
+    // tetrahedral meshes: the bisection's marks (Maubach's on a Kuhn mesh, AMP's otherwise), taken
+    // back with the steps
+    std::unique_ptr<TetBisection> m_bisection;
+    std::optional<std::size_t> m_take_back;  // a refused step's marks, taken back before the next
     State m_state;
     std::vector<State> m_history;  // per kept step, the state before it
     bool m_resync = false;         // the body reads its displacements from the mesh first

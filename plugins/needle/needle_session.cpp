@@ -71,7 +71,14 @@ ToolPose NeedleSession::pose_of(const Needle& needle) {
 Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Options& options,
                                                             elasticity::Simulation* simulation) {
     if (auto checked = check_options(mesh, options); !checked) return checked.refusal();
-    return std::unique_ptr<NeedleSession>(new NeedleSession(mesh, options, simulation));
+    std::unique_ptr<NeedleSession> session(new NeedleSession(mesh, options, simulation));
+    if (mesh.topological_dimension() == 3) {
+        auto marked = TetBisection::for_kuhn_mesh(mesh);
+        if (!marked) marked = TetBisection::with_amp_marking(mesh);
+        if (!marked) return marked.refusal().prefixed("needle: ");
+        session->m_bisection = std::make_unique<TetBisection>(std::move(*marked));
+    }
+    return session;
 }
 
 NeedleSession::NeedleSession(Mesh& mesh, const Options& options, elasticity::Simulation* simulation)
@@ -99,11 +106,16 @@ Outcome<Done> NeedleSession::apply(const ToolPose& pose, StepReport& report) {
     if (mesh().ambient_dimension() == 2) needle.base[2] = needle.tip[2] = 0;
     if (!finite(needle.base) || !finite(needle.tip) || !(pose.length > 0))
         return Refusal{RefusalCode::bad_argument, "needle: the pose is not a needle (length > 0, finite)"};
+    if (m_bisection && m_take_back) m_bisection->take_back(*m_take_back);
+    m_take_back.reset();
+    if (m_bisection) m_state.bisection_mark = m_bisection->undo_mark();
     m_history.push_back(m_state);
     auto stepped = step_to(needle, report);
     if (!stepped) {
         restore(m_history.back());
         m_history.pop_back();
+        // the journal rolls the mesh back after this returns: the marks follow at the next step
+        if (m_bisection) m_take_back = m_state.bisection_mark;
         return stepped.refusal();
     }
     return Done{};
@@ -113,6 +125,8 @@ void NeedleSession::step_taken_back() {
     if (m_history.empty()) return;
     restore(std::move(m_history.back()));
     m_history.pop_back();
+    if (m_bisection) m_bisection->take_back(m_state.bisection_mark);
+    m_take_back.reset();
 }
 
 Outcome<Done> NeedleSession::hold(const NeedleNode& node, const Needle& needle) {
@@ -206,7 +220,7 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
     // 2. refine around the tip's path
     auto phase = Clock::now();
     auto refined = refine_along(mesh, *m_reference_index, *m_deformed_index, old.tip, needle.tip, m_options.h_ref,
-                                m_state.tip_element);
+                                m_state.tip_element, m_bisection.get());
     if (!refined) return refined.refusal().prefixed("needle: refinement: ");
     report.bisections = refined->bisections;
     m_state.tip_element = refined->tip_element;

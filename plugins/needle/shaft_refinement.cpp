@@ -28,7 +28,8 @@ std::optional<Point> in_reference(const Mesh& mesh, const SpatialIndex& deformed
 }  // namespace
 
 Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, const SpatialIndex& deformed,
-                                 const Point& from, const Point& to, double h, ElementId hint) {
+                                 const Point& from, const Point& to, double h, ElementId hint,
+                                 TetBisection* bisection) {
     Refinement result;
     const double distance = (vec(to) - vec(from)).norm();
     const std::size_t pieces = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(distance / (0.5 * h))));
@@ -45,7 +46,8 @@ Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, cons
             result.bisections += refined->bisections;
             hint = refined->element;
         } else {
-            auto refined = refine_around_tetrahedra(mesh, *at, limit, reference);
+            auto refined = bisection != nullptr ? refine_around_tetrahedra(*bisection, *at, limit, reference)
+                                                : refine_around_tetrahedra(mesh, *at, limit, reference);
             if (!refined) return refined.refusal();
             result.bisections += *refined;
             hint = invalid_id;  // the tetrahedra around x changed; locate from the index

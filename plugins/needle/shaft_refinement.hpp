@@ -6,6 +6,7 @@
 #include <cstddef>
 
 #include "sxk/locate.hpp"
+#include "sxk/ops/tet_bisection.hpp"
 #include "sxk/outcome.hpp"
 
 namespace sxk::needle {
@@ -26,11 +27,12 @@ struct Refinement {
 // Points of the tip's path [from, to] (deformed positions) at most h / 2 apart, `to` last, each
 // located in the deformed positions (walking from the previous one), taken into the reference
 // positions through its element's barycentric coordinates (the tip moves through deformed
-// material) and refined around there to size h: refine_around (triangles) or refine_around_tetrahedra
-// (longest-edge bisection; on Kuhn meshes Maubach's newest-vertex bisection), located through
-// `reference`. Points outside the mesh are skipped. One call is not a transaction by itself: the
-// session's step is.
+// material) and refined around there to size h: refine_around (triangles), or
+// refine_around_tetrahedra with `bisection`'s rule (Maubach's newest-vertex bisection on Kuhn
+// meshes, AMP's on others; without a state, longest-edge bisection), located through `reference`.
+// Points outside the mesh are skipped. One call is not a transaction by itself: the session's step is.
 Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, const SpatialIndex& deformed,
-                                 const Point& from, const Point& to, double h, ElementId hint);
+                                 const Point& from, const Point& to, double h, ElementId hint,
+                                 TetBisection* bisection = nullptr);
 
 }  // namespace sxk::needle

@@ -116,7 +116,8 @@ TetBisection::TetBisection(TetBisection&& other) noexcept
       m_markings(std::move(other.m_markings)),
       m_rule(other.m_rule),
       m_stale_reason(std::move(other.m_stale_reason)),
-      m_last_child(other.m_last_child) {
+      m_last_child(other.m_last_child),
+      m_undo(std::move(other.m_undo)) {
     if (m_mesh) {
         m_mesh->remove_watcher(other);
         other.m_mesh = nullptr;
@@ -132,6 +133,7 @@ TetBisection& TetBisection::operator=(TetBisection&& other) noexcept {
     m_rule = other.m_rule;
     m_stale_reason = std::move(other.m_stale_reason);
     m_last_child = other.m_last_child;
+    m_undo = std::move(other.m_undo);
     if (m_mesh) {
         m_mesh->remove_watcher(other);
         other.m_mesh = nullptr;
@@ -256,6 +258,22 @@ Outcome<Done> TetBisection::check_marking() const {
 }
 
 // ---- watching the mesh ----------------------------------------------------------------------
+
+void TetBisection::write_marking(ElementId t, const TetMarking& marking) {
+    if (m_markings.size() <= t) m_markings.resize(std::max<std::size_t>(t + 1, m_mesh->element_capacity()));
+    m_undo.push_back({t, m_markings[t], m_last_child});
+    m_markings[t] = marking;
+}
+
+void TetBisection::take_back(std::size_t mark) {
+    while (m_undo.size() > mark) {
+        const Written& written = m_undo.back();
+        m_markings[written.element] = written.was;
+        m_last_child = written.last_child;
+        m_undo.pop_back();
+    }
+    m_stale_reason.clear();
+}
 
 void TetBisection::foreign_edit(const std::string& what) {
     if (m_own_edit || !m_stale_reason.empty()) return;

@@ -280,10 +280,8 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
     }
     for (const Simplex& face : split_faces) mesh.erase_face_label(face);
     for (const auto& [face, label] : moved_labels) mesh.set_face_label(face, label);
-    std::vector<TetMarking>& markings = TetBisectionAccess::markings(state);
-    if (markings.size() < mesh.element_capacity()) markings.resize(mesh.element_capacity());
     for (std::size_t i = 0; i < leaves.size(); ++i)
-        markings[(*replaced)[i]] = plan.node(leaves[i]).marking;
+        TetBisectionAccess::write_marking(state, (*replaced)[i], plan.node(leaves[i]).marking);
     if (!replaced->empty()) TetBisectionAccess::set_last_child(state, replaced->back());
     return Done{};
 }

@@ -328,6 +328,9 @@ struct TetBisectionAccess {
     }
     // for the AMP replay (tet_bisection_amp.cpp), which edits through replace_elements
     static std::vector<TetMarking>& markings(TetBisection& state) { return state.m_markings; }
+    static void write_marking(TetBisection& state, ElementId t, const TetMarking& marking) {
+        state.write_marking(t, marking);
+    }
     static void set_own_edit(TetBisection& state, bool own) { state.m_own_edit = own; }
     static void set_last_child(TetBisection& state, ElementId t) { state.m_last_child = t; }
 
@@ -347,8 +350,6 @@ struct TetBisectionAccess {
                 return Refusal{RefusalCode::internal_error,
                                operation + ": internal error, a planned bisection was refused: " +
                                result.reason()};
-            if (state.m_markings.size() < mesh.element_capacity())
-                state.m_markings.resize(mesh.element_capacity());
             for (const ElementId child : result->elements) {
                 // the parent is the one whose c and d the child has; the child keeps a or b
                 const Simplex& simplex = mesh.simplex(child);
@@ -357,12 +358,12 @@ struct TetBisectionAccess {
                         !simplex.contains(parent.vertices[3]))
                         continue;
                     if (state.m_rule == BisectionRule::longest_edge) {
-                        state.m_markings[child] = longest_edge_marking(mesh, child);
-                        state.m_markings[child].generation = parent.generation + 1;
+                        TetMarking marking = longest_edge_marking(mesh, child);
+                        marking.generation = parent.generation + 1;
+                        state.write_marking(child, marking);
                     } else {
                         const auto halves = bisected_markings(parent, result->vertex);
-                        state.m_markings[child] =
-                            simplex.contains(parent.vertices[0]) ? halves[0] : halves[1];
+                        state.write_marking(child, simplex.contains(parent.vertices[0]) ? halves[0] : halves[1]);
                     }
                     break;
                 }

@@ -183,6 +183,17 @@ public:
     // A child of the last split (invalid_id before any): where point location starts next.
     ElementId last_child() const { return m_last_child; }
 
+    // Taking marks back with the mesh, for a tool whose steps an EditJournal undoes (the needle,
+    // thesis §6.7): every mark the state writes is logged with the one it replaced. A tool takes
+    // `undo_mark()` before its step; after the journal took the mesh back to exactly that moment
+    // (an undo, or the rollback of a refused step), `take_back(mark)` restores the marks written
+    // since and clears the staleness the journal's events raised (the caller vouches that the mesh
+    // is as it was: the state was not stale then, and nothing else edited it). Costs what was
+    // bisected since the mark. `forget_undo()` drops the log (when no step can be undone any more).
+    std::size_t undo_mark() const { return m_undo.size(); }
+    void take_back(std::size_t mark);
+    void forget_undo() { m_undo.clear(); }
+
 private:
     TetBisection(Mesh& mesh, std::vector<TetMarking> markings, BisectionRule rule);
     void attach();
@@ -205,6 +216,15 @@ private:
     std::string m_stale_reason;
     bool m_own_edit = false;     // watcher events come from our own split_edge
     ElementId m_last_child = invalid_id;
+    // every mark written: the element, the mark it replaced (default for a new id), m_last_child then
+    struct Written {
+        ElementId element;
+        TetMarking was;
+        ElementId last_child;
+    };
+    std::vector<Written> m_undo;
+    // writes a mark, logging the one it replaces (both rules' replays go through here)
+    void write_marking(ElementId t, const TetMarking& marking);
 };
 
 // Recursive conforming bisection of element t (thesis §6.5 bisect(e), iterative with an explicit
