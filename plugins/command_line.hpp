@@ -17,6 +17,7 @@
 #include <optional>
 #include <ostream>
 #include <span>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -259,6 +260,15 @@ inline void add_undo_option(CLI::App& app, std::string& undo) {
                 return std::string();
             },
             "N|all"));
+}
+
+// Whitespace-separated words: an option that carries another command's options in one word
+// (`--deform "--fix z<0.001 --E 1e4"`).
+inline std::vector<std::string> words_of(const std::string& text) {
+    std::vector<std::string> words;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) words.push_back(word);
+    return words;
 }
 
 // The option words a ToolFactory's begin() gets ("--depth", "0.01"), parsed into `app` as the

@@ -4,12 +4,10 @@
 // plug-in's renderer, found through the host (Plugin::attach): no plug-in links another.
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,10 +20,10 @@
 #include "needle.hpp"
 #include "needle_options.hpp"
 #include "needle_report.hpp"
-#include "render_service.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
 #include "sxk/tool_path.hpp"
+#include "tool_frames.hpp"
 #include "uniform_refinement.hpp"
 
 extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_needle();
@@ -37,13 +35,6 @@ namespace {
 // The host's services (Plugin::attach); see the snapcut plug-in: a process loads the plug-in once,
 // and the last host to attach it is the one whose services its sessions use.
 const sxk::Services* plugin_host = nullptr;
-
-std::vector<std::string> words_of(const std::string& text) {
-    std::vector<std::string> words;
-    std::istringstream in(text);
-    for (std::string word; in >> word;) words.push_back(word);
-    return words;
-}
 
 struct CommandOptions {
     std::string input, path, output, deform, frames, plot;
@@ -198,36 +189,9 @@ public:
             return 2;
         }
         // --frames: one camera, framing the body before the first step
-        std::vector<std::string> frame_words;
-        const bezier::RenderService* renderer = nullptr;
-        if (!o.frames.empty()) {
-            auto found = plugin_host ? plugin_host->service<bezier::RenderService>()
-                                     : Outcome<bezier::RenderService*>(Refusal{RefusalCode::not_found, "no plug-in host"});
-            if (!found) {
-                err << "sxk: needle: --frames: " << found.reason() << " (the bezier plug-in)\n";
-                return 2;
-            }
-            renderer = *found;
-            std::error_code error;
-            std::filesystem::create_directories(o.frames, error);
-            if (error || !std::filesystem::is_directory(o.frames)) {
-                err << "sxk: needle: --frames: cannot make folder " << o.frames
-                    << (error ? ": " + error.message() : std::string()) << '\n';
-                return 2;
-            }
-            frame_words = {"--colour", "plain", "--camera", renderer->default_camera(*mesh)};
-        }
-        auto frame = [&](std::size_t index) {
-            if (renderer == nullptr) return true;
-            char name[32];
-            std::snprintf(name, sizeof name, "step-%04zu.png", index);
-            if (auto drawn = renderer->draw_mesh(*mesh, std::filesystem::path(o.frames) / name, frame_words); !drawn) {
-                err << "sxk: needle: --frames: " << drawn.reason() << '\n';
-                return false;
-            }
-            return true;
-        };
-        if (!frame(0)) return 1;
+        const auto frames = ToolFrames::open(plugin_host, *mesh, o.frames, "needle", {"--colour", "plain"}, err);
+        if (!frames) return 2;
+        if (!frames->draw(*mesh, 0, err)) return 1;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -243,7 +207,7 @@ public:
                 return 1;
             }
             record.steps.push_back({sample.time, sample.line, *stepped});
-            if (!frame(record.steps.size())) return 1;
+            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) { return step.report.tip_inside || step.report.intercepted > 0; })) {

@@ -5,10 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <cstdio>
 #include <limits>
 #include <memory>
-#include <sstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,8 +19,8 @@
 #include "cut_report.hpp"
 #include "degeneracy_service.hpp"
 #include "elasticity_service.hpp"
-#include "render_service.hpp"
 #include "snap_cut.hpp"
+#include "tool_frames.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
 #include "sxk/tool_path.hpp"
@@ -45,14 +43,6 @@ CutServices services_from(const sxk::Services* host) {
     if (host == nullptr) return services;
     if (auto degeneracy = host->service<degeneracy::DegeneracyService>()) services.degeneracy = *degeneracy;
     return services;
-}
-
-// Whitespace-separated words.
-std::vector<std::string> words_of(const std::string& text) {
-    std::vector<std::string> words;
-    std::istringstream in(text);
-    for (std::string word; in >> word;) words.push_back(word);
-    return words;
 }
 
 struct CommandOptions {
@@ -175,38 +165,11 @@ public:
             return 2;
         }
         // --frames: one camera, framing the body as the cut starts, for every picture
-        std::vector<std::string> frame_words;
-        const bezier::RenderService* renderer = nullptr;
-        if (!options.frames.empty()) {
-            auto found = plugin_host ? plugin_host->service<bezier::RenderService>()
-                                     : Outcome<bezier::RenderService*>(Refusal{RefusalCode::not_found, "no plug-in host"});
-            if (!found) {
-                err << "sxk: cut snap: --frames: " << found.reason() << " (the bezier plug-in)\n";
-                return 2;
-            }
-            renderer = *found;
-            std::error_code error;
-            std::filesystem::create_directories(options.frames, error);
-            if (error || !std::filesystem::is_directory(options.frames)) {
-                err << "sxk: cut snap: --frames: cannot make folder " << options.frames
-                    << (error ? ": " + error.message() : std::string()) << '\n';
-                return 2;
-            }
-            frame_words = {"--colour", "plain", "--camera", renderer->default_camera(*mesh), "--cut-label",
-                           std::to_string(options.cut.cut_label)};
-        }
-        auto frame = [&](std::size_t index) {
-            if (renderer == nullptr) return true;
-            char name[32];
-            std::snprintf(name, sizeof name, "step-%04zu.png", index);
-            if (auto drawn = renderer->draw_mesh(*mesh, std::filesystem::path(options.frames) / name, frame_words);
-                !drawn) {
-                err << "sxk: cut snap: --frames: " << drawn.reason() << '\n';
-                return false;
-            }
-            return true;
-        };
-        if (!frame(0)) return 1;
+        const auto frames = ToolFrames::open(plugin_host, *mesh, options.frames, "cut snap",
+                                             {"--colour", "plain", "--cut-label", std::to_string(options.cut.cut_label)},
+                                             err);
+        if (!frames) return 2;
+        if (!frames->draw(*mesh, 0, err)) return 1;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -220,7 +183,7 @@ public:
                 return 1;
             }
             record.steps.push_back({move.time, move.line, (*session)->last_step()});
-            if (!frame(record.steps.size())) return 1;
+            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) { return step.report.edges_hit > 0; })) {

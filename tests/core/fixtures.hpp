@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
@@ -29,6 +30,26 @@ inline std::uint64_t seed_for(const char* name) {
     std::cout << "[ seed     ] " << name << " SXK_SEED=" << seed << std::endl;
     ::testing::Test::RecordProperty("seed", std::to_string(seed));
     return seed;
+}
+
+// Similarity signature of a tetrahedron (reference positions): the six squared edge lengths,
+// sorted, divided by the largest, rounded to 1e-7. Similar tetrahedra (mirror images included) have
+// equal signatures: what the bisection tests count shapes by.
+using ShapeSignature = std::array<long long, 6>;
+inline ShapeSignature shape_signature(const Mesh& mesh, ElementId t) {
+    const Simplex& s = mesh.simplex(t);
+    std::array<double, 6> lengths{};
+    std::size_t next = 0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+            const Point& a = mesh.reference(s.vertex(i));
+            const Point& b = mesh.reference(s.vertex(j));
+            lengths[next++] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+        }
+    std::sort(lengths.begin(), lengths.end());
+    ShapeSignature signature{};
+    for (std::size_t k = 0; k < 6; ++k) signature[k] = std::llround(lengths[k] / lengths[5] * 1e7);
+    return signature;
 }
 
 //   d(3) ------- c(2)

@@ -84,23 +84,8 @@ double boundary_area(const Mesh& mesh) {
     return sum;
 }
 
-// Similarity signature: the six squared edge lengths, sorted, divided by the largest, rounded
-// to 1e-7. Similar tetrahedra (mirror images included) have equal signatures.
-using Signature = std::array<long long, 6>;
-Signature shape_signature(const Mesh& mesh, ElementId t) {
-    const Simplex& s = mesh.simplex(t);
-    std::array<double, 6> lengths{};
-    std::size_t next = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) {
-            const Point d = minus(mesh.reference(s.vertex(i)), mesh.reference(s.vertex(j)));
-            lengths[next++] = dot(d, d);
-        }
-    std::sort(lengths.begin(), lengths.end());
-    Signature signature{};
-    for (std::size_t k = 0; k < 6; ++k) signature[k] = std::llround(lengths[k] / lengths[5] * 1e7);
-    return signature;
-}
+using test::shape_signature;
+using Signature = test::ShapeSignature;
 
 void add_shapes(const Mesh& mesh, std::set<Signature>& shapes) {
     for (ElementId t : elements(mesh)) shapes.insert(shape_signature(mesh, t));

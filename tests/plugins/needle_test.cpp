@@ -103,24 +103,6 @@ void expect_right_isosceles(const Mesh& mesh) {
     }
 }
 
-// The shape of a tetrahedron up to scale: its sorted squared edge lengths over the largest,
-// rounded.
-std::array<long, 6> tetrahedron_shape(const Mesh& mesh, ElementId t) {
-    const auto v = mesh.simplex(t).vertices();
-    std::array<double, 6> squared{};
-    int n = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) {
-            const Point& a = mesh.reference(v[i]);
-            const Point& b = mesh.reference(v[j]);
-            squared[n++] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
-        }
-    std::sort(squared.begin(), squared.end());
-    std::array<long, 6> shape{};
-    for (int k = 0; k < 6; ++k) shape[k] = std::lround(1e6 * squared[k] / squared[5]);
-    return shape;
-}
-
 TEST(Needle, InsertsIntoTheThesisSlabKeepingEveryTriangleCongruentAndTheNodesOnTheNeedle) {
     Insertion run(slab(), slab_body);
     const double h6 = 0.1 / 64, speed = 0.3 * h6;
@@ -250,8 +232,8 @@ TEST(Needle, InsertsIntoAKuhnCubeKeepingThreeShapesOfTetrahedra) {
     Options options;
     options.h_ref = 0.1 / 32;
     Insertion run(cube(), cube_body, options);
-    std::set<std::array<long, 6>> start_shapes;
-    for (const ElementId t : elements(run.mesh)) start_shapes.insert(tetrahedron_shape(run.mesh, t));
+    std::set<test::ShapeSignature> start_shapes;
+    for (const ElementId t : elements(run.mesh)) start_shapes.insert(test::shape_signature(run.mesh, t));
     EXPECT_EQ(start_shapes.size(), 1u);
     for (double x = -0.01; x <= 0.07 + 1e-12; x += 0.001) {
         auto step = run.session->move(along_x(x, 0.051, 0.049));
@@ -259,8 +241,8 @@ TEST(Needle, InsertsIntoAKuhnCubeKeepingThreeShapesOfTetrahedra) {
         ASSERT_TRUE(run.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok()) << "x = " << x;
         expect_nodes_on_needle(run);
     }
-    std::set<std::array<long, 6>> shapes;
-    for (const ElementId t : elements(run.mesh)) shapes.insert(tetrahedron_shape(run.mesh, t));
+    std::set<test::ShapeSignature> shapes;
+    for (const ElementId t : elements(run.mesh)) shapes.insert(test::shape_signature(run.mesh, t));
     EXPECT_LE(shapes.size(), 3u);  // Maubach's three classes (sxk/ops/tet_bisection.hpp)
     EXPECT_GE(run.session->nodes().size(), 15u);
     EXPECT_GT(run.session->last_step().axial_force, 0);

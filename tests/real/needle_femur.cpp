@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <set>
 #include <string>
@@ -22,23 +21,6 @@
 
 namespace sxk::test {
 namespace {
-
-// A tetrahedron's shape up to similarity: its sorted squared edge lengths over the largest, rounded.
-std::array<long, 6> shape(const Mesh& mesh, ElementId t) {
-    const auto v = mesh.simplex(t).vertices();
-    std::array<double, 6> squared{};
-    int n = 0;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) {
-            const Point& a = mesh.reference(v[i]);
-            const Point& b = mesh.reference(v[j]);
-            squared[n++] = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
-        }
-    std::sort(squared.begin(), squared.end());
-    std::array<long, 6> result{};
-    for (int k = 0; k < 6; ++k) result[k] = std::lround(1e5 * squared[k] / squared[5]);
-    return result;
-}
 
 TEST(NeedleFemur, ANeedleThroughTheShaftKeepsTheFemurValidAndUndoes) {
     const std::string femur = make_femur();
@@ -64,11 +46,11 @@ TEST(NeedleFemur, ANeedleThroughTheShaftKeepsTheFemurValidAndUndoes) {
     for (const needle::NeedleNode& node : (*session)->nodes()) EXPECT_LE(std::hypot(node.perp[1], node.perp[2]), 0.01);
     // the refinement's shapes: AMP bisection keeps the descendants of an initial tetrahedron in a
     // bounded number of similarity classes (sxk/ops/tet_bisection.hpp: at most 69 measured)
-    std::set<std::array<long, 6>> shapes;
+    std::set<ShapeSignature> shapes;
     std::size_t kept = 0;
     for (const ElementId t : elements(mesh)) {
         if (original.count(mesh.simplex(t))) ++kept;
-        else shapes.insert(shape(mesh, t));
+        else shapes.insert(shape_signature(mesh, t));
     }
     const std::size_t refined = before.element_count() - kept;
     std::printf("%zu tetrahedra -> %zu; %zu initial ones refined into %zu shapes\n", before.element_count(),

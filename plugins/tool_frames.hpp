@@ -1,0 +1,71 @@
+// `--frames DIR` of the commands that replay a tool path (`sxk cut snap`, `sxk needle`): a picture
+// of the mesh before the first step and after each, drawn by the bezier plug-in's renderer (found
+// through the host, so no plug-in links another), one camera for all, chosen as the replay starts.
+// Header-only, for the plug-ins in this folder that put plugins/bezier on their include path.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "render_service.hpp"
+#include "sxk/mesh.hpp"
+#include "sxk/plugin.hpp"
+
+namespace sxk {
+
+class ToolFrames {
+public:
+    // No pictures (an empty folder): draw() does nothing. Otherwise the renderer and the folder
+    // (made if missing), or the message printed ("sxk: COMMAND: --frames: ...") and nullopt.
+    // `words`: the renderer's options besides the camera ("--colour", "plain", ...).
+    static std::optional<ToolFrames> open(const Services* host, const Mesh& mesh, const std::string& folder,
+                                          const std::string& command, std::vector<std::string> words,
+                                          std::ostream& err) {
+        ToolFrames frames;
+        if (folder.empty()) return frames;
+        auto found = host ? host->service<bezier::RenderService>()
+                          : Outcome<bezier::RenderService*>(Refusal{RefusalCode::not_found, "no plug-in host"});
+        if (!found) {
+            err << "sxk: " << command << ": --frames: " << found.reason() << " (the bezier plug-in)\n";
+            return std::nullopt;
+        }
+        std::error_code error;
+        std::filesystem::create_directories(folder, error);
+        if (error || !std::filesystem::is_directory(folder)) {
+            err << "sxk: " << command << ": --frames: cannot make folder " << folder
+                << (error ? ": " + error.message() : std::string()) << '\n';
+            return std::nullopt;
+        }
+        frames.m_renderer = *found;
+        frames.m_folder = folder;
+        frames.m_command = command;
+        words.push_back("--camera");
+        words.push_back(frames.m_renderer->default_camera(mesh));
+        frames.m_words = std::move(words);
+        return frames;
+    }
+
+    // step-NNNN.png (index 0: before the first step); false with the message printed.
+    bool draw(const Mesh& mesh, std::size_t index, std::ostream& err) const {
+        if (m_renderer == nullptr) return true;
+        char name[32];
+        std::snprintf(name, sizeof name, "step-%04zu.png", index);
+        if (auto drawn = m_renderer->draw_mesh(mesh, std::filesystem::path(m_folder) / name, m_words); !drawn) {
+            err << "sxk: " << m_command << ": --frames: " << drawn.reason() << '\n';
+            return false;
+        }
+        return true;
+    }
+
+private:
+    const bezier::RenderService* m_renderer = nullptr;
+    std::string m_folder, m_command;
+    std::vector<std::string> m_words;
+};
+
+}  // namespace sxk
