@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "needle_frame.hpp"
 #include "sxk/ops/refine_around.hpp"
@@ -31,13 +32,38 @@ Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, cons
                                  const Point& from, const Point& to, double h, ElementId hint,
                                  TetBisection* bisection) {
     Refinement result;
-    const double distance = (vec(to) - vec(from)).norm();
-    const std::size_t pieces = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(distance / (0.5 * h))));
+    const Eigen::Vector3d a = vec(from), path = vec(to) - vec(from);
+    const double distance = path.norm();
+    if (!std::isfinite(distance))
+        return Refusal{RefusalCode::bad_argument, "the tip moved farther than a double measures"};
+    // only the stretch inside the mesh is sampled: the parameters where the path is in the boxes of
+    // the elements it crosses (a needle that starts far away costs nothing for the way there)
+    double first = 1, last = 0;
+    for (const ElementId t : deformed.elements_crossed(from, to)) {
+        double low = 0, high = 1;
+        for (int k = 0; k < mesh.ambient_dimension(); ++k) {
+            double box_low = std::numeric_limits<double>::infinity(), box_high = -box_low;
+            for (const VertexId v : mesh.simplex(t).vertices()) {
+                box_low = std::min(box_low, mesh.deformed(v)[k]);
+                box_high = std::max(box_high, mesh.deformed(v)[k]);
+            }
+            if (path[k] == 0) continue;
+            const double enter = (box_low - a[k]) / path[k], leave = (box_high - a[k]) / path[k];
+            low = std::max(low, std::min(enter, leave));
+            high = std::min(high, std::max(enter, leave));
+        }
+        first = std::min(first, low);
+        last = std::max(last, high);
+    }
+    const double inside = std::max(last - first, 0.0) * distance;
+    if (inside / (0.5 * h) > 1e6)
+        return Refusal{RefusalCode::bad_argument, "the tip's path through the mesh is more than 500,000 h_ref long"};
+    const std::size_t pieces = static_cast<std::size_t>(std::ceil(inside / (0.5 * h)));
     const bool planar = mesh.topological_dimension() == 2;
     const double limit = bisection_edge_limit(mesh, h);
-    for (std::size_t k = 1; k <= pieces; ++k) {
-        const double t = static_cast<double>(k) / static_cast<double>(pieces);
-        const Point x = k == pieces ? to : point(vec(from) + t * (vec(to) - vec(from)));
+    for (std::size_t k = 0; k <= pieces; ++k) {
+        const double t = pieces == 0 ? 1.0 : first + (last - first) * static_cast<double>(k) / static_cast<double>(pieces);
+        const Point x = t >= 1 ? to : point(a + t * path);
         const std::optional<Point> at = in_reference(mesh, deformed, x, hint);
         if (!at) continue;
         if (planar) {

@@ -24,13 +24,16 @@ struct Refinement {
     ElementId tip_element = invalid_id;  // the element containing the tip afterwards (deformed)
 };
 
-// Points of the tip's path [from, to] (deformed positions) at most h / 2 apart, `to` last, each
+// Points of the tip's path [from, to] (deformed positions) where it is inside the mesh (the stretch
+// in the boxes of the elements it crosses), at most h / 2 apart, `to` last, each
 // located in the deformed positions (walking from the previous one), taken into the reference
 // positions through its element's barycentric coordinates (the tip moves through deformed
 // material) and refined around there to size h: refine_around (triangles), or
 // refine_around_tetrahedra with `bisection`'s rule (Maubach's newest-vertex bisection on Kuhn
 // meshes, AMP's on others; without a state, longest-edge bisection), located through `reference`.
 // Points outside the mesh are skipped. One call is not a transaction by itself: the session's step is.
+// Refuses (bad_argument) a path whose length is not a finite double, and one more than 500,000 h
+// long inside the mesh.
 Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, const SpatialIndex& deformed,
                                  const Point& from, const Point& to, double h, ElementId hint,
                                  TetBisection* bisection = nullptr);
