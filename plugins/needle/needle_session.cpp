@@ -238,6 +238,11 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
             node.vertex = v;
             node.along = node.entered = to.along(x);
             node.perp = to.perp(x);
+            // a vertex the body's options hold (a fixed side) stays theirs
+            if (auto held = hold(node, needle); !held) {
+                if (held.refusal().code == RefusalCode::bad_argument) continue;
+                return held.refusal().prefixed("needle: ");
+            }
             if (m_options.relocate && node.perp != Point{0, 0, 0}) {
                 if (relocate(v, node.perp)) {
                     node.perp = {0, 0, 0};
@@ -245,11 +250,6 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
                 } else {
                     ++report.not_relocated;
                 }
-            }
-            // a vertex the body's options hold (a fixed side) stays theirs
-            if (auto held = hold(node, needle); !held) {
-                if (held.refusal().code == RefusalCode::bad_argument) continue;
-                return held.refusal().prefixed("needle: ");
             }
             nodes.push_back(node);
             ++report.intercepted;
