@@ -34,13 +34,7 @@ public:
             err << "sxk: " << command << ": --frames: " << found.reason() << " (the bezier plug-in)\n";
             return std::nullopt;
         }
-        std::error_code error;
-        std::filesystem::create_directories(folder, error);
-        if (error || !std::filesystem::is_directory(folder)) {
-            err << "sxk: " << command << ": --frames: cannot make folder " << folder
-                << (error ? ": " + error.message() : std::string()) << '\n';
-            return std::nullopt;
-        }
+        if (!make_folder(folder, command, err)) return std::nullopt;
         frames.m_renderer = *found;
         frames.m_folder = folder;
         frames.m_command = command;
@@ -50,12 +44,30 @@ public:
         return frames;
     }
 
-    // step-NNNN.png (index 0: before the first step); false with the message printed.
-    bool draw(const Mesh& mesh, std::size_t index, std::ostream& err) const {
-        if (m_renderer == nullptr) return true;
+    // The folder, made if missing; false with the message printed.
+    static bool make_folder(const std::string& folder, const std::string& command, std::ostream& err) {
+        std::error_code error;
+        std::filesystem::create_directories(folder, error);
+        if (error || !std::filesystem::is_directory(folder)) {
+            err << "sxk: " << command << ": --frames: cannot make folder " << folder
+                << (error ? ": " + error.message() : std::string()) << '\n';
+            return false;
+        }
+        return true;
+    }
+
+    // The name of picture `index` (0: before the first step): step-NNNN.png.
+    static std::string file_name(std::size_t index) {
         char name[32];
         std::snprintf(name, sizeof name, "step-%04zu.png", index);
-        if (auto drawn = m_renderer->draw_mesh(mesh, std::filesystem::path(m_folder) / name, m_words); !drawn) {
+        return name;
+    }
+
+    // Picture `index`; false with the message printed.
+    bool draw(const Mesh& mesh, std::size_t index, std::ostream& err) const {
+        if (m_renderer == nullptr) return true;
+        if (auto drawn = m_renderer->draw_mesh(mesh, std::filesystem::path(m_folder) / file_name(index), m_words);
+            !drawn) {
             err << "sxk: " << m_command << ": --frames: " << drawn.reason() << '\n';
             return false;
         }

@@ -20,6 +20,7 @@
 #include "needle.hpp"
 #include "needle_options.hpp"
 #include "needle_report.hpp"
+#include "planar_picture.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
 #include "sxk/tool_path.hpp"
@@ -188,10 +189,30 @@ public:
             err << "sxk: " << o.input << ":0: " << session.reason() << '\n';
             return 2;
         }
-        // --frames: one camera, framing the body before the first step
-        const auto frames = ToolFrames::open(plugin_host, *mesh, o.frames, "needle", {"--colour", "plain"}, err);
+        // --frames: a planar mesh drawn with its needle (planar_picture.hpp), a tetrahedral one by the
+        // renderer; one view for every picture, framing the body before the first step
+        std::optional<ToolFrames> frames = ToolFrames{};  // draws nothing
+        if (!planar)
+            frames = ToolFrames::open(plugin_host, *mesh, o.frames, "needle", {"--colour", "plain"}, err);
+        else if (!o.frames.empty() && !ToolFrames::make_folder(o.frames, "needle", err))
+            frames.reset();
         if (!frames) return 2;
-        if (!frames->draw(*mesh, 0, err)) return 1;
+        const std::array<double, 4> view = planar ? picture_view(*mesh) : std::array<double, 4>{};
+        auto frame = [&](std::size_t index) {
+            if (!planar || o.frames.empty()) return frames->draw(*mesh, index, err);
+            const std::string title = index == 0 ? std::string("before the first step")
+                                                 : "step " + std::to_string(index) + " of " +
+                                                       std::to_string(path.samples.size());
+            try {
+                pictures::write_png(std::filesystem::path(o.frames) / ToolFrames::file_name(index),
+                                    pictures::draw(planar_picture(*mesh, **session, view, title)));
+            } catch (const std::exception& error) {
+                err << "sxk: needle: --frames: " << error.what() << '\n';
+                return false;
+            }
+            return true;
+        };
+        if (!frame(0)) return 1;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -207,7 +228,7 @@ public:
                 return 1;
             }
             record.steps.push_back({sample.time, sample.line, *stepped});
-            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
+            if (!frame(record.steps.size())) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) { return step.report.tip_inside || step.report.intercepted > 0; })) {

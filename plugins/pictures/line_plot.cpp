@@ -3,11 +3,12 @@
 
 #include <cairo.h>
 
+#include "cairo_image.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -95,14 +96,8 @@ Image draw(const Plot& plot) {
         ys = {ys.low - margin, ys.high + margin};
     }
 
-    const std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, plot.width, plot.height),
-        cairo_surface_destroy);
-    const std::unique_ptr<cairo_t, void (*)(cairo_t*)> context(cairo_create(surface.get()),
-                                                               cairo_destroy);
+    const auto [surface, context] = white_canvas(plot.width, plot.height);
     cairo_t* cr = context.get();
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
 
     const double left = 80, right = plot.width - 20.0, top = 40, bottom = plot.height - 55.0;
@@ -214,27 +209,7 @@ Image draw(const Plot& plot) {
         y += 16;
     }
 
-    cairo_surface_flush(surface.get());
-    Image image{plot.width, plot.height,
-                std::vector<std::uint8_t>(3 * static_cast<std::size_t>(plot.width * plot.height))};
-    const unsigned char* data = cairo_image_surface_get_data(surface.get());
-    const int stride = cairo_image_surface_get_stride(surface.get());
-    for (int row = 0; row < plot.height; ++row)
-        for (int column = 0; column < plot.width; ++column) {
-            // RGB24: one native-endian 32-bit word per pixel, 0x00RRGGBB
-            std::uint32_t word;
-            std::memcpy(&word,
-                        data + static_cast<std::size_t>(row) * static_cast<std::size_t>(stride) +
-                            4 * static_cast<std::size_t>(column),
-                        4);
-            std::uint8_t* out = image.rgb.data() + 3 * (static_cast<std::size_t>(row) *
-                                                            static_cast<std::size_t>(plot.width) +
-                                                        static_cast<std::size_t>(column));
-            out[0] = static_cast<std::uint8_t>(word >> 16);
-            out[1] = static_cast<std::uint8_t>(word >> 8);
-            out[2] = static_cast<std::uint8_t>(word);
-        }
-    return image;
+    return image_of(surface.get());
 }
 
 }  // namespace sxk::pictures

@@ -51,6 +51,17 @@ TEST(SxkNeedle, InsertsIntoTheThesisSlabAndReportsEachStep) {
     EXPECT_TRUE(fs::file_size(plot) > 1000);
 }
 
+TEST(SxkNeedle, DrawsAPicturePerStepOfAPlanarMesh) {
+    NeedleFixture f;
+    const fs::path frames = f.folder / "frames", path = f.folder / "short.path";
+    write_file(path, "0 -0.11 0.05 -0.01 0.05\n1 -0.09 0.05 0.01 0.05\n2 -0.07 0.05 0.03 0.05\n");
+    const ProcessResult run = f.insert(path.string(), {"--deform", slab_body, "--frames", frames.string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    for (const char* name : {"step-0000.png", "step-0001.png", "step-0002.png", "step-0003.png"})
+        EXPECT_GT(fs::file_size(frames / name), 5000u) << name;
+    EXPECT_FALSE(fs::exists(frames / "step-0004.png"));
+}
+
 TEST(SxkNeedle, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
     NeedleFixture f;
     const ProcessResult run = f.insert(slab_path, {"--deform", slab_body, "--undo", "all"});
