@@ -25,7 +25,8 @@
 //                 needle node
 //
 // Without the elasticity plug-in (no simulation given) the session still refines and intercepts,
-// and tracks the needle nodes' coordinates, but nothing moves: the report says geometry only.
+// and tracks the needle nodes' coordinates, but solves nothing: the tissue does not follow the
+// needle (only Options::relocate moves nodes), and geometry_only() says so.
 //
 //     auto session = NeedleSession::make(mesh, options, simulation);   // simulation may be null
 //     session->move({base, tip});                                       // one undoable step
