@@ -136,6 +136,10 @@ public:
     // bisection marks here (Maubach's on a Kuhn mesh, else AMP's: O(n), once).
     static Outcome<std::unique_ptr<NeedleSession>> make(Mesh& mesh, const Options& options,
                                                         elasticity::Simulation* simulation = nullptr);
+    // The same with a simulation the session owns (null: geometry only, and the first step's
+    // actions say that the elasticity plug-in is not there).
+    static Outcome<std::unique_ptr<NeedleSession>> make(Mesh& mesh, const Options& options,
+                                                        std::unique_ptr<elasticity::Simulation> simulation);
     ~NeedleSession() override;
 
     // One movement (a step): the first places the needle. Refuses a needle of zero length or with
@@ -172,7 +176,9 @@ private:
     bool relocate(VertexId v, const Point& offset);
 
     Options m_options;
+    std::unique_ptr<elasticity::Simulation> m_owned_simulation;  // the ToolFactory's sessions' body
     elasticity::Simulation* m_simulation;
+    bool m_say_geometry_only = false;  // the first step tells that there is no body
     std::unique_ptr<SpatialIndex> m_reference_index, m_deformed_index;
     // tetrahedral meshes: the bisection's marks (Maubach's on a Kuhn mesh, AMP's otherwise), taken
     // back with the steps

@@ -96,11 +96,7 @@ public:
         app.add_option("--h-start", o.h_start,
                        "Refine the whole mesh to elements of this size first (thesis h_start; not a step)")
             ->check(number_in(0, false, 1e300, true, "(0, 1e300]"));
-        add_needle_options(app, o.needle);
-        app.add_option("--deform,--material", o.deform,
-                       "The body: `sxk deform`'s options in one word, e.g. \"--fix x>0.0999 --E 34e3 --nu "
-                       "0.34 --thickness 0.01 --tol 0.01 --rounding 1e-8\" (the elasticity plug-in). "
-                       "Without it the needle only refines and tracks its nodes (geometry only)");
+        add_needle_options(app, o.needle, &o.deform);
         app.add_option("--frames", o.frames,
                        "Write a picture of the mesh per step into folder DIR (made if missing): step-0000.png "
                        "before the first step, then one per step (the bezier plug-in's renderer)")
@@ -274,17 +270,30 @@ std::span<const std::string_view> needle_tools() {
     return tools;
 }
 
-// The tool "needle", options as add_needle_options reads them. Geometry only: a body's
-// simulation outlives a session, so an application that wants one makes the session itself
-// (NeedleSession::make with its Simulation).
+// The tool "needle", options as add_needle_options reads them. With --deform and the elasticity
+// plug-in in the host, the session owns a simulation of the body (solved to rest before the first
+// step); without the plug-in it is geometry only and its first step says so.
 Outcome<std::unique_ptr<ToolSession>> begin_needle(std::string_view tool, Mesh& mesh, std::span<const std::string> words) {
     if (tool != "needle")
         return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " in needle (it has: needle)"};
     CLI::App app("needle session", "needle");
     Options options;
-    add_needle_options(app, options);
+    std::string deform;
+    add_needle_options(app, options, &deform);
     if (auto refused = parse_tool_words(app, words, "needle")) return *refused;
-    auto session = NeedleSession::make(mesh, options, nullptr);
+    std::unique_ptr<elasticity::Simulation> body;
+    if (!deform.empty()) {
+        if (auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
+                                          : Outcome<elasticity::ElasticityService*>(
+                                                Refusal{RefusalCode::not_found, "no plug-in host"})) {
+            auto made = (*elasticity)->simulate(mesh, words_of(deform));
+            if (!made) return made.refusal().prefixed("needle: --deform: ");
+            body = std::move(*made);
+            if (auto settled = body->relax(std::numeric_limits<std::size_t>::max()); !settled)
+                return settled.refusal().prefixed("needle: --deform: ");
+        }
+    }
+    auto session = NeedleSession::make(mesh, options, std::move(body));
     if (!session) return session.refusal();
     return std::unique_ptr<ToolSession>(std::move(*session));
 }

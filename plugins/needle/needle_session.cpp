@@ -81,6 +81,15 @@ Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Op
     return session;
 }
 
+Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Options& options,
+                                                            std::unique_ptr<elasticity::Simulation> simulation) {
+    auto session = make(mesh, options, simulation.get());
+    if (!session) return session.refusal();
+    (*session)->m_say_geometry_only = simulation == nullptr;
+    (*session)->m_owned_simulation = std::move(simulation);
+    return session;
+}
+
 NeedleSession::NeedleSession(Mesh& mesh, const Options& options, elasticity::Simulation* simulation)
     : ToolSession(mesh),
       m_options(options),
@@ -348,6 +357,11 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
     report.elements = mesh.element_count();
     report.vertices = mesh.vertices_in_elements();
     report.seconds = seconds_since(start);
+    if (m_say_geometry_only) {
+        words.actions.push_back("geometry only: no elastic body (the elasticity plug-in is not loaded, or no "
+                                "--deform): nothing follows the needle");
+        m_say_geometry_only = false;
+    }
     if (report.bisections > 0) words.actions.push_back("bisected " + std::to_string(report.bisections) + " edges");
     if (report.intercepted > 0)
         words.actions.push_back("intercepted " + std::to_string(report.intercepted) + " needle nodes");

@@ -23,6 +23,7 @@
 #include "sxk/plugin_host.hpp"
 
 extern "C" const sxk_plugin_info* sxk_plugin_entry_needle();
+extern "C" const sxk_plugin_info* sxk_plugin_entry_elasticity();
 
 namespace sxk::needle {
 namespace {
@@ -301,7 +302,11 @@ TEST(Needle, TheToolFactoryOffersTheNeedle) {
     const std::vector<std::string> words{"--h-ref", "0.003", "--relocate"};
     auto session = (*factory)->begin("needle", square, words);
     ASSERT_TRUE(session.ok()) << session.reason();
-    ASSERT_TRUE((*session)->step(NeedleSession::pose_of(along_x(-0.01, 0.05))).ok());
+    // geometry only (no --deform), and the first step says so
+    auto first = (*session)->step(NeedleSession::pose_of(along_x(-0.01, 0.05)));
+    ASSERT_TRUE(first.ok()) << first.reason();
+    ASSERT_FALSE(first->actions.empty());
+    EXPECT_NE(first->actions.front().find("geometry only"), std::string::npos) << first->actions.front();
     ASSERT_TRUE((*session)->step(NeedleSession::pose_of(along_x(0.02, 0.05))).ok());
     EXPECT_GT(square.element_count(), 128u);
     EXPECT_TRUE(square.validate().ok());
@@ -310,6 +315,38 @@ TEST(Needle, TheToolFactoryOffersTheNeedle) {
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.refusal().code, RefusalCode::bad_argument);
     EXPECT_NE(refused.reason().find("--h-ref"), std::string::npos) << refused.reason();
+}
+
+// With the elasticity plug-in in the host and --deform, the tool's session owns a body and solves.
+TEST(Needle, TheToolFactorysNeedleSolvesWithTheElasticityPlugin) {
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_elasticity(), "linked-in elasticity"));
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_needle(), "linked-in needle"));
+    auto factory = host.service<ToolFactory>("needle");
+    ASSERT_TRUE(factory.ok()) << factory.reason();
+    Mesh square = slab();
+    const Mesh before = square;
+    const std::vector<std::string> words{"--deform",
+                                         "--fix x>0.0999 --E 34e3 --nu 0.34 --thickness 0.01 --tol 0.01"};
+    auto session = (*factory)->begin("needle", square, words);
+    ASSERT_TRUE(session.ok()) << session.reason();
+    auto* needle = dynamic_cast<NeedleSession*>(session->get());
+    ASSERT_NE(needle, nullptr);
+    EXPECT_FALSE(needle->geometry_only());
+    std::size_t iterations = 0;
+    for (double x = -0.01; x <= 0.03; x += 0.001) {
+        ASSERT_TRUE((*session)->step(NeedleSession::pose_of(along_x(x, 0.05))).ok());
+        iterations += needle->last_step().iterations;
+    }
+    EXPECT_GT(iterations, 0u);
+    EXPECT_GT(needle->last_step().axial_force, 0);
+    ASSERT_TRUE((*session)->cancel().ok());
+    test::expect_same_state(square, before);
+    const std::vector<std::string> bad{"--deform", "--fix x>7"};
+    auto refused = (*factory)->begin("needle", square, bad);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.reason().find("needle: --deform: deform: --fix 'x>7' selects no vertex"), std::string::npos)
+        << refused.reason();
 }
 
 // Seeded random needle paths into slabs and cubes: every step valid (no inverted or flat element
