@@ -34,7 +34,7 @@ void add_needle_options(CLI::App& app, Options& options, std::string* deform) {
         ->capture_default_str();
     app.add_flag("--relocate", options.relocate,
                  "Move intercepted nodes onto the needle (thesis 6.8.6; both positions, unless that would "
-                 "invert an element) instead of keeping their offset from it (6.4)");
+                 "invert an element or halve its aspect ratio) instead of keeping their offset from it (6.4)");
     app.add_option("--rearrangements", options.rearrangements,
                    "Solves per step: after each, the nodes' stick/slip grips are rearranged, and a change "
                    "is solved again, at most this many times (the thesis' loop: 1)")

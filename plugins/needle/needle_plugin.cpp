@@ -99,7 +99,8 @@ public:
         add_needle_options(app, o.needle, &o.deform);
         app.add_option("--frames", o.frames,
                        "Write a picture of the mesh per step into folder DIR (made if missing): step-0000.png "
-                       "before the first step, then one per step (the bezier plug-in's renderer)")
+                       "before the first step, then one per step; a planar mesh with the needle and its nodes, a "
+                       "tetrahedral one by the bezier plug-in's renderer")
             ->type_name("DIR");
         app.add_option("--plot", o.plot,
                        "Draw the forces along the needle after the replay (PNG): per needle node, and "
