@@ -22,10 +22,10 @@
 // stdout: one JSON line per figure (CONTRIBUTING.md "Benchmarks"), the peer the thesis' figure;
 // stderr: the tables.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
