@@ -188,28 +188,24 @@ public:
         }
         // --frames: a planar mesh drawn with its needle (planar_picture.hpp), a tetrahedral one by the
         // renderer; one view for every picture, framing the body before the first step
-        std::optional<ToolFrames> frames = ToolFrames{};  // draws nothing
-        if (!planar)
+        std::optional<ToolFrames> frames;
+        if (planar) {
+            const std::array<double, 4> view = picture_view(*mesh);
+            const std::size_t steps = path.samples.size();
+            frames = ToolFrames::drawn_by(
+                o.frames, "needle",
+                [&mesh, &session, view, steps](const std::filesystem::path& file, std::size_t index) {
+                    const std::string title = index == 0 ? std::string("before the first step")
+                                                         : "step " + std::to_string(index) + " of " +
+                                                               std::to_string(steps);
+                    pictures::write_png(file, pictures::draw(planar_picture(*mesh, **session, view, title)));
+                },
+                err);
+        } else {
             frames = ToolFrames::open(plugin_host, *mesh, o.frames, "needle", {"--colour", "plain"}, err);
-        else if (!o.frames.empty() && !ToolFrames::make_folder(o.frames, "needle", err))
-            frames.reset();
+        }
         if (!frames) return 2;
-        const std::array<double, 4> view = planar ? picture_view(*mesh) : std::array<double, 4>{};
-        auto frame = [&](std::size_t index) {
-            if (!planar || o.frames.empty()) return frames->draw(*mesh, index, err);
-            const std::string title = index == 0 ? std::string("before the first step")
-                                                 : "step " + std::to_string(index) + " of " +
-                                                       std::to_string(path.samples.size());
-            try {
-                pictures::write_png(std::filesystem::path(o.frames) / ToolFrames::file_name(index),
-                                    pictures::draw(planar_picture(*mesh, **session, view, title)));
-            } catch (const std::exception& error) {
-                err << "sxk: needle: --frames: " << error.what() << '\n';
-                return false;
-            }
-            return true;
-        };
-        if (!frame(0)) return 1;
+        if (!frames->draw(*mesh, 0, err)) return 1;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -225,10 +221,12 @@ public:
                 return 1;
             }
             record.steps.push_back({sample.time, sample.line, *stepped});
-            if (!frame(record.steps.size())) return 1;
+            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
-                         [](const ReplayStep& step) { return step.report.tip_inside || step.report.intercepted > 0; })) {
+                         [](const ReplayStep& step) {
+                             return step.report.tip_inside || step.report.intercepted > 0;
+                         })) {
             err << "sxk: " << o.path << ':' << path.samples.front().line
                 << ": the needle never meets the mesh (its tip is never inside)\n";
             return 2;
@@ -274,7 +272,8 @@ std::span<const std::string_view> needle_tools() {
 // The tool "needle", options as add_needle_options reads them. With --deform and the elasticity
 // plug-in in the host, the session owns a simulation of the body (solved to rest before the first
 // step); without the plug-in it is geometry only and its first step says so.
-Outcome<std::unique_ptr<ToolSession>> begin_needle(std::string_view tool, Mesh& mesh, std::span<const std::string> words) {
+Outcome<std::unique_ptr<ToolSession>> begin_needle(std::string_view tool, Mesh& mesh,
+                                                   std::span<const std::string> words) {
     if (tool != "needle")
         return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " in needle (it has: needle)"};
     CLI::App app("needle session", "needle");

@@ -71,8 +71,8 @@ void print_replay(std::ostream& out, const Replay& replay) {
     for (std::size_t i = 0; i < replay.steps.size(); ++i) {
         const ReplayStep& step = replay.steps[i];
         const NeedleStepReport& r = step.report;
-        std::snprintf(line, sizeof line, "%4zu %9.4g  %6s  %6zu  %5zu %5zu/%-4zu  %5zu  %8.4f  %9.4f  %8zu  %5.2f\n", i + 1,
-                      step.time, r.tip_inside ? "yes" : "no", r.bisections, r.stick + r.slip, r.stick, r.slip,
+        std::snprintf(line, sizeof line, "%4zu %9.4g  %6s  %6zu  %5zu %5zu/%-4zu  %5zu  %8.4f  %9.4f  %8zu  %5.2f\n",
+                      i + 1, step.time, r.tip_inside ? "yes" : "no", r.bisections, r.stick + r.slip, r.stick, r.slip,
                       r.iterations, r.axial_force, r.lateral_force, r.elements, r.seconds * 1000);
         out << line;
     }
@@ -87,7 +87,8 @@ void print_replay(std::ostream& out, const Replay& replay) {
         out << line;
     }
     if (replay.geometry_only) out << "geometry only (no --deform): nothing moved\n";
-    if (replay.start_bisections > 0) out << "--h-start: " << replay.start_bisections << " bisections before the first step\n";
+    if (replay.start_bisections > 0)
+        out << "--h-start: " << replay.start_bisections << " bisections before the first step\n";
     out << "elements " << replay.elements_before << " -> " << replay.elements_after << ", vertices "
         << replay.vertices_before << " -> " << replay.vertices_after;
     if (replay.undone > 0) out << " (" << replay.undone << " steps undone)";

@@ -288,7 +288,7 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
             auto forces = m_simulation->forces_at(vertices);
             if (!forces) return forces.refusal().prefixed("needle: ");
             needle_force.setZero();
-            bool changed = false;
+            std::vector<std::size_t> changed;  // nodes whose grip changed: held anew
             for (std::size_t i = 0; i < nodes.size(); ++i) {
                 NeedleNode& node = nodes[i];
                 const auto& f = (*forces)[i];
@@ -306,7 +306,7 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
                         node.grip = Grip::slip;
                         node.sense = axial > 0 ? 1 : -1;
                         ++report.loosened;
-                        changed = true;
+                        changed.push_back(i);
                     }
                 } else {
                     // kinetic friction acts while the needle slides past the node in its sense;
@@ -319,13 +319,13 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
                         node.grip = Grip::stick;
                         node.sense = 0;
                         ++report.gripped;
-                        changed = true;
+                        changed.push_back(i);
                     }
                 }
             }
-            if (!changed) break;
-            for (const NeedleNode& node : nodes)
-                if (auto held = hold(node, needle); !held) return held.refusal().prefixed("needle: ");
+            if (changed.empty()) break;
+            for (const std::size_t i : changed)
+                if (auto held = hold(nodes[i], needle); !held) return held.refusal().prefixed("needle: ");
             for (std::size_t i = 0; i < nodes.size(); ++i) along_before[i] = nodes[i].along;
         }
     }

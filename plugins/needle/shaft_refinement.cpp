@@ -19,11 +19,7 @@ std::optional<Point> in_reference(const Mesh& mesh, const SpatialIndex& deformed
     const Location at = deformed.locate(x, hint);
     if (!at.found()) return std::nullopt;
     hint = at.element;
-    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-    const Simplex element = mesh.simplex(at.element);
-    const auto vertices = element.vertices();
-    for (std::size_t j = 0; j < vertices.size(); ++j) reference += at.barycentric[j] * vec(mesh.reference(vertices[j]));
-    return point(reference);
+    return reference_of(mesh, at);
 }
 
 }  // namespace
@@ -62,7 +58,8 @@ Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, cons
     const bool planar = mesh.topological_dimension() == 2;
     const double limit = bisection_edge_limit(mesh, h);
     for (std::size_t k = 0; k <= pieces; ++k) {
-        const double t = pieces == 0 ? 1.0 : first + (last - first) * static_cast<double>(k) / static_cast<double>(pieces);
+        const double t =
+            pieces == 0 ? 1.0 : first + (last - first) * static_cast<double>(k) / static_cast<double>(pieces);
         const Point x = t >= 1 ? to : point(a + t * path);
         const std::optional<Point> at = in_reference(mesh, deformed, x, hint);
         if (!at) continue;

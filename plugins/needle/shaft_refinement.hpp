@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 
 #include "sxk/locate.hpp"
 #include "sxk/ops/tet_bisection.hpp"
@@ -17,6 +18,14 @@ namespace sxk::needle {
 // dimension: a uniform grid of size h is then refined no further.
 inline double bisection_edge_limit(const Mesh& mesh, double h) {
     return mesh.topological_dimension() == 2 ? h * 1.4142135623730951 : h * 1.7320508075688772;
+}
+
+// The reference position of a point located in the deformed positions (the same barycentric
+// coordinates in the element's reference corners): where the tissue at a deformed point rests.
+inline Point reference_of(const Mesh& mesh, const Location& at) {
+    const Simplex element = mesh.simplex(at.element);
+    const auto corners = element.vertices();
+    return mesh.interpolated_positions(corners, std::span<const double>(at.barycentric.data(), corners.size())).first;
 }
 
 struct Refinement {

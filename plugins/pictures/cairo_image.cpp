@@ -28,8 +28,9 @@ Image image_of(cairo_surface_t* surface) {
                         data + static_cast<std::size_t>(row) * static_cast<std::size_t>(stride) +
                             4 * static_cast<std::size_t>(column),
                         4);
-            std::uint8_t* out = image.rgb.data() + 3 * (static_cast<std::size_t>(row) * static_cast<std::size_t>(width) +
-                                                        static_cast<std::size_t>(column));
+            const std::size_t pixel =
+                static_cast<std::size_t>(row) * static_cast<std::size_t>(width) + static_cast<std::size_t>(column);
+            std::uint8_t* out = image.rgb.data() + 3 * pixel;
             out[0] = static_cast<std::uint8_t>(word >> 16);
             out[1] = static_cast<std::uint8_t>(word >> 8);
             out[2] = static_cast<std::uint8_t>(word);

@@ -18,8 +18,9 @@ struct NeedleFixture {
     fs::path slab = folder / "slab.mesh";
     fs::path out = folder / "out.mesh";
     NeedleFixture() {
-        EXPECT_EQ(sxk({"generate", slab.string(), "--shape", "square", "--cells", "8", "--spacing", "0.0125"}).exit_code,
-                  0);
+        const ProcessResult made =
+            sxk({"generate", slab.string(), "--shape", "square", "--cells", "8", "--spacing", "0.0125"});
+        EXPECT_EQ(made.exit_code, 0);
     }
     ProcessResult insert(const std::string& path, std::vector<std::string> options = {}) {
         std::vector<std::string> args{"needle", slab.string(), path, out.string()};

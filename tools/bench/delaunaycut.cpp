@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "figure_line.hpp"
 #include "percentile.hpp"
 #include "planar_cut.hpp"
 #include "surface_cut.hpp"
@@ -52,9 +53,7 @@ constexpr int runs = 5;
 
 void line(const std::string& name, const char* unit, double ours, double peer, const std::string& peer_name,
           const char* better) {
-    std::printf("{\"name\": \"%s\", \"unit\": \"%s\", \"ours\": %.6g, \"peer\": %.6g, \"peer_name\": \"%s\", "
-                "\"ratio\": %.4g, \"better\": \"%s\"}\n",
-                name.c_str(), unit, ours, peer, peer_name.c_str(), peer != 0 ? ours / peer : 0.0, better);
+    print_figure(name, unit, ours, peer, peer_name, better);
 }
 
 Mesh grid(int cells) { return sxk::make_triangle_grid({cells, cells}).value(); }

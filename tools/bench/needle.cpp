@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "figure_line.hpp"
 #include "needle.hpp"
 #include "percentile.hpp"
 #include "simulation.hpp"
@@ -38,13 +39,6 @@ struct Run {
     std::vector<double> latency;  // per update, seconds, in order
     std::size_t elements = 0, vertices = 0;
 };
-
-void print(const char* name, const char* unit, double ours, double peer, const char* peer_name, const char* better) {
-    std::printf("{\"name\":\"%s\",\"unit\":\"%s\",\"ours\":%.6g,\"peer\":%.6g,\"peer_name\":\"%s\",\"ratio\":%.4g,"
-                "\"better\":\"%s\"}\n",
-                name, unit, ours, peer, peer_name, peer != 0 ? ours / peer : 0.0, better);
-    std::fflush(stdout);
-}
 
 // One automated insertion; h_start and h_ref as fractions of the 0.1 m slab (h_k = 0.1 / 2^k).
 Run insert(int k_start, int k_ref, double speed) {
@@ -109,20 +103,21 @@ int main(int argc, char** argv) {
     const ThesisRow h7[] = {{3.00, 2.46, 243, 98.78, 12.67, 57},  {1.00, 2.80, 401, 143.21, 10.88, 82},
                             {0.30, 3.15, 561, 178.10, 10.03, 66}, {0.10, 3.48, 1000, 287.36, 6.63, 67},
                             {0.03, 6.34, 2966, 467.82, 4.18, 53}, {0.01, 15.68, 8505, 542.41, 3.15, 48}};
-    std::fprintf(stderr, "h_ref  speed  | ours: CPU s  updates      Hz  CG mean  max  tris | thesis: s  updates   Hz   CG "
-                         "mean  max\n");
+    std::fprintf(stderr, "h_ref  speed  | ours: CPU s  updates      Hz  CG mean  max  tris | "
+                         "thesis: s  updates   Hz   CG mean  max\n");
     const std::pair<int, std::span<const ThesisRow>> tables[] = {{6, h6}, {7, h7}};
     for (const auto& [k_ref, table] : tables) {
         for (const ThesisRow& row : table) {
             if (quick && row.speed != 3.0 && row.speed != 0.3 && row.speed != 0.03) continue;
             const Run run = insert(3, k_ref, row.speed);
             const double hz = double(run.updates) / run.seconds;
-            std::fprintf(stderr, "h%d  %5.2f  |  %9.3f  %7zu  %6.0f  %7.2f  %3zu  %5zu | %9.2f  %7d  %4.0f  %7.2f  %3d\n",
+            std::fprintf(stderr,
+                         "h%d  %5.2f  |  %9.3f  %7zu  %6.0f  %7.2f  %3zu  %5zu | %9.2f  %7d  %4.0f  %7.2f  %3d\n",
                          k_ref, row.speed, run.seconds, run.updates, hz, run.iterations_mean, run.iterations_max,
                          run.elements, row.seconds, row.rearrangements, row.hz, row.cg_mean, row.cg_max);
             char name[128];
             std::snprintf(name, sizeof name, "needle update rate h3/h%d at %.2f h_ref per update", k_ref, row.speed);
-            print(name, "Hz", hz, row.hz, "thesis Table 6.5 (Pentium III 1 GHz)", "higher");
+            print_figure(name, "Hz", hz, row.hz, "thesis Table 6.5 (Pentium III 1 GHz)", "higher");
         }
     }
     // latency at the start against the end of a long insertion (0.1 h_ref per update, h3/h6): the
@@ -133,12 +128,13 @@ int main(int argc, char** argv) {
         const std::vector<double> first(run.latency.begin(), run.latency.begin() + fifth);
         const std::vector<double> last(run.latency.end() - fifth, run.latency.end());
         const double median_first = percentile(first, 0.5), median_last = percentile(last, 0.5);
-        std::fprintf(stderr, "latency h3/h6 0.1 h_ref/update: first fifth median %.3f ms p99 %.3f ms, last fifth median "
-                             "%.3f ms p99 %.3f ms\n",
-                     1e3 * median_first, 1e3 * percentile(first, 0.99), 1e3 * median_last, 1e3 * percentile(last, 0.99));
-        print("needle step latency median, end of insertion vs start (h3/h6)", "ms", 1e3 * median_last,
+        std::fprintf(stderr, "latency h3/h6 0.1 h_ref/update: first fifth median %.3f ms p99 %.3f ms, "
+                             "last fifth median %.3f ms p99 %.3f ms\n",
+                     1e3 * median_first, 1e3 * percentile(first, 0.99), 1e3 * median_last,
+                     1e3 * percentile(last, 0.99));
+        print_figure("needle step latency median, end of insertion vs start (h3/h6)", "ms", 1e3 * median_last,
               1e3 * median_first, "ourselves at the start", "lower");
-        print("needle step latency p99, end of insertion vs start (h3/h6)", "ms", 1e3 * percentile(last, 0.99),
+        print_figure("needle step latency p99, end of insertion vs start (h3/h6)", "ms", 1e3 * percentile(last, 0.99),
               1e3 * percentile(first, 0.99), "ourselves at the start", "lower");
     }
     // a coarse against a fine start mesh, the same refinement around the needle
@@ -148,10 +144,12 @@ int main(int argc, char** argv) {
                              "start h5 median %.3f ms p99 %.3f ms (%zu triangles)\n",
                      1e3 * percentile(coarse.latency, 0.5), 1e3 * percentile(coarse.latency, 0.99), coarse.elements,
                      1e3 * percentile(fine.latency, 0.5), 1e3 * percentile(fine.latency, 0.99), fine.elements);
-        print("needle step latency median, start mesh h5 vs h3 (h_ref h6)", "ms", 1e3 * percentile(fine.latency, 0.5),
-              1e3 * percentile(coarse.latency, 0.5), "ourselves on the h3 start mesh", "lower");
-        print("needle step latency p99, start mesh h5 vs h3 (h_ref h6)", "ms", 1e3 * percentile(fine.latency, 0.99),
-              1e3 * percentile(coarse.latency, 0.99), "ourselves on the h3 start mesh", "lower");
+        print_figure("needle step latency median, start mesh h5 vs h3 (h_ref h6)", "ms",
+                     1e3 * percentile(fine.latency, 0.5), 1e3 * percentile(coarse.latency, 0.5),
+                     "ourselves on the h3 start mesh", "lower");
+        print_figure("needle step latency p99, start mesh h5 vs h3 (h_ref h6)", "ms",
+                     1e3 * percentile(fine.latency, 0.99), 1e3 * percentile(coarse.latency, 0.99),
+                     "ourselves on the h3 start mesh", "lower");
     }
     return 0;
 }

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "elastic_body.hpp"
+#include "figure_line.hpp"
 #include "friction.hpp"
 #include "needle.hpp"
 #include "shaft_refinement.hpp"
@@ -49,10 +50,7 @@ using elasticity::ElasticBody;
 double h(int k) { return 0.1 / double(1 << k); }
 
 void line(const std::string& name, const char* unit, double ours, double thesis, const char* better) {
-    std::printf("{\"name\":\"%s\",\"unit\":\"%s\",\"ours\":%.6g,\"peer\":%.6g,\"peer_name\":\"thesis\",\"ratio\":%.4g,"
-                "\"better\":\"%s\"}\n",
-                name.c_str(), unit, ours, thesis, thesis != 0 ? ours / thesis : 0.0, better);
-    std::fflush(stdout);
+    print_figure(name, unit, ours, thesis, "thesis", better);
 }
 
 Mesh slab(int k_start) {
@@ -164,15 +162,17 @@ void tables62_63() {
     const Solution exact = solve_static(7, 7, 1e-8);
     // thesis Tables 6.2 and 6.3, by (h_start, h_ref); -1: not in the table
     const std::map<std::pair<int, int>, std::array<double, 3>> thesis{
-        {{1, 3}, {22, 0.34, 1.01}}, {{1, 4}, {34, 0.33, 0.88}}, {{1, 5}, {45, 0.33, 0.88}}, {{1, 6}, {62, 0.30, 0.87}},
-        {{1, 7}, {84, 0.28, 0.87}}, {{2, 3}, {27, 0.26, 0.91}}, {{2, 4}, {36, 0.24, 0.68}}, {{2, 5}, {46, 0.24, 0.61}},
-        {{2, 6}, {64, 0.21, 0.54}}, {{2, 7}, {84, 0.20, 0.53}}, {{3, 3}, {46, 0.15, 0.66}}, {{3, 4}, {49, 0.13, 0.54}},
-        {{3, 5}, {58, 0.13, 0.51}}, {{3, 6}, {73, 0.10, 0.29}}, {{3, 7}, {93, 0.08, 0.27}}, {{4, 4}, {81, 0.09, 0.45}},
-        {{4, 5}, {86, 0.08, 0.43}}, {{4, 6}, {96, 0.04, 0.19}}, {{4, 7}, {115, 0.03, 0.14}}, {{5, 5}, {204, 0.07, 0.41}},
-        {{5, 6}, {208, 0.03, 0.17}}, {{5, 7}, {194, 0.00, 0.06}}, {{6, 6}, {278, 0.02, 0.16}}, {{6, 7}, {285, 0.00, 0.03}}};
-    std::fprintf(stderr, "\nTables 6.2 and 6.3: the static load, eps = 0.01; CG iterations and the error [mm] against "
-                         "the uniform h7 mesh (eps = 1e-8)\n  start ref | triangles  CG  mean   max  | thesis CG  mean   "
-                         "max\n");
+        {{1, 3}, {22, 0.34, 1.01}}, {{1, 4}, {34, 0.33, 0.88}}, {{1, 5}, {45, 0.33, 0.88}},
+        {{1, 6}, {62, 0.30, 0.87}}, {{1, 7}, {84, 0.28, 0.87}}, {{2, 3}, {27, 0.26, 0.91}},
+        {{2, 4}, {36, 0.24, 0.68}}, {{2, 5}, {46, 0.24, 0.61}}, {{2, 6}, {64, 0.21, 0.54}},
+        {{2, 7}, {84, 0.20, 0.53}}, {{3, 3}, {46, 0.15, 0.66}}, {{3, 4}, {49, 0.13, 0.54}},
+        {{3, 5}, {58, 0.13, 0.51}}, {{3, 6}, {73, 0.10, 0.29}}, {{3, 7}, {93, 0.08, 0.27}},
+        {{4, 4}, {81, 0.09, 0.45}}, {{4, 5}, {86, 0.08, 0.43}}, {{4, 6}, {96, 0.04, 0.19}},
+        {{4, 7}, {115, 0.03, 0.14}}, {{5, 5}, {204, 0.07, 0.41}}, {{5, 6}, {208, 0.03, 0.17}},
+        {{5, 7}, {194, 0.00, 0.06}}, {{6, 6}, {278, 0.02, 0.16}}, {{6, 7}, {285, 0.00, 0.03}}};
+    std::fprintf(stderr, "\nTables 6.2 and 6.3: the static load, eps = 0.01; CG iterations and the error [mm] "
+                         "against the uniform h7 mesh (eps = 1e-8)\n"
+                         "  start ref | triangles  CG  mean   max  | thesis CG  mean   max\n");
     for (const auto& [key, row] : thesis) {
         const auto [k_start, k_ref] = key;
         const Solution s = solve_static(k_start, k_ref, 0.01);
@@ -238,11 +238,7 @@ Inserted insert(int k_start, int k_ref, double speed, const std::vector<std::str
     // where the tip is in the reference: its deformed position located, mapped back
     const SpatialIndex deformed(mesh, Positions::deformed);
     const Location at = deformed.locate(to);
-    if (at.found()) {
-        const auto corners = mesh.simplex(at.element).vertices();
-        for (std::size_t j = 0; j < corners.size(); ++j)
-            for (int k = 0; k < 3; ++k) result.tip_reference[k] += at.barycentric[j] * mesh.reference(corners[j])[k];
-    }
+    if (at.found()) result.tip_reference = needle::reference_of(mesh, at);
     return result;
 }
 

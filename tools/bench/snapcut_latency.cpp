@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "figure_line.hpp"
 #include "percentile.hpp"
 #include "degeneracy_plugin.hpp"
 #include "snap_cut.hpp"
@@ -125,10 +126,7 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
 }
 
 void line(const std::string& name, const char* unit, double ours, double peer, const std::string& peer_name) {
-    std::printf("{\"name\":\"%s\",\"unit\":\"%s\",\"ours\":%.6g,\"peer\":%.6g,\"peer_name\":\"%s\",\"ratio\":%.4g,"
-                "\"better\":\"lower\"}\n",
-                name.c_str(), unit, ours, peer, peer_name.c_str(), peer != 0 ? ours / peer : 0.0);
-    std::fflush(stdout);
+    print_figure(name, unit, ours, peer, peer_name, "lower");
 }
 
 }  // namespace

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "degeneracy_plugin.hpp"
+#include "figure_line.hpp"
 #include "simulation.hpp"
 #include "snap_cut.hpp"
 #include "sxk/components.hpp"
@@ -47,10 +48,7 @@ using sxk::Point;
 using sxk::snapcut::Scalpel;
 
 void line(const std::string& name, const char* unit, double ours, double thesis, const char* better) {
-    std::printf("{\"name\":\"%s\",\"unit\":\"%s\",\"ours\":%.6g,\"peer\":%.6g,\"peer_name\":\"thesis\",\"ratio\":%.4g,"
-                "\"better\":\"%s\"}\n",
-                name.c_str(), unit, ours, thesis, thesis != 0 ? ours / thesis : 0.0, better);
-    std::fflush(stdout);
+    print_figure(name, unit, ours, thesis, "thesis", better);
 }
 
 Point unit(Point v) {
