@@ -61,7 +61,7 @@ Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& o
     b.setFromTriplets(basis.begin(), basis.end());
     const Eigen::SparseMatrix<double> k = assemble_stiffness(body);
     const Eigen::SparseMatrix<double> reduced = Eigen::SparseMatrix<double>(b.transpose() * k) * b;
-    Eigen::VectorXd& u = body.displacements();
+    auto u = body.displacements();
     Eigen::VectorXd ku = k * u;
     SolveReport report;
     report.threshold = detail::stop_threshold(body, options, ku);

@@ -26,9 +26,13 @@ namespace detail {
 double stop_threshold(const ElasticBody& body, const SolveOptions& options,
                       const Eigen::VectorXd& ku) {
     const double external = body.forces().norm();
+    const double reaction = options.stop == StopCriterion::external_force ? 0 : reaction_norm(body, ku);
+    return threshold_of(body, options, external, reaction);
+}
+
+double threshold_of(const ElasticBody& body, const SolveOptions& options, double external, double reaction) {
     if (options.stop == StopCriterion::external_force)
         return options.tolerance * external;
-    const double reaction = reaction_norm(body, ku);
     const double n = static_cast<double>(std::max<std::size_t>(body.dof_count(), 1));
     // the force scale E * area: d H for a slab of thickness d (eq. 6.9 as printed for 2D), H^2 in
     // space (the thesis' suggestion for 3D)
@@ -74,7 +78,7 @@ void LinearRelaxation::residual() {
 
 bool LinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
-    Eigen::VectorXd& u = m_body->displacements();
+    auto u = m_body->displacements();
     for (std::size_t i = 0; i < iterations && may_continue(); ++i) {
         m_body->multiply(m_d, m_q);
         ++m_report.evaluations;

@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include "element_kernels.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk::elasticity {
 namespace {
@@ -77,15 +78,21 @@ Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material, Body
 
 void ElasticBody::resize_vertices(std::size_t n) {
     const auto size = static_cast<Eigen::Index>(3 * n);
-    const Eigen::Index old = m_u.size();
+    const auto old = static_cast<Eigen::Index>(dof_count());
     m_freedom.resize(n, Freedom::free);
     m_line.resize(n, Vector3{0, 0, 0});
     m_known.resize(n, 0);
-    m_u.conservativeResize(size);
-    m_force.conservativeResize(size);
-    if (size > old) {
-        m_u.tail(size - old).setZero();
-        m_force.tail(size - old).setZero();
+    if (size < old) {  // vertices dropped (a rollback): their entries are zero again
+        m_u.segment(size, old - size).setZero();
+        m_force.segment(size, old - size).setZero();
+    }
+    if (size > m_u.size()) {  // doubling: a split's vertex costs O(1) amortised, not a copy of all
+        const Eigen::Index capacity = std::max(size, 2 * m_u.size());
+        const Eigen::Index was = m_u.size();
+        m_u.conservativeResize(capacity);
+        m_force.conservativeResize(capacity);
+        m_u.tail(capacity - was).setZero();
+        m_force.tail(capacity - was).setZero();
     }
 }
 
@@ -181,7 +188,7 @@ void ElasticBody::clear_forces() {
 }
 
 template <int D, class Kernel>
-bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out,
+bool ElasticBody::gather(const Eigen::Ref<const Eigen::VectorXd>& d, Eigen::VectorXd& out,
                          const Kernel& kernel) const {
     const std::size_t count = m_elements.size();
     constexpr std::size_t corner_count = D + 1;  // known to the compiler: the gather unrolls
@@ -219,7 +226,7 @@ bool ElasticBody::gather(const Eigen::VectorXd& d, Eigen::VectorXd& out,
     return ok.load();
 }
 
-void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const {
+void ElasticBody::multiply(const Eigen::Ref<const Eigen::VectorXd>& d, Eigen::VectorXd& out) const {
     // the linear kernels do not need the element energy (1/2 d^T K_t d)
     if (m_dimension == 3)
         gather<3>(d, out, [](const detail::RestShape& rest, const double* c, double* f, double&) {
@@ -233,7 +240,7 @@ void ElasticBody::multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const
         });
 }
 
-bool ElasticBody::elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+bool ElasticBody::elastic_forces(const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& out) const {
     if (m_options.model == Model::linear) {
         multiply(u, out);
         return true;
@@ -243,7 +250,40 @@ bool ElasticBody::elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out)
     return gather<2>(u, out, detail::neo_hookean_forces<2>);
 }
 
-double ElasticBody::strain_energy(const Eigen::VectorXd& u) const {
+bool ElasticBody::elastic_forces_at(std::span<const VertexId> vertices, std::vector<Vector3>& out) const {
+    out.assign(vertices.size(), Vector3{0, 0, 0});
+    const Mesh& mesh = *m_mesh;
+    const std::size_t corner_count = static_cast<std::size_t>(m_dimension + 1);
+    std::vector<ElementId> around;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const VertexId v = vertices[i];
+        if (v >= vertex_count() || v >= mesh.vertex_count() || mesh.vertex_element(v) == invalid_id) continue;
+        around.clear();
+        collect_star(mesh, v, mesh.vertex_element(v), around);
+        for (const ElementId t : around) {
+            double corners[12] = {}, forces[12] = {}, energy = 0;
+            std::size_t mine = corner_count;
+            for (std::size_t j = 0; j < corner_count; ++j) {
+                const VertexId w = m_corners[t][j];
+                if (w == v) mine = j;
+                for (std::size_t k = 0; k < 3; ++k) corners[3 * j + k] = m_u[static_cast<Eigen::Index>(3 * w + k)];
+            }
+            if (m_options.model == Model::linear) {
+                if (m_dimension == 3)
+                    detail::linear_element_forces<3>(m_rest[t], corners, forces);
+                else
+                    detail::linear_element_forces<2>(m_rest[t], corners, forces);
+            } else if (!(m_dimension == 3 ? detail::neo_hookean_forces<3>(m_rest[t], corners, forces, energy)
+                                          : detail::neo_hookean_forces<2>(m_rest[t], corners, forces, energy))) {
+                return false;
+            }
+            for (std::size_t k = 0; k < 3 && mine < corner_count; ++k) out[i][k] += forces[3 * mine + k];
+        }
+    }
+    return true;
+}
+
+double ElasticBody::strain_energy(const Eigen::Ref<const Eigen::VectorXd>& u) const {
     Eigen::VectorXd forces;
     if (m_options.model == Model::linear) {
         multiply(u, forces);
@@ -277,7 +317,7 @@ void ElasticBody::project(Eigen::VectorXd& v) const {
 }
 
 double ElasticBody::energy() const {
-    return strain_energy(m_u) - m_force.dot(m_u);
+    return strain_energy(displacements()) - forces().dot(displacements());
 }
 
 Eigen::Matrix<double, 12, 12> ElasticBody::element_stiffness(ElementId t) const {

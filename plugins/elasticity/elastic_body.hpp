@@ -126,7 +126,12 @@ public:
     // degeneracies before relaxing. multiply, project and energy read the state of the last
     // refresh.
     Outcome<Done> refresh();
-    bool needs_refresh() const { return m_stale; }
+    bool needs_refresh() const { return m_stale || m_stars_stale; }
+    // The part of refresh() a local solve needs (local_relaxation.hpp): the rest shapes and
+    // corners of the edited elements and the new vertices' state, in time proportional to the
+    // edit; the element list and the stars that multiply reads wait for the next refresh().
+    // largest_young() only grows here. Refuses as refresh does.
+    Outcome<Done> refresh_shapes();
 
     void init(const Mesh& mesh) override;
     void element_removed(const Mesh& mesh, ElementId element, const Simplex& was) override;
@@ -179,10 +184,14 @@ public:
 
     Vector3 displacement(VertexId v) const { return {m_u[3 * v], m_u[3 * v + 1], m_u[3 * v + 2]}; }
     // The unknowns, 3 per vertex: the solvers start from them (a warm start) and leave the
-    // solution there. Writing them directly bypasses the constraints until the next solve.
-    Eigen::VectorXd& displacements() { return m_u; }
-    const Eigen::VectorXd& displacements() const { return m_u; }
-    const Eigen::VectorXd& forces() const { return m_force; }
+    // solution there. Writing them directly bypasses the constraints until the next solve. A view
+    // of dof_count() entries into storage that grows by doubling, so that an edit adding a vertex
+    // does not copy the body's arrays (a step of a tool on a large mesh would cost its size).
+    using Values = Eigen::VectorBlock<Eigen::VectorXd>;
+    using ConstValues = Eigen::VectorBlock<const Eigen::VectorXd>;
+    Values displacements() { return m_u.head(static_cast<Eigen::Index>(dof_count())); }
+    ConstValues displacements() const { return m_u.head(static_cast<Eigen::Index>(dof_count())); }
+    ConstValues forces() const { return m_force.head(static_cast<Eigen::Index>(dof_count())); }
 
     // out = K d, K the stiffness matrix of the linear model (of a neo-Hookean body: its tangent
     // at rest), i.e. the linear elastic forces of displacements d with their sign reversed
@@ -190,14 +199,14 @@ public:
     // entries (the vertices of an edit not refreshed yet get 0). Elements in parallel (TBB), the
     // sums per vertex in a fixed order: the result does not depend on the number of threads.
     // One call at a time per body (it writes the body's scratch buffers; so do the two below).
-    void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
+    void multiply(const Eigen::Ref<const Eigen::VectorXd>& d, Eigen::VectorXd& out) const;
     // out = the gradient of the strain energy at displacements u, the elastic forces with their
     // sign reversed, in the body's model (linear: K u). False, out unspecified, when u inverts or
     // flattens an element (neo-Hookean only: its energy is infinite there).
-    bool elastic_forces(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
+    bool elastic_forces(const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& out) const;
     // The strain energy of displacements u in the body's model (linear: 1/2 u^T K u); infinity
     // when u inverts or flattens an element of a neo-Hookean body.
-    double strain_energy(const Eigen::VectorXd& u) const;
+    double strain_energy(const Eigen::Ref<const Eigen::VectorXd>& u) const;
     // Projects v onto the motions the constraints allow (P_W of §6.6; a planar body's z is 0
     // everywhere), in place.
     void project(Eigen::VectorXd& v) const;
@@ -221,6 +230,19 @@ public:
     Eigen::Matrix<double, 12, 12> element_stiffness(ElementId t) const;
     // The live elements, in increasing id order (as of the last refresh).
     std::span<const ElementId> elements() const { return m_elements; }
+    // Element t's rest shape and the vertices it was computed for, in that order (invalid_id
+    // beyond the dimension), as of the last refresh_shapes: what a local solve multiplies with.
+    const detail::RestShape& rest_shape(ElementId t) const { return m_rest[t]; }
+    const std::array<VertexId, 4>& corners(ElementId t) const { return m_corners[t]; }
+
+    // The elastic forces with their sign reversed (as elastic_forces) at `vertices` only, summed
+    // over their stars: out gets 3 per vertex (0 for a vertex in no element). In time proportional
+    // to the stars, not to the body; reads the state of the last refresh_shapes. False, out
+    // unspecified, when the displacements invert an element of a neo-Hookean body there.
+    bool elastic_forces_at(std::span<const VertexId> vertices, std::vector<Vector3>& out) const;
+    // write_deformed for `vertices` only (the others keep their deformed positions): a local
+    // solve's region. Refuses as write_deformed, writing nothing.
+    Outcome<Done> write_deformed(Mesh& mesh, std::span<const VertexId> vertices) const;
 
 private:
     ElasticBody() = default;
@@ -232,12 +254,14 @@ private:
     void take_element(const Mesh& mesh, ElementId element);
     void interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added);
     void rebuild_elements_and_stars();
+    // E of a material given by its Lame parameters (in plane stress for a planar body)
+    double young_of(const Lame& lame) const;
     // Calls kernel(rest shape, corner displacements, out, energy) for every element in parallel,
     // each writing 3 per corner into m_corner_forces (and its energy into m_element_energy), then
     // sums the corners per vertex into out; false when a kernel returned false. D: the body's
     // dimension.
     template <int D, class Kernel>
-    bool gather(const Eigen::VectorXd& d, Eigen::VectorXd& out, const Kernel& kernel) const;
+    bool gather(const Eigen::Ref<const Eigen::VectorXd>& d, Eigen::VectorXd& out, const Kernel& kernel) const;
 
     const Mesh* m_mesh = nullptr;
     Material m_material;
@@ -255,6 +279,7 @@ private:
     std::vector<std::uint32_t> m_star_begin, m_star;
     std::vector<Freedom> m_freedom;
     std::vector<Vector3> m_line;  // the unit direction of a line constraint
+    // displacements and loads, 3 per vertex: dof_count() in use, zero beyond (the capacity)
     Eigen::VectorXd m_u, m_force;
     mutable std::vector<double>
         m_corner_forces;  // 12 per entry of m_elements (a triangle's: 9 used)
@@ -262,6 +287,7 @@ private:
 
     // what the events recorded for the next refresh
     bool m_stale = false;
+    bool m_stars_stale = false;  // refresh_shapes ran since the last rebuild_elements_and_stars
     bool m_rebuild_all = false;      // init: every rest shape again
     std::vector<ElementId> m_dirty;  // rest shapes to compute
     std::vector<char> m_known;       // per vertex: its displacement is set

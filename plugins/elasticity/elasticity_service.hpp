@@ -37,6 +37,8 @@ struct RelaxReport {
     double residual = 0, threshold = 0;
     bool shown = false;  // the deformed positions were written (not when they would invert an element)
     double seconds = 0;
+    // relax_near: the vertices solved for, and the elements around them (0, 0: the whole body)
+    std::size_t region_vertices = 0, region_elements = 0;
 };
 
 // A body on a mesh, attached to it (it follows the mesh's edits, thesis §7.4), with the
@@ -51,6 +53,14 @@ public:
     // when the body cannot be brought in step with the mesh (an element flat at rest: remove
     // degeneracies first).
     virtual Outcome<RelaxReport> relax(std::size_t iterations) = 0;
+    // The same confined to the vertices around `seeds` (where a tool changed the constraints): the
+    // seeds and their neighbours ring by ring up to `max_vertices` vertices, every other vertex
+    // held where it is (LocalRelaxation, local_relaxation.hpp: why, and what it gives up), and
+    // only the region's deformed positions written. A step then costs the same on a coarse and
+    // on a fine mesh; the far field settles at the next relax. A neo-Hookean body relaxes whole
+    // (region_vertices 0 in the report).
+    virtual Outcome<RelaxReport> relax_near(std::span<const VertexId> seeds, std::size_t iterations,
+                                            std::size_t max_vertices) = 0;
     // A piece that came loose (thesis §3.3: "all unfixed components are fixed on an arbitrary
     // face"): unless a vertex of it is held already, the corners of its lowest-id boundary face
     // are fixed where they are. True when it fixed them.
@@ -91,7 +101,7 @@ public:
 
 struct ElasticityService {
     static constexpr std::string_view service_id = "sxk.elasticity";
-    static constexpr std::uint32_t service_version = 2;  // 2: vertices a tool holds
+    static constexpr std::uint32_t service_version = 3;  // 2: vertices a tool holds; 3: relax_near
 
     // A simulation of `mesh` (which must stay where it is while the simulation lives) set up from
     // `sxk deform`'s options; refuses bad options and empty selections with `sxk deform`'s

@@ -136,6 +136,27 @@ void ElasticBody::interpolate_new_vertex(const Mesh& mesh, VertexId v, const Sim
 }
 
 Outcome<Done> ElasticBody::refresh() {
+    if (auto shapes = refresh_shapes(); !shapes)
+        return shapes;
+    if (m_stars_stale) {
+        rebuild_elements_and_stars();
+        // E of eq. 6.9 afresh (refresh_shapes only raises it): the stiffest live element's; the
+        // body's without elements
+        m_largest_young = m_elements.empty() ? m_material.young : 0;
+        for (const ElementId t : m_elements)
+            m_largest_young = std::max(m_largest_young, young_of(m_rest[t].lame));
+        m_stars_stale = false;
+    }
+    return Done{};
+}
+
+double ElasticBody::young_of(const Lame& l) const {
+    // 2 mu (1 + nu) = E; in plane stress nu = lambda / (lambda + 2 mu)
+    const double nu = m_dimension == 3 ? l.lambda / (2 * (l.lambda + l.mu)) : l.lambda / (l.lambda + 2 * l.mu);
+    return 2 * l.mu * (1 + nu);
+}
+
+Outcome<Done> ElasticBody::refresh_shapes() {
     if (!m_stale)
         return Done{};
     const Mesh& mesh = *m_mesh;
@@ -144,6 +165,7 @@ Outcome<Done> ElasticBody::refresh() {
     m_rest.resize(mesh.element_capacity());
     m_corners.resize(mesh.element_capacity());
     if (m_rebuild_all) {
+        m_largest_young = 0;  // the materials may have changed: taken anew below
         m_dirty.clear();
         for (const ElementId t : sxk::elements(mesh))
             m_dirty.push_back(t);
@@ -185,17 +207,10 @@ Outcome<Done> ElasticBody::refresh() {
         m_corners[t].fill(invalid_id);
         for (int j = 0; j < s.count(); ++j)
             m_corners[t][static_cast<std::size_t>(j)] = s.vertex(j);
+        m_largest_young = std::max(m_largest_young, young_of(m_rest[t].lame));
     }
-    rebuild_elements_and_stars();
-    // E of eq. 6.9: the stiffest element's (2 mu (1 + nu) = E; in plane stress nu = lambda /
-    // (lambda + 2 mu)); the body's without elements
-    m_largest_young = m_elements.empty() ? m_material.young : 0;
-    for (const ElementId t : m_elements) {
-        const Lame& l = m_rest[t].lame;
-        const double nu = m_dimension == 3 ? l.lambda / (2 * (l.lambda + l.mu))
-                                           : l.lambda / (l.lambda + 2 * l.mu);
-        m_largest_young = std::max(m_largest_young, 2 * l.mu * (1 + nu));
-    }
+    // the element list and the stars wait for the next refresh(): a local solve does not read them
+    m_stars_stale = true;
     m_dirty.clear();
     m_edit_removed.clear();
     m_edit_adding = false;

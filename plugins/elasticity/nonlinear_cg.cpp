@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "solve.hpp"
 
@@ -38,11 +39,11 @@ Outcome<NonlinearRelaxation> NonlinearRelaxation::start(ElasticBody& body,
 }
 
 bool NonlinearRelaxation::residual_at(double alpha, Eigen::VectorXd& r) {
-    const Eigen::VectorXd& u = m_body->displacements();
+    const auto u = std::as_const(*m_body).displacements();
+    ++m_report.evaluations;
     if (alpha != 0)
         m_trial = u + alpha * m_d;
-    ++m_report.evaluations;
-    if (!m_body->elastic_forces(alpha != 0 ? m_trial : u, m_g))
+    if (!(alpha != 0 ? m_body->elastic_forces(m_trial, m_g) : m_body->elastic_forces(u, m_g)))
         return false;
     r = m_body->forces() - m_g;
     m_body->project(r);
@@ -93,7 +94,7 @@ double NonlinearRelaxation::line_search() {
 
 bool NonlinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
-    Eigen::VectorXd& u = m_body->displacements();
+    auto u = m_body->displacements();
     for (std::size_t i = 0; i < iterations && may_continue(); ++i) {
         if (!(m_d.dot(m_r) > 0))
             m_d = m_r;  // not a descent direction: restart along the residual

@@ -8,6 +8,7 @@
 #include "body_setup.hpp"
 #include "command_line.hpp"
 #include "elasticity_service.hpp"
+#include "local_relaxation.hpp"
 #include "simulation.hpp"
 #include "solve.hpp"
 
@@ -58,6 +59,28 @@ public:
         return result;
     }
 
+    Outcome<RelaxReport> relax_near(std::span<const VertexId> seeds, std::size_t iterations,
+                                    std::size_t max_vertices) override {
+        if (m_built.model != Model::linear) return relax(iterations);
+        const auto start = std::chrono::steady_clock::now();
+        SolveOptions options = m_options;
+        options.max_iterations = std::min(iterations, m_options.max_iterations);
+        ElasticBody& body = *m_built.body;
+        auto local = m_local.solve(body, seeds, max_vertices, options);
+        if (!local) return local.refusal().prefixed("relax_near: ");
+        RelaxReport result;
+        result.iterations = local->solve.iterations;
+        result.converged = local->solve.converged;
+        result.residual = local->solve.residual;
+        result.threshold = local->solve.threshold;
+        result.region_vertices = local->region_vertices;
+        result.region_elements = local->elements;
+        m_total += result.iterations;
+        result.shown = body.write_deformed(m_mesh, m_local.region()).ok();
+        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+    }
+
     Outcome<bool> hold_piece(std::span<const ElementId> piece) override {
         ElasticBody& body = *m_built.body;
         if (Outcome<Done> fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("hold_piece: ");
@@ -92,7 +115,7 @@ public:
         return m_built.body->free(v);
     }
     Outcome<Done> set_tool_force(VertexId v, Vector3 force) override {
-        if (auto fresh = m_built.body->refresh(); !fresh) return fresh.refusal().prefixed("set_tool_force: ");
+        if (auto fresh = m_built.body->refresh_shapes(); !fresh) return fresh.refusal().prefixed("set_tool_force: ");
         Vector3& was = m_tool_force[v];
         const Vector3 change{force[0] - was[0], force[1] - was[1], force[2] - was[2]};
         if (auto added = m_built.body->add_force(v, change); !added) {
@@ -105,14 +128,15 @@ public:
     }
     Outcome<std::vector<VertexForces>> forces_at(std::span<const VertexId> vertices) override {
         ElasticBody& body = *m_built.body;
-        if (auto fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("forces_at: ");
-        if (!body.elastic_forces(body.displacements(), m_gradient))
+        // over the vertices' stars only: a tool asks every step
+        if (auto fresh = body.refresh_shapes(); !fresh) return fresh.refusal().prefixed("forces_at: ");
+        if (!body.elastic_forces_at(vertices, m_gradient))
             return Refusal{RefusalCode::would_invert, "forces_at: the displacements invert an element"};
         std::vector<VertexForces> forces(vertices.size());
         for (std::size_t i = 0; i < vertices.size(); ++i) {
             const VertexId v = vertices[i];
             if (v >= body.vertex_count()) continue;
-            for (int k = 0; k < 3; ++k) forces[i].elastic[k] = -m_gradient[3 * v + k];
+            for (int k = 0; k < 3; ++k) forces[i].elastic[k] = -m_gradient[i][k];
             forces[i].loaded = body.force(v);
         }
         return forces;
@@ -123,7 +147,7 @@ public:
     Outcome<Done> displacements_from_mesh() override {
         ElasticBody& body = *m_built.body;
         if (auto fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("displacements_from_mesh: ");
-        Eigen::VectorXd& u = body.displacements();
+        auto u = body.displacements();
         for (VertexId v = 0; v < body.vertex_count(); ++v) {
             if (m_mesh.vertex_element(v) == invalid_id) continue;
             const Point& reference = m_mesh.reference(v);
@@ -151,7 +175,8 @@ private:
     std::size_t m_total = 0;
     std::vector<char> m_held_by_options;  // per vertex of the mesh as built: --fix or --displace
     std::map<VertexId, Vector3> m_tool_force;
-    Eigen::VectorXd m_gradient;  // forces_at's scratch
+    std::vector<Vector3> m_gradient;  // forces_at's scratch
+    LocalRelaxation m_local;           // relax_near's, kept between calls
 };
 
 }  // namespace

@@ -167,6 +167,8 @@ Outcome<Done> prepare_solve(ElasticBody& body);
 // reactions are computed only for the criterion that uses them).
 double stop_threshold(const ElasticBody& body, const SolveOptions& options,
                       const Eigen::VectorXd& ku);
+// The same from the norms of the loads and of the reactions (a local solve's, over its region).
+double threshold_of(const ElasticBody& body, const SolveOptions& options, double external, double reaction);
 }  // namespace detail
 
 }  // namespace sxk::elasticity

@@ -90,6 +90,12 @@ struct Options {
     std::size_t rearrangements = 1;
     // CG iterations per solve, at most (a frame's budget; the body's options bound them too).
     std::size_t iterations = 100000;
+    // Solve only around the needle: its nodes and their neighbours ring by ring, up to this many
+    // vertices, the rest of the body held where it is (Simulation::relax_near): a step then costs
+    // the same on a coarse and on a fine mesh, and the far field lags behind until a solve over the
+    // whole body (docs/needle.md "Local solve"). 0: every step solves the whole body, as the
+    // thesis does.
+    std::size_t local_vertices = 0;
 };
 
 enum class Grip : std::uint8_t { stick, slip };
@@ -120,6 +126,7 @@ struct NeedleStepReport {
     std::size_t gripped = 0;       // slip -> stick
     std::size_t solves = 0;        // CG runs (1 + rearrangements that changed something)
     std::size_t iterations = 0;    // CG iterations, all solves
+    std::size_t solved_vertices = 0;  // the last solve's: the region (Options::local_vertices), else all
     bool converged = true;         // every solve reached eq. 6.9
     bool shown = true;             // the deformed positions were written (not when they invert)
     double axial_force = 0;        // the needle's force on the tissue along its axis, N
@@ -145,6 +152,11 @@ public:
     // One movement (a step): the first places the needle. Refuses a needle of zero length or with
     // non-finite coordinates.
     Outcome<NeedleStepReport> move(const Needle& needle);
+    // A step at the needle's pose that solves the whole body, at most `iterations` CG iterations:
+    // the far field catches up with the local solves of Options::local_vertices (for when the
+    // needle rests: its cost is the whole body's). Otherwise as a move to where the needle is.
+    // Refuses before the first move (not_applicable).
+    Outcome<NeedleStepReport> settle(std::size_t iterations);
     const NeedleStepReport& last_step() const { return m_last; }
     std::span<const NeedleNode> nodes() const { return m_state.nodes; }
     const std::optional<Needle>& needle() const { return m_state.needle; }
@@ -187,6 +199,7 @@ private:
     State m_state;
     std::vector<State> m_history;  // per kept step, the state before it
     bool m_resync = false;         // the body reads its displacements from the mesh first
+    std::size_t m_settle = 0;      // settle(): this step solves the whole body, at most so many iterations
     NeedleStepReport m_last;
 };
 

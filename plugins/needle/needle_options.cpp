@@ -43,6 +43,12 @@ void add_needle_options(CLI::App& app, Options& options, std::string* deform) {
     app.add_option("--iterations", options.iterations, "CG iterations per solve, at most (a frame's budget)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
         ->capture_default_str();
+    app.add_option("--local", options.local_vertices,
+                   "Solve only around the needle, at most this many vertices (its nodes and their neighbours "
+                   "ring by ring), the rest of the body held: a step costs the same on any mesh size, the far "
+                   "field lags (0: the whole body every step, as the thesis)")
+        ->check(CLI::Range(std::size_t{0}, std::size_t{100000000}))
+        ->capture_default_str();
 }
 
 }  // namespace sxk::needle

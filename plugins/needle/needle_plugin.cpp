@@ -43,6 +43,7 @@ struct CommandOptions {
     Options needle;
     bool json = false;
     std::string undo;
+    std::size_t settle = 0;
     ReadOptions reading;
 };
 
@@ -105,6 +106,10 @@ public:
         app.add_option("--plot", o.plot,
                        "Draw the forces along the needle after the replay (PNG): per needle node, and "
                        "the friction thresholds");
+        app.add_option("--settle", o.settle,
+                       "After the path, one more step at the needle's last pose that solves the whole body with at "
+                       "most this many CG iterations: with --local, the far field catches up (0: none)")
+            ->check(CLI::Range(std::size_t{0}, std::size_t{100000000}));
         add_undo_option(app, o.undo);
         app.add_flag("--json", o.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, o.reading);
@@ -191,7 +196,7 @@ public:
         std::optional<ToolFrames> frames;
         if (planar) {
             const std::array<double, 4> view = picture_view(*mesh);
-            const std::size_t steps = path.samples.size();
+            const std::size_t steps = path.samples.size() + (o.settle > 0 ? 1 : 0);
             frames = ToolFrames::drawn_by(
                 o.frames, "needle",
                 [&mesh, &session, view, steps](const std::filesystem::path& file, std::size_t index) {
@@ -221,6 +226,16 @@ public:
                 return 1;
             }
             record.steps.push_back({sample.time, sample.line, *stepped});
+            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
+        }
+        if (o.settle > 0 && (*session)->needle()) {
+            const auto settled = (*session)->settle(o.settle);
+            if (!settled) {
+                err << "sxk: needle: --settle: the step was refused (the mesh is as before it): " << settled.reason()
+                    << '\n';
+                return 1;
+            }
+            record.steps.push_back({path.samples.back().time, path.samples.back().line, *settled});
             if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
@@ -253,6 +268,7 @@ public:
             json["output"] = o.output;
             json["options"] = to_json(o.needle);
             if (o.h_start) json["options"]["h_start"] = *o.h_start;
+            json["options"]["settle"] = o.settle;
             const nlohmann::ordered_json body = to_json(record);
             for (const auto& [key, value] : body.items()) json[key] = value;
             out << json.dump(2) << '\n';

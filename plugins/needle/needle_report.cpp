@@ -18,6 +18,7 @@ nlohmann::ordered_json to_json(const Options& options) {
     json["relocate"] = options.relocate;
     json["rearrangements"] = options.rearrangements;
     json["iterations"] = options.iterations;
+    json["local_vertices"] = options.local_vertices;
     return json;
 }
 
@@ -46,6 +47,7 @@ nlohmann::ordered_json to_json(const Replay& replay) {
         s["gripped"] = r.gripped;
         s["solves"] = r.solves;
         s["iterations"] = r.iterations;
+        s["solved_vertices"] = r.solved_vertices;
         s["converged"] = r.converged;
         s["shown"] = r.shown;
         s["axial_force"] = r.axial_force;

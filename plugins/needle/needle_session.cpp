@@ -108,6 +108,16 @@ Outcome<NeedleStepReport> NeedleSession::move(const Needle& needle) {
     return m_last;
 }
 
+Outcome<NeedleStepReport> NeedleSession::settle(std::size_t iterations) {
+    if (!m_state.needle) return Refusal{RefusalCode::not_applicable, "needle: settle: the needle has not been placed"};
+    if (iterations == 0) return Refusal{RefusalCode::bad_argument, "needle: settle: iterations must be >= 1"};
+    m_settle = iterations;
+    const auto stepped = step(pose_of(*m_state.needle));
+    m_settle = 0;
+    if (!stepped) return stepped.refusal();
+    return m_last;
+}
+
 Outcome<Done> NeedleSession::apply(const ToolPose& pose, StepReport& report) {
     Needle needle;
     needle.tip = pose.position;
@@ -277,11 +287,17 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
     if (m_simulation != nullptr) {
         std::vector<VertexId> vertices(nodes.size());
         for (std::size_t i = 0; i < nodes.size(); ++i) vertices[i] = nodes[i].vertex;
-        for (std::size_t round = 0; round < m_options.rearrangements; ++round) {
-            auto relaxed = m_simulation->relax(m_options.iterations);
+        // a local solve has nothing to do before a node is held: the body is as the last step left it
+        const bool local = m_options.local_vertices > 0 && m_settle == 0;
+        const std::size_t iterations = m_settle > 0 ? m_settle : m_options.iterations;
+        for (std::size_t round = 0; round < m_options.rearrangements && !(local && nodes.empty()); ++round) {
+            auto relaxed = local ? m_simulation->relax_near(vertices, iterations, m_options.local_vertices)
+                                 : m_simulation->relax(iterations);
             if (!relaxed) return relaxed.refusal().prefixed("needle: ");
             ++report.solves;
             report.iterations += relaxed->iterations;
+            report.solved_vertices =
+                relaxed->region_vertices > 0 ? relaxed->region_vertices : mesh.vertices_in_elements();
             report.converged = report.converged && relaxed->converged;
             report.shown = relaxed->shown;
             if (nodes.empty()) break;

@@ -3,6 +3,8 @@
 // exact errors for bad paths and a needle that never meets the mesh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "run_sxk.hpp"
@@ -50,6 +52,27 @@ TEST(SxkNeedle, InsertsIntoTheThesisSlabAndReportsEachStep) {
     EXPECT_GT(json["elements_after"].get<int>(), 128);
     EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
     EXPECT_TRUE(fs::file_size(plot) > 1000);
+}
+
+TEST(SxkNeedle, LocalSolveThenSettleOnAFineSlab) {
+    NeedleFixture f;
+    ASSERT_EQ(sxk({"generate", f.slab.string(), "--shape", "square", "--cells", "32", "--spacing", "0.003125"})
+                  .exit_code,
+              0);
+    const ProcessResult run =
+        f.insert(slab_path, {"--deform", slab_body, "--local", "150", "--settle", "100000", "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["options"]["local_vertices"], 150);
+    ASSERT_EQ(json["steps"].size(), 173u);  // the path's 172 and the settling step
+    const auto& inserting = json["steps"][170];
+    EXPECT_LE(inserting["solved_vertices"].get<int>(), std::max(150, inserting["needle_nodes"].get<int>()));
+    const auto& settled = json["steps"].back();
+    EXPECT_EQ(settled["line"], json["steps"][171]["line"]);
+    EXPECT_EQ(settled["solved_vertices"], json["vertices_after"]);
+    EXPECT_TRUE(settled["converged"]);
+    EXPECT_NEAR(settled["axial_force"].get<double>(), 1.5, 0.15);
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
 }
 
 TEST(SxkNeedle, DrawsAPicturePerStepOfAPlanarMesh) {

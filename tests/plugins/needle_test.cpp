@@ -201,6 +201,50 @@ TEST(Needle, UndoingEveryStepGivesTheSlabBackBitForBit) {
     EXPECT_TRUE(run.session->nodes().empty());
 }
 
+// Options::local_vertices: every step solves at most so many vertices around the needle, the far
+// field held; the needle's force stays near the whole body's, and settle() lets the far field catch
+// up (docs/needle.md "Local solve").
+TEST(Needle, LocalSolveBoundsTheRegionAndSettleCatchesTheFarFieldUp) {
+    Options local_options;
+    local_options.local_vertices = 200;
+    const Mesh fine = *make_triangle_grid({32, 32}, {0.1 / 32, 0.1 / 32});
+    Insertion whole(fine, slab_body), local(fine, slab_body, local_options);
+    auto early = local.session->settle(100);
+    ASSERT_FALSE(early.ok());
+    EXPECT_EQ(early.refusal().code, RefusalCode::not_applicable);
+    EXPECT_EQ(early.reason(), "needle: settle: the needle has not been placed");
+    const double speed = 0.3 * 0.1 / 64;
+    for (double x = -0.01; x <= 0.05; x += speed) {
+        ASSERT_TRUE(whole.session->move(along_x(x, 0.05)).ok());
+        auto step = local.session->move(along_x(x, 0.05));
+        ASSERT_TRUE(step.ok()) << step.reason();
+        ASSERT_TRUE(local.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok()) << "x = " << x;
+        EXPECT_LE(step->solved_vertices, std::max<std::size_t>(200, local.session->nodes().size())) << "x = " << x;
+        expect_nodes_on_needle(local);
+    }
+    EXPECT_EQ(whole.session->last_step().solved_vertices, whole.mesh.vertices_in_elements());
+    const double force = whole.session->last_step().axial_force;
+    EXPECT_GT(force, 0.5);
+    EXPECT_NEAR(local.session->last_step().axial_force, force, 0.15 * force);
+    // the far field lags: settling moves vertices the local steps held
+    const std::vector<Point> before(local.mesh.deformed_positions().begin(), local.mesh.deformed_positions().end());
+    auto settled = local.session->settle(100000);
+    ASSERT_TRUE(settled.ok()) << settled.reason();
+    EXPECT_TRUE(settled->converged);
+    EXPECT_EQ(settled->solved_vertices, local.mesh.vertices_in_elements());
+    std::size_t moved = 0;
+    for (VertexId v = 0; v < local.mesh.vertex_count(); ++v) moved += local.mesh.deformed(v) != before[v] ? 1 : 0;
+    EXPECT_GT(moved, 400u);
+    EXPECT_GT(settled->iterations, 0u);
+    expect_nodes_on_needle(local);
+    // the settling step is undone as any other
+    ASSERT_TRUE(local.session->undo_step().ok());
+    for (VertexId v = 0; v < local.mesh.vertex_count(); ++v) ASSERT_EQ(local.mesh.deformed(v), before[v]);
+    ASSERT_TRUE(local.session->cancel().ok());
+    ASSERT_TRUE(local.mesh.validate().ok());
+    test::expect_same_state(local.mesh, local.before);
+}
+
 // §6.8.6: along a tilted line the intercepted nodes are off the needle; relocation moves them onto
 // it (both positions), unless that would invert an element.
 TEST(Needle, RelocationMovesInterceptedNodesOntoTheNeedle) {
@@ -364,6 +408,7 @@ TEST(Needle, RandomNeedlePathsNeverBreakTheMesh) {
         options.h_ref = (solid ? 0.1 / 16 : 0.1 / 64) * (0.5 + unit(random));
         options.relocate = unit(random) < 0.3;
         options.friction.shaft = 5 + 40 * unit(random);
+        if (unit(random) < 0.3) options.local_vertices = 20 + static_cast<std::size_t>(300 * unit(random));
         Insertion run(solid ? cube() : slab(), solid ? cube_body : slab_body, options);
         // a wandering needle: enters from the left, turns, advances and withdraws at random
         Eigen::Vector3d tip(-0.01, 0.02 + 0.06 * unit(random), solid ? 0.02 + 0.06 * unit(random) : 0.0);
@@ -377,7 +422,10 @@ TEST(Needle, RandomNeedlePathsNeverBreakTheMesh) {
             const double advance = (unit(random) < 0.8 ? 1 : -1.5) * 0.002 * unit(random);
             tip += advance * axis;
             const Eigen::Vector3d base = tip - 0.1 * axis;
-            auto step = run.session->move({{base[0], base[1], base[2]}, {tip[0], tip[1], tip[2]}});
+            // now and then the needle rests and the body settles
+            auto step = k > 0 && unit(random) < 0.02
+                            ? run.session->settle(1000)
+                            : run.session->move({{base[0], base[1], base[2]}, {tip[0], tip[1], tip[2]}});
             ASSERT_TRUE(step.ok()) << "move " << k << ": " << step.reason();
             const auto valid = run.mesh.validate({.orientation = true, .flat_is_invalid = true});
             ASSERT_TRUE(valid.ok()) << "move " << k << ": " << valid.reason();

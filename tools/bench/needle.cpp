@@ -3,14 +3,19 @@
 // latency at the start against the end of a long insertion and on a coarse against a fine start
 // mesh (issue 17). Prints one JSON line per figure (CONTRIBUTING.md "Benchmarks").
 //
-//   needle [--quick]     --quick: the speeds 3, 0.3 and 0.03 only
+//   needle [--quick] [--local-vertices N] [table65] [latency] [local]
+//       --quick: the speeds 3, 0.3 and 0.03 only; --local-vertices: the local solve's region
+//       (default 300); parts named: only those (none: all)
 //
 // The thesis' automated insertion (§6.8.4): the slab 0.1 x 0.1 m (E = 34 kPa, nu = 0.34, 1 cm thick,
 // fixed at x = 0.1), h_start = h3, the needle along y = 0.05 from the slab's edge to a depth of
 // 70 mm, advanced a fixed amount per loop cycle, then cycled in place until nothing changes (no
 // grip rearranged, no node slipping). Updates = loop cycles; rate = cycles / CPU time.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <span>
@@ -28,8 +33,11 @@ namespace {
 
 using namespace sxk;
 
-const std::vector<std::string> slab_body{"--fix", "x>0.0999", "--E", "34e3", "--nu", "0.34", "--thickness", "0.01",
-                                         "--tol", "0.01", "--rounding", "1e-8"};
+// the slab's body; `side` its width and height (the thesis': 0.1 m), fixed at x = side
+std::vector<std::string> slab_body(double side) {
+    return {"--fix",       "x>" + std::to_string(side - 1e-4), "--E",   "34e3", "--nu",       "0.34",
+            "--thickness", "0.01",                              "--tol", "0.01", "--rounding", "1e-8"};
+}
 
 struct Run {
     double seconds = 0;
@@ -37,25 +45,37 @@ struct Run {
     double iterations_mean = 0;
     std::size_t iterations_max = 0;
     std::vector<double> latency;  // per update, seconds, in order
+    // the phases of each update (NeedleStepReport), and the step's time outside the loop (the
+    // edit journal's step and the session's bookkeeping)
+    std::vector<double> refine, intercept, solve, outside;
+    std::vector<double> axial;  // the needle's force along its axis after each update, N
     std::size_t elements = 0, vertices = 0;
+    // a local solve's: the largest displacement change a solve of the whole body makes after the
+    // insertion, and the largest displacement then (m)
+    double lag = 0, largest = 0;
 };
 
 // One automated insertion; h_start and h_ref as fractions of the 0.1 m slab (h_k = 0.1 / 2^k).
-Run insert(int k_start, int k_ref, double speed) {
+// `local`: Options::local_vertices (0: the whole body every step). `cells`: the start grid's
+// cells per side (0: the thesis' 0.1 m slab; more: a larger slab of the same h_start, the needle
+// entering at the middle of its side).
+Run insert(int k_start, int k_ref, double speed, std::size_t local = 0, int cells = 0) {
     const double h_start = 0.1 / (1 << k_start), h_ref = 0.1 / (1 << k_ref);
-    const int cells = 1 << k_start;
+    if (cells == 0) cells = 1 << k_start;
+    const double side = cells * h_start, middle = 0.5 * side;
     Mesh mesh = *make_triangle_grid({cells, cells}, {h_start, h_start});
-    auto made = elasticity::simulate(mesh, slab_body);
+    auto made = elasticity::simulate(mesh, slab_body(side));
     std::unique_ptr<elasticity::Simulation> simulation = std::move(*made);
     needle::Options options;
     options.h_ref = h_ref;
+    options.local_vertices = local;
     auto begun = needle::NeedleSession::make(mesh, options, simulation.get());
     std::unique_ptr<needle::NeedleSession> session = std::move(*begun);
     Run run;
     const double step = speed * h_ref, depth = 0.07;
     auto cycle = [&](double x) {
         const auto start = std::chrono::steady_clock::now();
-        auto report = session->move({{x - 0.1, 0.05, 0}, {x, 0.05, 0}});
+        auto report = session->move({{x - 0.1, middle, 0}, {x, middle, 0}});
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!report) {
             std::fprintf(stderr, "needle: refused: %s\n", report.reason().c_str());
@@ -63,6 +83,11 @@ Run insert(int k_start, int k_ref, double speed) {
         }
         run.seconds += seconds;
         run.latency.push_back(seconds);
+        run.refine.push_back(report->refine_seconds);
+        run.intercept.push_back(report->intercept_seconds);
+        run.solve.push_back(report->solve_seconds);
+        run.outside.push_back(seconds - report->seconds);
+        run.axial.push_back(report->axial_force);
         ++run.updates;
         run.iterations_mean += double(report->iterations);
         run.iterations_max = std::max(run.iterations_max, report->iterations);
@@ -81,6 +106,23 @@ Run insert(int k_start, int k_ref, double speed) {
     run.iterations_mean /= double(run.updates);
     run.elements = mesh.element_count();
     run.vertices = mesh.vertices_in_elements();
+    if (local > 0) {
+        // what the held far field lags behind: the displacements against a solve of the whole body
+        const std::size_t n = mesh.vertex_count();
+        std::vector<elasticity::Vector3> before(n);
+        for (VertexId v = 0; v < n; ++v) before[v] = simulation->displacement(v);
+        if (!simulation->relax(1000000)) std::exit(1);
+        for (VertexId v = 0; v < n; ++v) {
+            const elasticity::Vector3 u = simulation->displacement(v);
+            double change = 0, size = 0;
+            for (int k = 0; k < 3; ++k) {
+                change += (u[k] - before[v][k]) * (u[k] - before[v][k]);
+                size += u[k] * u[k];
+            }
+            run.lag = std::max(run.lag, std::sqrt(change));
+            run.largest = std::max(run.largest, std::sqrt(size));
+        }
+    }
     return run;
 }
 
@@ -95,7 +137,17 @@ struct ThesisRow {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    bool quick = false;
+    std::size_t local_vertices = 300;
+    std::vector<std::string> parts;  // none named: all
+    for (int i = 1; i < argc; ++i)
+        if (std::strcmp(argv[i], "--quick") == 0)
+            quick = true;
+        else if (std::strcmp(argv[i], "--local-vertices") == 0 && i + 1 < argc)
+            local_vertices = std::stoul(argv[++i]);
+        else
+            parts.emplace_back(argv[i]);
+    auto want = [&](const char* part) { return parts.empty() || std::find(parts.begin(), parts.end(), part) != parts.end(); };
     // Table 6.5 as printed
     const ThesisRow h6[] = {{3.00, 0.80, 157, 196.25, 11.81, 41}, {1.00, 0.90, 232, 257.78, 11.52, 62},
                             {0.30, 0.94, 308, 327.66, 10.87, 70}, {0.10, 1.07, 504, 471.03, 8.14, 61},
@@ -103,10 +155,11 @@ int main(int argc, char** argv) {
     const ThesisRow h7[] = {{3.00, 2.46, 243, 98.78, 12.67, 57},  {1.00, 2.80, 401, 143.21, 10.88, 82},
                             {0.30, 3.15, 561, 178.10, 10.03, 66}, {0.10, 3.48, 1000, 287.36, 6.63, 67},
                             {0.03, 6.34, 2966, 467.82, 4.18, 53}, {0.01, 15.68, 8505, 542.41, 3.15, 48}};
-    std::fprintf(stderr, "h_ref  speed  | ours: CPU s  updates      Hz  CG mean  max  tris | "
+    if (want("table65")) std::fprintf(stderr, "h_ref  speed  | ours: CPU s  updates      Hz  CG mean  max  tris | "
                          "thesis: s  updates   Hz   CG mean  max\n");
     const std::pair<int, std::span<const ThesisRow>> tables[] = {{6, h6}, {7, h7}};
     for (const auto& [k_ref, table] : tables) {
+        if (!want("table65")) break;
         for (const ThesisRow& row : table) {
             if (quick && row.speed != 3.0 && row.speed != 0.3 && row.speed != 0.03) continue;
             const Run run = insert(3, k_ref, row.speed);
@@ -122,7 +175,7 @@ int main(int argc, char** argv) {
     }
     // latency at the start against the end of a long insertion (0.1 h_ref per update, h3/h6): the
     // first and the last fifth of the advancing updates
-    {
+    if (want("latency")) {
         const Run run = insert(3, 6, 0.1);
         const std::size_t fifth = run.latency.size() / 5;
         const std::vector<double> first(run.latency.begin(), run.latency.begin() + fifth);
@@ -138,7 +191,7 @@ int main(int argc, char** argv) {
               1e3 * percentile(first, 0.99), "ourselves at the start", "lower");
     }
     // a coarse against a fine start mesh, the same refinement around the needle
-    {
+    if (want("latency")) {
         const Run coarse = insert(3, 6, 0.1), fine = insert(5, 6, 0.1);
         std::fprintf(stderr, "latency h_ref h6, 0.1 h_ref/update: start h3 median %.3f ms p99 %.3f ms (%zu triangles), "
                              "start h5 median %.3f ms p99 %.3f ms (%zu triangles)\n",
@@ -150,6 +203,60 @@ int main(int argc, char** argv) {
         print_figure("needle step latency p99, start mesh h5 vs h3 (h_ref h6)", "ms",
                      1e3 * percentile(fine.latency, 0.99), 1e3 * percentile(coarse.latency, 0.99),
                      "ourselves on the h3 start mesh", "lower");
+    }
+    // the same with the solve confined to the needle's surroundings (Options::local_vertices, 300
+    // vertices: about the whole h3 mesh after the refinement) on the coarse and the fine start mesh
+    // and on a start mesh of more than a million triangles (the h3 grid over a slab 720 cells
+    // wide: the needle's surroundings as on the thesis' slab, the body 90 times wider); what it gives
+    // up: the needle's force against the whole body's solve on the h5 mesh, and the far field's lag
+    if (want("local")) {
+        struct Case {
+            const char* name;
+            int k_start, cells;
+        };
+        const Case cases[] = {{"h3", 3, 0}, {"h5", 5, 0}, {"h3, 720 x 720 cells", 3, 720}};
+        double median[3], p99[3];
+        Run runs[3];
+        for (int i = 0; i < 3; ++i) {
+            const Run& run = runs[i] = insert(cases[i].k_start, 6, 0.1, local_vertices, cases[i].cells);
+            median[i] = 1e3 * percentile(run.latency, 0.5);
+            p99[i] = 1e3 * percentile(run.latency, 0.99);
+            std::fprintf(stderr,
+                         "local %zu, h_ref h6, 0.1 h_ref/update, start %s: median %.3f ms p99 %.3f ms (%zu triangles, "
+                         "CG mean %.1f max %zu); far field lags by %.3g mm (largest displacement %.3g mm)\n",
+                         local_vertices, cases[i].name, median[i], p99[i], run.elements, run.iterations_mean,
+                         run.iterations_max, 1e3 * run.lag, 1e3 * run.largest);
+            std::fprintf(stderr,
+                         "  median / p99 ms: refine %.3f / %.3f, intercept %.3f / %.3f, solve %.3f / %.3f, "
+                         "outside the loop %.3f / %.3f\n",
+                         1e3 * percentile(run.refine, 0.5), 1e3 * percentile(run.refine, 0.99),
+                         1e3 * percentile(run.intercept, 0.5), 1e3 * percentile(run.intercept, 0.99),
+                         1e3 * percentile(run.solve, 0.5), 1e3 * percentile(run.solve, 0.99),
+                         1e3 * percentile(run.outside, 0.5), 1e3 * percentile(run.outside, 0.99));
+        }
+        const Run whole = insert(5, 6, 0.1);
+        const std::size_t count = std::min(whole.axial.size(), runs[1].axial.size());
+        double deviation = 0, largest = 0;
+        for (std::size_t k = 0; k < count; ++k) {
+            deviation = std::max(deviation, std::abs(runs[1].axial[k] - whole.axial[k]));
+            largest = std::max(largest, std::abs(whole.axial[k]));
+        }
+        std::fprintf(stderr,
+                     "h5: the needle's axial force, local against whole: largest difference %.4f N of %.4f N (%.1f%%) "
+                     "over %zu updates; at the end %.4f N against %.4f N\n",
+                     deviation, largest, 100 * deviation / largest, count, runs[1].axial.back(), whole.axial.back());
+        print_figure("needle step latency median, local solve, start mesh h5 vs h3 (h_ref h6)", "ms", median[1],
+                     median[0], "ourselves on the h3 start mesh", "lower");
+        print_figure("needle step latency p99, local solve, start mesh h5 vs h3 (h_ref h6)", "ms", p99[1], p99[0],
+                     "ourselves on the h3 start mesh", "lower");
+        print_figure("needle step latency median, local solve, 1M-triangle start mesh vs h3 (h_ref h6)", "ms",
+                     median[2], median[0], "ourselves on the h3 start mesh", "lower");
+        print_figure("needle step latency p99, local solve, 1M-triangle start mesh vs h3 (h_ref h6)", "ms", p99[2],
+                     p99[0], "ourselves on the h3 start mesh", "lower");
+        print_figure("needle axial force, local solve vs whole body, largest difference over the insertion (h5)",
+                     "N", deviation, largest, "the whole body's largest force", "lower");
+        print_figure("needle far-field lag after a local insertion (h5)", "mm", 1e3 * runs[1].lag,
+                     1e3 * runs[1].largest, "the largest displacement", "lower");
     }
     return 0;
 }

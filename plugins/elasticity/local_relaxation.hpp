@@ -1,0 +1,79 @@
+// A relaxation confined to the part of a body around where it changed: the vertices within a few
+// rings of some seed vertices (where a tool pulls, or an edit happened) are solved for, by the same
+// projected CG as solve_linear_cg (thesis §6.6), while every other vertex keeps its displacement.
+//
+// Why: one step of a tool changes the constraints of a few vertices (the needle's nodes, §6.7),
+// and a CG over the whole body costs its size per iteration, so a step on a fine mesh costs as
+// many times more as the mesh is larger (docs/performance.md, the needle's latency against the
+// start mesh). Confined to a region of at most N vertices, a step costs what N costs on any mesh.
+// What it gives up: the far field. The vertices outside the region stay where the last solve left
+// them, so the region's rim is held and the displacement near the tool comes out somewhat
+// smaller (the body is stiffer than it is) until a solve over the whole body settles it, e.g.
+// Simulation::relax when the tool rests. docs/elasticity.md "Local relaxation" gives measured
+// errors.
+//
+//     LocalRelaxation local;
+//     auto report = local.solve(body, needle_vertices, 2000, {.tolerance = 0.01});
+//     body.write_deformed(mesh, local.region());   // only what moved
+//
+// Nothing in a solve is proportional to the body's size: the region grows by breadth-first search
+// over the mesh's stars (sxk/traversal.hpp), the body is brought in step by refresh_shapes(), and
+// the scratch is kept between solves (per vertex and per element id: grown, never cleared whole).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "elastic_body.hpp"
+#include "solve.hpp"
+
+namespace sxk::elasticity {
+
+struct LocalSolveReport {
+    SolveReport solve;               // iterations, residual and threshold over the region
+    std::size_t region_vertices = 0;  // the vertices solved for
+    std::size_t rim_vertices = 0;     // their neighbours outside the region, held where they were
+    std::size_t elements = 0;         // the elements around the region: the product's
+};
+
+class LocalRelaxation {
+public:
+    // At most options.max_iterations CG iterations over the region: the seeds (all of them, even
+    // beyond max_vertices), then their neighbours ring by ring while the region has fewer than
+    // max_vertices vertices. Seeds out of range or in no element are skipped; no seed left: nothing
+    // to do (a report of zeros, converged). The stop threshold is eq. 6.9 over the region (its
+    // loads and the reactions at its constrained vertices) with the rounding term of the whole
+    // body. Refuses a neo-Hookean body (bad_argument: its forces are not K u; solve the whole body
+    // with solve_nonlinear_cg) and as refresh_shapes does; a region without a constrained vertex is
+    // solved all the same (its rim holds it).
+    Outcome<LocalSolveReport> solve(ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices,
+                                    const SolveOptions& options = {});
+    // The region of the last solve: the vertices whose displacements it may have changed.
+    std::span<const VertexId> region() const { return {m_vertices.data(), m_region}; }
+
+private:
+    // the region by breadth-first search from the seeds, then its elements and rim
+    void gather(const ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices);
+    // out = K d over the region's elements (d and out: 3 per local vertex)
+    void multiply(const ElasticBody& body, const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
+    // v onto the motions the region allows: the body's constraints, a planar body's z, the rim held
+    void project(const ElasticBody& body, Eigen::VectorXd& v) const;
+    // forgets the marks of the last solve (in time proportional to its region)
+    void unmark();
+
+    static constexpr std::uint32_t none = 0xffffffffu;
+    std::vector<std::uint32_t> m_local;  // per body vertex: its local index, or none
+    std::vector<char> m_taken;           // per element id: one of m_elements
+    std::vector<VertexId> m_vertices;    // the region (m_region of them), then the rim
+    std::size_t m_region = 0;
+    std::vector<ElementId> m_elements;
+    std::vector<std::array<std::uint32_t, 4>> m_element_corners;  // local indices, per m_elements
+    int m_dimension = 3;
+};
+
+}  // namespace sxk::elasticity

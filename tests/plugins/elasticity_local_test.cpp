@@ -1,0 +1,256 @@
+// The local relaxation (local_relaxation.hpp) and what it stands on: the region's CG reaches the
+// whole body's solution when the region is the whole body (planar and tetrahedral, and after an
+// edit heard only by refresh_shapes), a bounded region changes nothing outside it and meets its
+// threshold, the refusals, elastic_forces_at against elastic_forces, write_deformed of a subset,
+// and the service's relax_near.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "elastic_body.hpp"
+#include "local_relaxation.hpp"
+#include "simulation.hpp"
+#include "solve.hpp"
+#include "sxk/generators.hpp"
+#include "sxk/ops/split_edge.hpp"
+
+namespace sxk::elasticity {
+namespace {
+
+// The thesis' slab (0.1 m, §6.8.1) as a grid of `cells` x `cells`, fixed at x = 0.1, with the
+// vertex nearest (0.05, 0.05) pulled 1 mm towards -x and (0, 0.05) held on a line along y.
+struct Slab {
+    Mesh mesh;
+    std::optional<ElasticBody> body;
+    VertexId pulled = invalid_id, slipping = invalid_id;
+    explicit Slab(int cells) : mesh(*make_triangle_grid({cells, cells}, {0.1 / cells, 0.1 / cells})) {
+        auto made = ElasticBody::make(mesh, {.young = 34e3, .poisson = 0.34}, {.thickness = 0.01});
+        EXPECT_TRUE(made.ok()) << made.reason();
+        body.emplace(std::move(*made));
+        mesh.add_watcher(*body);
+        for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+            const Point& x = mesh.reference(v);
+            if (x[0] > 0.0999) EXPECT_TRUE(body->fix(v).ok());
+            if (std::abs(x[0] - 0.05) < 1e-9 && std::abs(x[1] - 0.05) < 1e-9) pulled = v;
+            if (std::abs(x[0]) < 1e-9 && std::abs(x[1] - 0.05) < 1e-9) slipping = v;
+        }
+        EXPECT_TRUE(body->fix(pulled, {-0.001, 0, 0}).ok());
+        EXPECT_TRUE(body->constrain_to_line(slipping, {0, 1, 0}).ok());
+        EXPECT_TRUE(body->add_force(slipping, {0, 0.01, 0}).ok());
+    }
+    ~Slab() { mesh.remove_watcher(*body); }
+};
+
+double largest_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return (a - b).cwiseAbs().maxCoeff();
+}
+
+TEST(ElasticityLocal, RegionOfTheWholeBodyFindsTheSolveOfTheWholeBody) {
+    Slab local(8), whole(8);
+    const SolveOptions options{.tolerance = 1e-12, .rounding = 0};
+    ASSERT_TRUE(solve_linear_cg(*whole.body, options)->converged);
+    LocalRelaxation relaxation;
+    const VertexId seeds[] = {local.pulled};
+    auto report = relaxation.solve(*local.body, seeds, local.mesh.vertex_count(), options);
+    ASSERT_TRUE(report.ok()) << report.reason();
+    EXPECT_TRUE(report->solve.converged);
+    EXPECT_EQ(report->region_vertices, local.mesh.vertex_count());
+    EXPECT_EQ(report->rim_vertices, 0u);
+    EXPECT_EQ(report->elements, local.mesh.element_count());
+    const double scale = whole.body->displacements().cwiseAbs().maxCoeff();
+    EXPECT_LT(largest_difference(local.body->displacements(), whole.body->displacements()), 1e-9 * scale);
+    EXPECT_EQ(relaxation.region().size(), local.mesh.vertex_count());
+}
+
+TEST(ElasticityLocal, BoundedRegionChangesNothingOutsideAndMeetsItsThreshold) {
+    Slab slab(16);
+    const Eigen::VectorXd before = slab.body->displacements();
+    LocalRelaxation relaxation;
+    const VertexId seeds[] = {slab.pulled, slab.slipping};
+    const SolveOptions options{.tolerance = 1e-6};
+    auto report = relaxation.solve(*slab.body, seeds, 40, options);
+    ASSERT_TRUE(report.ok()) << report.reason();
+    EXPECT_TRUE(report->solve.converged);
+    EXPECT_EQ(report->region_vertices, 40u);
+    EXPECT_GT(report->rim_vertices, 0u);
+    const std::set<VertexId> region(relaxation.region().begin(), relaxation.region().end());
+    EXPECT_EQ(region.size(), 40u);
+    EXPECT_TRUE(region.count(slab.pulled) && region.count(slab.slipping));
+    std::size_t moved = 0;
+    for (VertexId v = 0; v < slab.mesh.vertex_count(); ++v) {
+        const bool same = slab.body->displacement(v) ==
+                          Vector3{before[3 * v], before[3 * v + 1], before[3 * v + 2]};
+        if (!region.count(v)) EXPECT_TRUE(same) << "vertex " << v << " outside the region moved";
+        moved += same ? 0 : 1;
+    }
+    EXPECT_GT(moved, 20u);
+    // the whole body's residual over the region: within the region's threshold
+    ASSERT_TRUE(slab.body->refresh().ok());
+    Eigen::VectorXd ku;
+    slab.body->multiply(slab.body->displacements(), ku);
+    Eigen::VectorXd r = slab.body->forces() - ku;
+    slab.body->project(r);
+    double rr = 0;
+    for (const VertexId v : region) rr += r.segment<3>(3 * v).squaredNorm();
+    EXPECT_LE(std::sqrt(rr), 1.0001 * report->solve.threshold);
+    // the constraints hold exactly
+    EXPECT_EQ(slab.body->displacement(slab.pulled), (Vector3{-0.001, 0, 0}));
+    EXPECT_EQ(slab.body->displacement(slab.slipping)[0], 0);
+    EXPECT_GT(slab.body->displacement(slab.slipping)[1], 0);
+}
+
+TEST(ElasticityLocal, KuhnCubeAfterASplitHeardOnlyByRefreshShapes) {
+    // a tetrahedral body, an edge split after the first solve: the local solve reads the new
+    // elements' rest shapes without the stars' rebuild, and finds the whole body's solution
+    // bottom fixed, top moved (a new vertex there too)
+    auto constrain = [](ElasticBody& body, const Mesh& mesh) {
+        for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+            const double z = mesh.reference(v)[2];
+            if (z < 1e-9) EXPECT_TRUE(body.fix(v).ok());
+            if (z > 1 - 1e-9) EXPECT_TRUE(body.fix(v, {0.01, 0, 0.02}).ok());
+        }
+    };
+    auto build = [&](Mesh& mesh) {
+        auto made = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3});
+        EXPECT_TRUE(made.ok()) << made.reason();
+        ElasticBody body = std::move(*made);
+        constrain(body, mesh);
+        return body;
+    };
+    Mesh mesh = *make_kuhn_cube(3, 1.0 / 3);
+    ElasticBody body = build(mesh);
+    mesh.add_watcher(body);
+    const SolveOptions options{.tolerance = 1e-12, .rounding = 0};
+    ASSERT_TRUE(solve_linear_cg(body, options)->converged);
+    const Simplex first = mesh.simplex(ElementId{0});
+    auto split = split_edge(mesh, first.vertex(0), first.vertex(1), 0.5);
+    ASSERT_TRUE(split.ok()) << split.reason();
+    ASSERT_TRUE(body.refresh_shapes().ok());  // the new vertex is the body's
+    constrain(body, mesh);
+    const VertexId seeds[] = {split->vertex};
+    LocalRelaxation relaxation;
+    auto report = relaxation.solve(body, seeds, mesh.vertex_count(), options);
+    ASSERT_TRUE(report.ok()) << report.reason();
+    EXPECT_EQ(report->elements, mesh.element_count());
+    EXPECT_TRUE(body.needs_refresh());  // the stars wait for a solve of the whole body
+
+    Mesh fresh_mesh = mesh;
+    ElasticBody fresh = build(fresh_mesh);
+    ASSERT_TRUE(solve_linear_cg(fresh, options)->converged);
+    const double scale = fresh.displacements().cwiseAbs().maxCoeff();
+    EXPECT_LT(largest_difference(body.displacements(), fresh.displacements()), 1e-9 * scale);
+    // and the whole body's solver after it: converged at once, the same answer
+    auto again = solve_linear_cg(body, options);
+    ASSERT_TRUE(again.ok());
+    EXPECT_FALSE(body.needs_refresh());
+    EXPECT_LT(largest_difference(body.displacements(), fresh.displacements()), 1e-9 * scale);
+    mesh.remove_watcher(body);
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
+TEST(ElasticityLocal, Refusals) {
+    Mesh mesh = *make_triangle_grid({2, 2}, {1, 1});
+    auto rubber = ElasticBody::make(mesh, {}, {.model = Model::neohookean});
+    ASSERT_TRUE(rubber.ok());
+    LocalRelaxation relaxation;
+    const VertexId seeds[] = {VertexId{4}};
+    auto refused = relaxation.solve(*rubber, seeds, 10);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.refusal().code, RefusalCode::bad_argument);
+    EXPECT_EQ(refused.reason(),
+              "elasticity: a local solve needs a linear body (a neo-Hookean body's forces are not K u): relax the "
+              "whole body");
+    // no seed in the body: nothing to do
+    auto linear = ElasticBody::make(mesh, {});
+    ASSERT_TRUE(linear.ok());
+    const VertexId outside[] = {VertexId{1000}};
+    auto nothing = relaxation.solve(*linear, outside, 10);
+    ASSERT_TRUE(nothing.ok()) << nothing.reason();
+    EXPECT_TRUE(nothing->solve.converged);
+    EXPECT_EQ(nothing->region_vertices, 0u);
+    EXPECT_EQ(nothing->solve.iterations, 0u);
+    EXPECT_TRUE(relaxation.region().empty());
+}
+
+TEST(ElasticityLocal, ForcesAtVerticesAreTheWholeBodysThere) {
+    for (const Model model : {Model::linear, Model::neohookean}) {
+        for (const bool planar : {true, false}) {
+            Mesh mesh = planar ? *make_triangle_grid({4, 4}, {0.25, 0.25}) : *make_kuhn_cube(3, 1.0 / 3);
+            auto made = ElasticBody::make(mesh, {.young = 1e3, .poisson = 0.3}, {.model = model});
+            ASSERT_TRUE(made.ok());
+            ElasticBody& body = *made;
+            for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+                const Point& x = mesh.reference(v);
+                body.displacements().segment<3>(3 * v) =
+                    Eigen::Vector3d(0.01 * x[1] * x[1], -0.02 * x[0] * x[1], planar ? 0 : 0.01 * x[0]);
+            }
+            ASSERT_TRUE(body.refresh().ok());
+            Eigen::VectorXd all;
+            ASSERT_TRUE(body.elastic_forces(body.displacements(), all));
+            const std::vector<VertexId> some{VertexId{0}, VertexId{5}, VertexId{7}, VertexId{1000}};
+            std::vector<Vector3> at;
+            ASSERT_TRUE(body.elastic_forces_at(some, at));
+            ASSERT_EQ(at.size(), some.size());
+            const double scale = all.cwiseAbs().maxCoeff();
+            for (std::size_t i = 0; i + 1 < some.size(); ++i)
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_NEAR(at[i][k], all[3 * some[i] + k], 1e-12 * scale)
+                        << (planar ? "planar " : "tetrahedral ") << int(model) << " vertex " << some[i];
+            EXPECT_EQ(at.back(), (Vector3{0, 0, 0}));  // not a vertex of the body
+        }
+    }
+}
+
+TEST(ElasticityLocal, WriteDeformedOfSomeVerticesMovesOnlyThem) {
+    Mesh mesh = *make_triangle_grid({3, 3}, {1, 1});
+    auto made = ElasticBody::make(mesh, {});
+    ASSERT_TRUE(made.ok());
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) made->displacements()[3 * v] = 0.01;
+    const VertexId some[] = {VertexId{5}, VertexId{6}};
+    ASSERT_TRUE(made->write_deformed(mesh, some).ok());
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+        EXPECT_EQ(mesh.deformed(v)[0], mesh.reference(v)[0] + (v == 5 || v == 6 ? 0.01 : 0)) << "vertex " << v;
+    }
+    Mesh other = mesh;
+    EXPECT_EQ(made->write_deformed(other, some).reason(), "elasticity: write_deformed: not the mesh of this body");
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
+TEST(ElasticityLocal, ServiceRelaxNearWritesTheRegionAndRelaxSettlesTheRest) {
+    Mesh mesh = *make_triangle_grid({16, 16}, {0.1 / 16, 0.1 / 16});
+    const std::vector<std::string> words{"--fix", "x>0.0999", "--E",   "34e3",  "--nu",
+                                         "0.34",  "--thickness", "0.01", "--tol", "1e-8"};
+    auto made = simulate(mesh, words);
+    ASSERT_TRUE(made.ok()) << made.reason();
+    Simulation& body = **made;
+    const VertexId pulled = 8 * 17 + 8;  // (0.05, 0.05)
+    ASSERT_TRUE(body.hold(pulled, {-0.001, 0, 0}).ok());
+    const std::vector<Point> before(mesh.deformed_positions().begin(), mesh.deformed_positions().end());
+    const VertexId seeds[] = {pulled};
+    auto near = body.relax_near(seeds, 100000, 50);
+    ASSERT_TRUE(near.ok()) << near.reason();
+    EXPECT_TRUE(near->converged && near->shown);
+    EXPECT_EQ(near->region_vertices, 50u);
+    EXPECT_GT(near->region_elements, 50u);
+    std::size_t moved = 0;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) moved += mesh.deformed(v) != before[v] ? 1 : 0;
+    EXPECT_GT(moved, 10u);
+    EXPECT_LE(moved, 50u);
+    EXPECT_EQ(mesh.deformed(pulled)[0], mesh.reference(pulled)[0] - 0.001);
+    // the far field lags: the whole body's solve moves vertices outside the region
+    auto whole = body.relax(100000);
+    ASSERT_TRUE(whole.ok() && whole->converged) << whole.reason();
+    EXPECT_EQ(whole->region_vertices, 0u);
+    EXPECT_GT(whole->iterations, 0u);
+    moved = 0;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v) moved += mesh.deformed(v) != before[v] ? 1 : 0;
+    EXPECT_GT(moved, 50u);
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
+}  // namespace
+}  // namespace sxk::elasticity
