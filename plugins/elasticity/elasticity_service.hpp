@@ -61,6 +61,15 @@ public:
     // (region_vertices 0 in the report).
     virtual Outcome<RelaxReport> relax_near(std::span<const VertexId> seeds, std::size_t iterations,
                                             std::size_t max_vertices) = 0;
+    // One block of the far field's relaxation, for the frames after relax_near: the rims that
+    // relax_near and relax_far held are remembered with the force out of balance there, and this
+    // solves, as relax_near does, the region of up to max_vertices around the rim vertex most out
+    // of balance now. Called after relax_near every frame, it lets the far field follow the tool
+    // at a bounded cost per frame (Southwell's relaxation, by blocks). Nothing to do (no
+    // remembered vertex out of balance by more than the last relax_near's tolerance per vertex):
+    // a report with region_vertices 0. A neo-Hookean body: nothing to do (relax_near relaxed it
+    // whole).
+    virtual Outcome<RelaxReport> relax_far(std::size_t iterations, std::size_t max_vertices) = 0;
     // A piece that came loose (thesis §3.3: "all unfixed components are fixed on an arbitrary
     // face"): unless a vertex of it is held already, the corners of its lowest-id boundary face
     // are fixed where they are. True when it fixed them.
@@ -101,7 +110,7 @@ public:
 
 struct ElasticityService {
     static constexpr std::string_view service_id = "sxk.elasticity";
-    static constexpr std::uint32_t service_version = 3;  // 2: vertices a tool holds; 3: relax_near
+    static constexpr std::uint32_t service_version = 3;  // 2: vertices a tool holds; 3: relax_near, relax_far
 
     // A simulation of `mesh` (which must stay where it is while the simulation lives) set up from
     // `sxk deform`'s options; refuses bad options and empty selections with `sxk deform`'s

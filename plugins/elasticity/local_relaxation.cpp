@@ -163,7 +163,8 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
     solve.converged = solve.residual <= solve.threshold;
     auto body_u = body.displacements();
     for (std::size_t i = 0; i < m_region; ++i)
-        body_u.segment<3>(3 * static_cast<Eigen::Index>(m_vertices[i])) = u.segment<3>(3 * static_cast<Eigen::Index>(i));
+        body_u.segment<3>(3 * static_cast<Eigen::Index>(m_vertices[i])) =
+            u.segment<3>(3 * static_cast<Eigen::Index>(i));
     solve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
 }

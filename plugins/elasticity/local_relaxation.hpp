@@ -55,6 +55,8 @@ public:
                                     const SolveOptions& options = {});
     // The region of the last solve: the vertices whose displacements it may have changed.
     std::span<const VertexId> region() const { return {m_vertices.data(), m_region}; }
+    // Its rim: the other corners of the region's elements, held where they were.
+    std::span<const VertexId> rim() const { return {m_vertices.data() + m_region, m_vertices.size() - m_region}; }
 
 private:
     // the region by breadth-first search from the seeds, then its elements and rim

@@ -96,6 +96,10 @@ struct Options {
     // whole body (docs/needle.md "Local solve"). 0: every step solves the whole body, as the
     // thesis does.
     std::size_t local_vertices = 0;
+    // With local_vertices: after the step's local solve, one block of up to this many vertices of
+    // the far field where it is most out of balance (Simulation::relax_far): the far field follows
+    // the needle over the frames, at a bounded cost per step. 0: the far field waits for settle().
+    std::size_t far_vertices = 0;
 };
 
 enum class Grip : std::uint8_t { stick, slip };
@@ -127,6 +131,7 @@ struct NeedleStepReport {
     std::size_t solves = 0;        // CG runs (1 + rearrangements that changed something)
     std::size_t iterations = 0;    // CG iterations, all solves
     std::size_t solved_vertices = 0;  // the last solve's: the region (Options::local_vertices), else all
+    std::size_t far_vertices = 0;     // the far field's block solved after it (Options::far_vertices)
     bool converged = true;         // every solve reached eq. 6.9
     bool shown = true;             // the deformed positions were written (not when they invert)
     double axial_force = 0;        // the needle's force on the tissue along its axis, N

@@ -49,6 +49,12 @@ void add_needle_options(CLI::App& app, Options& options, std::string* deform) {
                    "field lags (0: the whole body every step, as the thesis)")
         ->check(CLI::Range(std::size_t{0}, std::size_t{100000000}))
         ->capture_default_str();
+    app.add_option("--far", options.far_vertices,
+                   "With --local: after each step's solve, one more block of at most this many vertices where "
+                   "the far field is most out of balance, so that it follows the needle over the steps (0: it "
+                   "waits for --settle)")
+        ->check(CLI::Range(std::size_t{0}, std::size_t{100000000}))
+        ->capture_default_str();
 }
 
 }  // namespace sxk::needle

@@ -19,6 +19,7 @@ nlohmann::ordered_json to_json(const Options& options) {
     json["rearrangements"] = options.rearrangements;
     json["iterations"] = options.iterations;
     json["local_vertices"] = options.local_vertices;
+    json["far_vertices"] = options.far_vertices;
     return json;
 }
 
@@ -48,6 +49,7 @@ nlohmann::ordered_json to_json(const Replay& replay) {
         s["solves"] = r.solves;
         s["iterations"] = r.iterations;
         s["solved_vertices"] = r.solved_vertices;
+        s["far_vertices"] = r.far_vertices;
         s["converged"] = r.converged;
         s["shown"] = r.shown;
         s["axial_force"] = r.axial_force;

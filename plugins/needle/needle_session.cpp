@@ -344,6 +344,12 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
                 if (auto held = hold(nodes[i], needle); !held) return held.refusal().prefixed("needle: ");
             for (std::size_t i = 0; i < nodes.size(); ++i) along_before[i] = nodes[i].along;
         }
+        if (local && m_options.far_vertices > 0) {
+            auto far = m_simulation->relax_far(iterations, m_options.far_vertices);
+            if (!far) return far.refusal().prefixed("needle: ");
+            report.iterations += far->iterations;
+            report.far_vertices = far->region_vertices;
+        }
     }
     report.solve_seconds = seconds_since(phase);
 

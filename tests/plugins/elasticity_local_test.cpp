@@ -5,7 +5,9 @@
 // and the service's relax_near.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <set>
 #include <string>
@@ -250,6 +252,61 @@ TEST(ElasticityLocal, ServiceRelaxNearWritesTheRegionAndRelaxSettlesTheRest) {
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) moved += mesh.deformed(v) != before[v] ? 1 : 0;
     EXPECT_GT(moved, 50u);
     EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
+TEST(ElasticityLocal, RelaxFarBlocksBringTheFarFieldToTheWholeBodysSolution) {
+    const std::vector<std::string> words{"--fix", "x>0.0999", "--E",   "34e3", "--nu",
+                                         "0.34",  "--thickness", "0.01", "--tol", "1e-4"};
+    Mesh mesh = *make_triangle_grid({16, 16}, {0.1 / 16, 0.1 / 16});
+    Mesh whole_mesh = mesh;
+    auto made = simulate(mesh, words), whole = simulate(whole_mesh, words);
+    ASSERT_TRUE(made.ok() && whole.ok());
+    const VertexId pulled = 8 * 17 + 8;  // (0.05, 0.05)
+    ASSERT_TRUE((*made)->hold(pulled, {-0.001, 0.0005, 0}).ok());
+    ASSERT_TRUE((*whole)->hold(pulled, {-0.001, 0.0005, 0}).ok());
+    ASSERT_TRUE((*whole)->relax(100000)->converged);
+    const VertexId seeds[] = {pulled};
+    ASSERT_TRUE((*made)->relax_near(seeds, 100000, 30).ok());
+    auto lag = [&] {
+        double most = 0, largest = 0;
+        for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+            const Vector3 a = (*made)->displacement(v), b = (*whole)->displacement(v);
+            most = std::max(most, std::hypot(a[0] - b[0], a[1] - b[1]));
+            largest = std::max(largest, std::hypot(b[0], b[1]));
+        }
+        return most / largest;
+    };
+    const double before = lag();
+    EXPECT_GT(before, 0.2);
+    std::size_t blocks = 0;
+    for (; blocks < 5000; ++blocks) {
+        auto far = (*made)->relax_far(100000, 30);
+        ASSERT_TRUE(far.ok()) << far.reason();
+        if (far->region_vertices == 0) break;
+        EXPECT_LE(far->region_vertices, 30u);
+        EXPECT_TRUE(far->converged);
+    }
+    std::printf("%zu blocks: lag %.3g -> %.3g\n", blocks, before, lag());
+    EXPECT_LT(blocks, 5000u);  // then nothing is out of balance
+    EXPECT_LT(lag(), 0.02);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
+TEST(ElasticityLocal, ANeoHookeanBodyRelaxesWholeAndHasNoFarField) {
+    Mesh mesh = *make_triangle_grid({4, 4}, {0.025, 0.025});
+    const std::vector<std::string> words{"--fix", "x>0.0999", "--material", "neohookean", "--tol", "1e-8"};
+    auto made = simulate(mesh, words);
+    ASSERT_TRUE(made.ok()) << made.reason();
+    ASSERT_TRUE((*made)->hold(VertexId{12}, {-0.001, 0, 0}).ok());
+    const VertexId seeds[] = {VertexId{12}};
+    auto near = (*made)->relax_near(seeds, 100000, 3);
+    ASSERT_TRUE(near.ok()) << near.reason();
+    EXPECT_EQ(near->region_vertices, 0u);  // the whole body
+    EXPECT_TRUE(near->converged);
+    auto far = (*made)->relax_far(100000, 3);
+    ASSERT_TRUE(far.ok());
+    EXPECT_EQ(far->region_vertices, 0u);
+    EXPECT_EQ(far->iterations, 0u);
 }
 
 }  // namespace

@@ -207,8 +207,10 @@ TEST(Needle, UndoingEveryStepGivesTheSlabBackBitForBit) {
 TEST(Needle, LocalSolveBoundsTheRegionAndSettleCatchesTheFarFieldUp) {
     Options local_options;
     local_options.local_vertices = 200;
+    Options far_options = local_options;
+    far_options.far_vertices = 200;
     const Mesh fine = *make_triangle_grid({32, 32}, {0.1 / 32, 0.1 / 32});
-    Insertion whole(fine, slab_body), local(fine, slab_body, local_options);
+    Insertion whole(fine, slab_body), local(fine, slab_body, local_options), far(fine, slab_body, far_options);
     auto early = local.session->settle(100);
     ASSERT_FALSE(early.ok());
     EXPECT_EQ(early.refusal().code, RefusalCode::not_applicable);
@@ -216,6 +218,9 @@ TEST(Needle, LocalSolveBoundsTheRegionAndSettleCatchesTheFarFieldUp) {
     const double speed = 0.3 * 0.1 / 64;
     for (double x = -0.01; x <= 0.05; x += speed) {
         ASSERT_TRUE(whole.session->move(along_x(x, 0.05)).ok());
+        auto far_step = far.session->move(along_x(x, 0.05));
+        ASSERT_TRUE(far_step.ok()) << far_step.reason();
+        EXPECT_LE(far_step->far_vertices, 200u);
         auto step = local.session->move(along_x(x, 0.05));
         ASSERT_TRUE(step.ok()) << step.reason();
         ASSERT_TRUE(local.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok()) << "x = " << x;
@@ -226,7 +231,23 @@ TEST(Needle, LocalSolveBoundsTheRegionAndSettleCatchesTheFarFieldUp) {
     const double force = whole.session->last_step().axial_force;
     EXPECT_GT(force, 0.5);
     EXPECT_NEAR(local.session->last_step().axial_force, force, 0.15 * force);
-    // the far field lags: settling moves vertices the local steps held
+    // the far field lags: settling moves vertices the local steps held, less when far-field blocks
+    // followed every step
+    auto settling_moves = [](Insertion& run) {
+        const std::vector<Point> was(run.mesh.deformed_positions().begin(), run.mesh.deformed_positions().end());
+        EXPECT_TRUE(run.session->settle(100000).ok());
+        double most = 0;
+        for (VertexId v = 0; v < run.mesh.vertex_count(); ++v)
+            most = std::max(most, std::hypot(run.mesh.deformed(v)[0] - was[v][0], run.mesh.deformed(v)[1] - was[v][1]));
+        EXPECT_TRUE(run.session->undo_step().ok());
+        return most;
+    };
+    const double lag = settling_moves(local), far_lag = settling_moves(far);
+    std::printf("settling moves a vertex by %.3g mm after local steps, %.3g mm with far-field blocks\n", 1e3 * lag,
+                1e3 * far_lag);
+    EXPECT_GT(lag, 1e-4);
+    EXPECT_LT(far_lag, 0.6 * lag);
+    ASSERT_TRUE(far.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok());
     const std::vector<Point> before(local.mesh.deformed_positions().begin(), local.mesh.deformed_positions().end());
     auto settled = local.session->settle(100000);
     ASSERT_TRUE(settled.ok()) << settled.reason();
@@ -408,7 +429,10 @@ TEST(Needle, RandomNeedlePathsNeverBreakTheMesh) {
         options.h_ref = (solid ? 0.1 / 16 : 0.1 / 64) * (0.5 + unit(random));
         options.relocate = unit(random) < 0.3;
         options.friction.shaft = 5 + 40 * unit(random);
-        if (unit(random) < 0.3) options.local_vertices = 20 + static_cast<std::size_t>(300 * unit(random));
+        if (unit(random) < 0.3) {
+            options.local_vertices = 20 + static_cast<std::size_t>(300 * unit(random));
+            if (unit(random) < 0.5) options.far_vertices = 20 + static_cast<std::size_t>(300 * unit(random));
+        }
         Insertion run(solid ? cube() : slab(), solid ? cube_body : slab_body, options);
         // a wandering needle: enters from the left, turns, advances and withdraws at random
         Eigen::Vector3d tip(-0.01, 0.02 + 0.06 * unit(random), solid ? 0.02 + 0.06 * unit(random) : 0.0);
