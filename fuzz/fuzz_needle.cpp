@@ -3,7 +3,8 @@
 // fixed at x = 0.1, the thesis' material) with the elasticity plug-in's body; a 3D one ('time bx by
 // bz tx ty tz') into a Kuhn cube of 2 x 2 x 2 cells with its body. Both under the tool oracle of
 // tool_replay.hpp (steps complete or change nothing, the mesh validates with no element inverted or
-// flat in either position set, undo gives the mesh back bit for bit).
+// flat in either position set, undo gives the mesh back bit for bit). The input's length picks the
+// options: relocation or not, the local solve and its far-field blocks.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -31,6 +32,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.h_ref = planar ? 0.1 / 16 : 0.1 / 8;
     options.iterations = 200;
     options.relocate = size % 2 == 1;  // both schemes
+    // and every third input solved around the needle only, half of those with far-field blocks
+    if (size % 3 == 1) options.local_vertices = 8;
+    if (size % 6 == 1) options.far_vertices = 8;
     auto made = sxk::needle::NeedleSession::make(mesh, options, body->get());
     if (!made) sxk::fuzz::finding("make: " + made.reason());
     auto& session = **made;

@@ -56,9 +56,9 @@ public:
     // The same confined to the vertices around `seeds` (where a tool changed the constraints): the
     // seeds and their neighbours ring by ring up to `max_vertices` vertices, every other vertex
     // held where it is (LocalRelaxation, local_relaxation.hpp: why, and what it gives up), and
-    // only the region's deformed positions written. A step then costs the same on a coarse and
-    // on a fine mesh; the far field settles at the next relax. A neo-Hookean body relaxes whole
-    // (region_vertices 0 in the report).
+    // only the region's deformed positions written. Its cost is bounded by max_vertices whatever
+    // the mesh's size; the far field settles at the next relax (or by relax_far). A neo-Hookean
+    // body relaxes whole (region_vertices 0 in the report).
     virtual Outcome<RelaxReport> relax_near(std::span<const VertexId> seeds, std::size_t iterations,
                                             std::size_t max_vertices) = 0;
     // One block of the far field's relaxation, for the frames after relax_near: the rims that

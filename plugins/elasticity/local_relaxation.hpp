@@ -5,12 +5,13 @@
 // Why: one step of a tool changes the constraints of a few vertices (the needle's nodes, §6.7),
 // and a CG over the whole body costs its size per iteration, so a step on a fine mesh costs as
 // many times more as the mesh is larger (docs/performance.md, the needle's latency against the
-// start mesh). Confined to a region of at most N vertices, a step costs what N costs on any mesh.
+// start mesh). Confined to a region of at most N vertices, a step's solve costs what N costs on
+// any mesh.
 // What it gives up: the far field. The vertices outside the region stay where the last solve left
 // them, so the region's rim is held and the displacement near the tool comes out somewhat
 // smaller (the body is stiffer than it is) until a solve over the whole body settles it, e.g.
-// Simulation::relax when the tool rests. docs/elasticity.md "Local relaxation" gives measured
-// errors.
+// Simulation::relax when the tool rests, or Simulation::relax_far's blocks catch up.
+// docs/elasticity.md "Local relaxation" gives measured errors.
 //
 //     LocalRelaxation local;
 //     auto report = local.solve(body, needle_vertices, 2000, {.tolerance = 0.01});
@@ -35,7 +36,7 @@
 namespace sxk::elasticity {
 
 struct LocalSolveReport {
-    SolveReport solve;               // iterations, residual and threshold over the region
+    SolveReport solve;                // iterations, residual and threshold over the region
     std::size_t region_vertices = 0;  // the vertices solved for
     std::size_t rim_vertices = 0;     // their neighbours outside the region, held where they were
     std::size_t elements = 0;         // the elements around the region: the product's
@@ -50,7 +51,8 @@ public:
     // loads and the reactions at its constrained vertices) with the rounding term of the whole
     // body. Refuses a neo-Hookean body (bad_argument: its forces are not K u; solve the whole body
     // with solve_nonlinear_cg) and as refresh_shapes does; a region without a constrained vertex is
-    // solved all the same (its rim holds it).
+    // solved all the same (its rim holds it). The report's energy is left 0: it is a sum over the
+    // whole body.
     Outcome<LocalSolveReport> solve(ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices,
                                     const SolveOptions& options = {});
     // The region of the last solve: the vertices whose displacements it may have changed.

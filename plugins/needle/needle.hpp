@@ -91,9 +91,9 @@ struct Options {
     // CG iterations per solve, at most (a frame's budget; the body's options bound them too).
     std::size_t iterations = 100000;
     // Solve only around the needle: its nodes and their neighbours ring by ring, up to this many
-    // vertices, the rest of the body held where it is (Simulation::relax_near): a step then costs
-    // the same on a coarse and on a fine mesh, and the far field lags behind until a solve over the
-    // whole body (docs/needle.md "Local solve"). 0: every step solves the whole body, as the
+    // vertices, the rest of the body held where it is (Simulation::relax_near): the solve's cost is
+    // bounded by this, whatever the mesh's size, and the far field lags behind until a solve over
+    // the whole body (docs/needle.md "Local solve"). 0: every step solves the whole body, as the
     // thesis does.
     std::size_t local_vertices = 0;
     // With local_vertices: after the step's local solve, one block of up to this many vertices of
