@@ -78,27 +78,18 @@ void LinearRelaxation::residual() {
 
 bool LinearRelaxation::run(std::size_t iterations) {
     const auto start = std::chrono::steady_clock::now();
-    auto u = m_body->displacements();
-    for (std::size_t i = 0; i < iterations && may_continue(); ++i) {
-        m_body->multiply(m_d, m_q);
+    auto multiply = [this](const Eigen::VectorXd& d, Eigen::VectorXd& q) {
+        m_body->multiply(d, q);
         ++m_report.evaluations;
-        m_body->project(m_q);  // P K P: d is already in the allowed space
-        const double dq = m_d.dot(m_q);
-        if (!(dq > 0)) {  // d = 0 (exact solution), or K not positive on d: no progress possible
-            m_stalled = true;
+    };
+    auto project = [this](Eigen::VectorXd& q) { m_body->project(q); };
+    auto fresh = [this] { residual(); };
+    for (std::size_t i = 0; i < iterations && may_continue(); ++i) {
+        if (!detail::cg_iteration(m_body->displacements(), m_r, m_d, m_q, m_rr, m_report.iterations,
+                                  m_options.recompute_every, multiply, project, fresh)) {
+            m_stalled = true;  // d = 0 (exact solution), or K not positive on d
             break;
         }
-        const double alpha = m_rr / dq;
-        u += alpha * m_d;
-        ++m_report.iterations;
-        if (m_options.recompute_every > 0 && m_report.iterations % m_options.recompute_every == 0) {
-            residual();
-        } else {
-            m_r -= alpha * m_q;
-        }
-        const double next = m_r.squaredNorm();
-        m_d = m_r + (next / m_rr) * m_d;
-        m_rr = next;
         m_report.history.push_back(std::sqrt(m_rr));
     }
     return finish_run(start);

@@ -141,24 +141,15 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
     double rr = r.squaredNorm();
     solve.history.push_back(std::sqrt(rr));
     d = r;
-    while (std::sqrt(rr) > solve.threshold && solve.iterations < options.max_iterations) {
-        multiply(body, d, q);
+    auto times_k = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+        multiply(body, x, out);
         ++solve.evaluations;
-        project(body, q);
-        const double dq = d.dot(q);
-        if (!(dq > 0)) break;  // d = 0, or K not positive on d: no progress possible
-        const double alpha = rr / dq;
-        u += alpha * d;
-        ++solve.iterations;
-        if (options.recompute_every > 0 && solve.iterations % options.recompute_every == 0)
-            residual();
-        else
-            r -= alpha * q;
-        const double next = r.squaredNorm();
-        d = r + (next / rr) * d;
-        rr = next;
+    };
+    auto allowed = [&](Eigen::VectorXd& x) { project(body, x); };
+    while (std::sqrt(rr) > solve.threshold && solve.iterations < options.max_iterations &&
+           detail::cg_iteration(u, r, d, q, rr, solve.iterations, options.recompute_every, times_k, allowed,
+                                residual))
         solve.history.push_back(std::sqrt(rr));
-    }
     solve.residual = std::sqrt(rr);
     solve.converged = solve.residual <= solve.threshold;
     auto body_u = body.displacements();
