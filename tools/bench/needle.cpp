@@ -1,7 +1,10 @@
 // needle: the update rate of the needle's full loop (refine + intercept + solve + rearrange) in the
 // setting of thesis Table 6.5, against the thesis' figures (a Pentium III at 1 GHz), and the step
 // latency at the start against the end of a long insertion and on a coarse against a fine start
-// mesh (issue 17). Prints one JSON line per figure (CONTRIBUTING.md "Benchmarks").
+// mesh (issue 17), solving the whole body (table65, latency) or around the needle only (local:
+// also on a start mesh of a million triangles, with and without far-field blocks, and what that
+// costs in force and in the far field's lag). Prints one JSON line per figure (CONTRIBUTING.md
+// "Benchmarks").
 //
 //   needle [--quick] [--local-vertices N] [table65] [latency] [local]
 //       --quick: the speeds 3, 0.3 and 0.03 only; --local-vertices: the local solve's region
