@@ -92,65 +92,6 @@ public:
         return RelaxReport{.converged = true};
     }
 
-    // The local solve around `seeds`, its region written, its rim remembered for relax_far.
-    Outcome<RelaxReport> relax_region(std::span<const VertexId> seeds, std::size_t iterations,
-                                      std::size_t max_vertices) {
-        const auto start = std::chrono::steady_clock::now();
-        SolveOptions options = m_options;
-        options.max_iterations = std::min(iterations, m_options.max_iterations);
-        ElasticBody& body = *m_built.body;
-        auto local = m_local.solve(body, seeds, max_vertices, options);
-        if (!local) return local.refusal();
-        RelaxReport result;
-        result.iterations = local->solve.iterations;
-        result.converged = local->solve.converged;
-        result.residual = local->solve.residual;
-        result.threshold = local->solve.threshold;
-        result.region_vertices = local->region_vertices;
-        result.region_elements = local->elements;
-        m_total += result.iterations;
-        result.shown = body.write_deformed(m_mesh, m_local.region()).ok();
-        // the rim held the region: remember where it is out of balance, for relax_far
-        const std::span<const VertexId> rim = m_local.rim();
-        auto balance = out_of_balance(rim);
-        if (!balance) return balance.refusal();
-        for (std::size_t i = 0; i < rim.size(); ++i)
-            if ((*balance)[i] > m_balance) {
-                m_frontier.emplace_back((*balance)[i], rim[i]);
-                std::push_heap(m_frontier.begin(), m_frontier.end());
-            }
-        if (m_frontier.size() > 16 * max_vertices + 64) {  // keep the worst half: bounded memory
-            const auto half = m_frontier.begin() + static_cast<std::ptrdiff_t>(m_frontier.size() / 2);
-            std::nth_element(m_frontier.begin(), half, m_frontier.end(), std::greater<>());
-            m_frontier.erase(half, m_frontier.end());
-            std::make_heap(m_frontier.begin(), m_frontier.end());
-        }
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return result;
-    }
-
-    // |P(f - K u)| at each of `vertices` (0 for a vertex not in the body), from their stars
-    Outcome<std::vector<double>> out_of_balance(std::span<const VertexId> vertices) {
-        ElasticBody& body = *m_built.body;
-        if (!body.elastic_forces_at(vertices, m_gradient))
-            return Refusal{RefusalCode::would_invert, "the displacements invert an element"};
-        std::vector<double> norms(vertices.size(), 0.0);
-        for (std::size_t i = 0; i < vertices.size(); ++i) {
-            const VertexId v = vertices[i];
-            if (v >= body.vertex_count() || body.freedom(v) == Freedom::fixed) continue;
-            const Vector3 f = body.force(v);
-            Eigen::Vector3d r(f[0] - m_gradient[i][0], f[1] - m_gradient[i][1], f[2] - m_gradient[i][2]);
-            if (body.dimension() == 2) r[2] = 0;
-            if (body.freedom(v) == Freedom::line) {
-                const Vector3 l3 = body.line_direction(v);
-                const Eigen::Vector3d l(l3[0], l3[1], l3[2]);
-                r = l * l.dot(r);
-            }
-            norms[i] = r.norm();
-        }
-        return norms;
-    }
-
     Outcome<bool> hold_piece(std::span<const ElementId> piece) override {
         ElasticBody& body = *m_built.body;
         if (Outcome<Done> fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("hold_piece: ");
@@ -230,6 +171,65 @@ public:
     }
 
 private:
+    // The local solve around `seeds`, its region written, its rim remembered for relax_far.
+    Outcome<RelaxReport> relax_region(std::span<const VertexId> seeds, std::size_t iterations,
+                                      std::size_t max_vertices) {
+        const auto start = std::chrono::steady_clock::now();
+        SolveOptions options = m_options;
+        options.max_iterations = std::min(iterations, m_options.max_iterations);
+        ElasticBody& body = *m_built.body;
+        auto local = m_local.solve(body, seeds, max_vertices, options);
+        if (!local) return local.refusal();
+        RelaxReport result;
+        result.iterations = local->solve.iterations;
+        result.converged = local->solve.converged;
+        result.residual = local->solve.residual;
+        result.threshold = local->solve.threshold;
+        result.region_vertices = local->region_vertices;
+        result.region_elements = local->elements;
+        m_total += result.iterations;
+        result.shown = body.write_deformed(m_mesh, m_local.region()).ok();
+        // the rim held the region: remember where it is out of balance, for relax_far
+        const std::span<const VertexId> rim = m_local.rim();
+        auto balance = out_of_balance(rim);
+        if (!balance) return balance.refusal();
+        for (std::size_t i = 0; i < rim.size(); ++i)
+            if ((*balance)[i] > m_balance) {
+                m_frontier.emplace_back((*balance)[i], rim[i]);
+                std::push_heap(m_frontier.begin(), m_frontier.end());
+            }
+        if (m_frontier.size() > 16 * max_vertices + 64) {  // keep the worst half: bounded memory
+            const auto half = m_frontier.begin() + static_cast<std::ptrdiff_t>(m_frontier.size() / 2);
+            std::nth_element(m_frontier.begin(), half, m_frontier.end(), std::greater<>());
+            m_frontier.erase(half, m_frontier.end());
+            std::make_heap(m_frontier.begin(), m_frontier.end());
+        }
+        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+    }
+
+    // |P(f - K u)| at each of `vertices` (0 for a vertex not in the body), from their stars
+    Outcome<std::vector<double>> out_of_balance(std::span<const VertexId> vertices) {
+        ElasticBody& body = *m_built.body;
+        if (!body.elastic_forces_at(vertices, m_gradient))
+            return Refusal{RefusalCode::would_invert, "the displacements invert an element"};
+        std::vector<double> norms(vertices.size(), 0.0);
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            const VertexId v = vertices[i];
+            if (v >= body.vertex_count() || body.freedom(v) == Freedom::fixed) continue;
+            const Vector3 f = body.force(v);
+            Eigen::Vector3d r(f[0] - m_gradient[i][0], f[1] - m_gradient[i][1], f[2] - m_gradient[i][2]);
+            if (body.dimension() == 2) r[2] = 0;
+            if (body.freedom(v) == Freedom::line) {
+                const Vector3 l3 = body.line_direction(v);
+                const Eigen::Vector3d l(l3[0], l3[1], l3[2]);
+                r = l * l.dot(r);
+            }
+            norms[i] = r.norm();
+        }
+        return norms;
+    }
+
     // v is a vertex of the body the options do not hold
     Outcome<Done> tools_vertex(VertexId v, const char* what) const {
         if (v < m_held_by_options.size() && m_held_by_options[v])
