@@ -300,20 +300,8 @@ double ElasticBody::strain_energy(const Eigen::Ref<const Eigen::VectorXd>& u) co
 
 void ElasticBody::project(Eigen::VectorXd& v) const {
     const std::size_t n = std::min(vertex_count(), static_cast<std::size_t>(v.size()) / 3);
-    if (m_dimension == 2)
-        for (std::size_t i = 0; i < n; ++i)
-            v[static_cast<Eigen::Index>(3 * i + 2)] = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (m_freedom[i] == Freedom::free)
-            continue;
-        auto x = v.segment<3>(3 * static_cast<Eigen::Index>(i));
-        if (m_freedom[i] == Freedom::fixed) {
-            x.setZero();
-        } else {
-            const Eigen::Vector3d l(m_line[i][0], m_line[i][1], m_line[i][2]);
-            x = l * l.dot(x);
-        }
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        project_vertex(static_cast<VertexId>(i), v.segment<3>(3 * static_cast<Eigen::Index>(i)));
 }
 
 double ElasticBody::energy() const {

@@ -210,6 +210,16 @@ public:
     // Projects v onto the motions the constraints allow (P_W of §6.6; a planar body's z is 0
     // everywhere), in place.
     void project(Eigen::VectorXd& v) const;
+    // The same for vertex v's three entries x (a segment of such a vector, or a copy of one).
+    void project_vertex(VertexId v, Eigen::Ref<Eigen::Vector3d> x) const {
+        if (m_dimension == 2) x[2] = 0;
+        if (m_freedom[v] == Freedom::fixed) {
+            x.setZero();
+        } else if (m_freedom[v] == Freedom::line) {
+            const Eigen::Vector3d l(m_line[v][0], m_line[v][1], m_line[v][2]);
+            x = l * l.dot(x);
+        }
+    }
     // Writes reference + u as the deformed positions of every vertex in an element, by one
     // Mesh::move_vertices (watchers such as a SpatialIndex over deformed positions hear one
     // vertices_moved; inside an EditJournal step the old positions are kept for rollback).

@@ -76,22 +76,9 @@ void LocalRelaxation::multiply(const ElasticBody& body, const Eigen::VectorXd& d
 }
 
 void LocalRelaxation::project(const ElasticBody& body, Eigen::VectorXd& v) const {
-    for (std::size_t i = 0; i < m_vertices.size(); ++i) {
-        auto x = v.segment<3>(3 * static_cast<Eigen::Index>(i));
-        if (m_dimension == 2) x[2] = 0;
-        if (i >= m_region) {  // the rim is held
-            x.setZero();
-            continue;
-        }
-        const VertexId w = m_vertices[i];
-        if (body.freedom(w) == Freedom::fixed) {
-            x.setZero();
-        } else if (body.freedom(w) == Freedom::line) {
-            const Vector3 l3 = body.line_direction(w);
-            const Eigen::Vector3d l(l3[0], l3[1], l3[2]);
-            x = l * l.dot(x);
-        }
-    }
+    for (std::size_t i = 0; i < m_region; ++i)
+        body.project_vertex(m_vertices[i], v.segment<3>(3 * static_cast<Eigen::Index>(i)));
+    v.tail(3 * static_cast<Eigen::Index>(m_vertices.size() - m_region)).setZero();  // the rim is held
 }
 
 Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<const VertexId> seeds,

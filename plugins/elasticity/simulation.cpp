@@ -35,9 +35,7 @@ public:
 
     Outcome<RelaxReport> relax(std::size_t iterations) override {
         const auto start = std::chrono::steady_clock::now();
-        // at most `iterations`, and never more than the options' --max-iterations
-        SolveOptions options = m_options;
-        options.max_iterations = std::min(iterations, m_options.max_iterations);
+        const SolveOptions options = bounded(iterations);
         iterations = options.max_iterations;
         // a fresh relaxation each call: its residual starts from the current displacements (the
         // warm start), and the body has heard the edits since the last call (refresh)
@@ -45,11 +43,7 @@ public:
         auto run = [&](auto relaxation) -> Outcome<Done> {
             if (!relaxation) return relaxation.refusal();
             relaxation->run(iterations);
-            const SolveReport report = relaxation->report();
-            result.iterations = report.iterations;
-            result.converged = report.converged;
-            result.residual = report.residual;
-            result.threshold = report.threshold;
+            result = report_of(relaxation->report());
             return Done{};
         };
         ElasticBody& body = *m_built.body;
@@ -171,20 +165,30 @@ public:
     }
 
 private:
+    // The options with at most `iterations`, and never more than the options' --max-iterations.
+    SolveOptions bounded(std::size_t iterations) const {
+        SolveOptions options = m_options;
+        options.max_iterations = std::min(iterations, m_options.max_iterations);
+        return options;
+    }
+    // What a relax call reports of a solve (its time and what it wrote: the caller's).
+    static RelaxReport report_of(const SolveReport& solve) {
+        RelaxReport report;
+        report.iterations = solve.iterations;
+        report.converged = solve.converged;
+        report.residual = solve.residual;
+        report.threshold = solve.threshold;
+        return report;
+    }
+
     // The local solve around `seeds`, its region written, its rim remembered for relax_far.
     Outcome<RelaxReport> relax_region(std::span<const VertexId> seeds, std::size_t iterations,
                                       std::size_t max_vertices) {
         const auto start = std::chrono::steady_clock::now();
-        SolveOptions options = m_options;
-        options.max_iterations = std::min(iterations, m_options.max_iterations);
         ElasticBody& body = *m_built.body;
-        auto local = m_local.solve(body, seeds, max_vertices, options);
+        auto local = m_local.solve(body, seeds, max_vertices, bounded(iterations));
         if (!local) return local.refusal();
-        RelaxReport result;
-        result.iterations = local->solve.iterations;
-        result.converged = local->solve.converged;
-        result.residual = local->solve.residual;
-        result.threshold = local->solve.threshold;
+        RelaxReport result = report_of(local->solve);
         result.region_vertices = local->region_vertices;
         result.region_elements = local->elements;
         m_total += result.iterations;
@@ -216,15 +220,10 @@ private:
         std::vector<double> norms(vertices.size(), 0.0);
         for (std::size_t i = 0; i < vertices.size(); ++i) {
             const VertexId v = vertices[i];
-            if (v >= body.vertex_count() || body.freedom(v) == Freedom::fixed) continue;
+            if (v >= body.vertex_count()) continue;
             const Vector3 f = body.force(v);
             Eigen::Vector3d r(f[0] - m_gradient[i][0], f[1] - m_gradient[i][1], f[2] - m_gradient[i][2]);
-            if (body.dimension() == 2) r[2] = 0;
-            if (body.freedom(v) == Freedom::line) {
-                const Vector3 l3 = body.line_direction(v);
-                const Eigen::Vector3d l(l3[0], l3[1], l3[2]);
-                r = l * l.dot(r);
-            }
+            body.project_vertex(v, r);
             norms[i] = r.norm();
         }
         return norms;

@@ -130,6 +130,23 @@ Run insert(int k_start, int k_ref, double speed, std::size_t local = 0, int cell
     return run;
 }
 
+// The step latency at the end of an insertion against its start: the last fifth of the updates
+// against the first, median and p99 (on stderr, and as figures named with `what` and `setting`).
+void end_against_start(const Run& run, const std::string& what, const std::string& setting) {
+    const std::size_t fifth = run.latency.size() / 5;
+    const std::vector<double> first(run.latency.begin(), run.latency.begin() + fifth);
+    const std::vector<double> last(run.latency.end() - fifth, run.latency.end());
+    std::fprintf(stderr,
+                 "latency %s%s, 0.1 h_ref/update: first fifth median %.3f ms p99 %.3f ms, last fifth median %.3f ms "
+                 "p99 %.3f ms\n",
+                 what.c_str(), setting.c_str(), 1e3 * percentile(first, 0.5), 1e3 * percentile(first, 0.99),
+                 1e3 * percentile(last, 0.5), 1e3 * percentile(last, 0.99));
+    for (const auto& [name, q] : {std::pair{"median", 0.5}, std::pair{"p99", 0.99}})
+        print_figure("needle step latency " + std::string(name) + ", " + what + "end of insertion vs start (" +
+                         setting + ")",
+                     "ms", 1e3 * percentile(last, q), 1e3 * percentile(first, q), "ourselves at the start", "lower");
+}
+
 struct ThesisRow {
     double speed;
     double seconds;
@@ -181,21 +198,7 @@ int main(int argc, char** argv) {
     }
     // latency at the start against the end of a long insertion (0.1 h_ref per update, h3/h6): the
     // first and the last fifth of the advancing updates
-    if (want("latency")) {
-        const Run run = insert(3, 6, 0.1);
-        const std::size_t fifth = run.latency.size() / 5;
-        const std::vector<double> first(run.latency.begin(), run.latency.begin() + fifth);
-        const std::vector<double> last(run.latency.end() - fifth, run.latency.end());
-        const double median_first = percentile(first, 0.5), median_last = percentile(last, 0.5);
-        std::fprintf(stderr, "latency h3/h6 0.1 h_ref/update: first fifth median %.3f ms p99 %.3f ms, "
-                             "last fifth median %.3f ms p99 %.3f ms\n",
-                     1e3 * median_first, 1e3 * percentile(first, 0.99), 1e3 * median_last,
-                     1e3 * percentile(last, 0.99));
-        print_figure("needle step latency median, end of insertion vs start (h3/h6)", "ms", 1e3 * median_last,
-              1e3 * median_first, "ourselves at the start", "lower");
-        print_figure("needle step latency p99, end of insertion vs start (h3/h6)", "ms", 1e3 * percentile(last, 0.99),
-              1e3 * percentile(first, 0.99), "ourselves at the start", "lower");
-    }
+    if (want("latency")) end_against_start(insert(3, 6, 0.1), "", "h3/h6");
     // a coarse against a fine start mesh, the same refinement around the needle
     if (want("latency")) {
         const Run coarse = insert(3, 6, 0.1), fine = insert(5, 6, 0.1);
@@ -247,22 +250,7 @@ int main(int argc, char** argv) {
                          1e3 * percentile(run.outside, 0.5), 1e3 * percentile(run.outside, 0.99));
         }
         // the start against the end of the insertion, as above, with the local solve (h5)
-        {
-            const std::vector<double>& latency = runs[1].latency;
-            const std::size_t fifth = latency.size() / 5;
-            const std::vector<double> first(latency.begin(), latency.begin() + fifth);
-            const std::vector<double> last(latency.end() - fifth, latency.end());
-            std::fprintf(stderr,
-                         "local %zu, h5/h6: first fifth median %.3f ms p99 %.3f ms, last fifth median %.3f ms "
-                         "p99 %.3f ms\n",
-                         local_vertices, 1e3 * percentile(first, 0.5), 1e3 * percentile(first, 0.99),
-                         1e3 * percentile(last, 0.5), 1e3 * percentile(last, 0.99));
-            print_figure("needle step latency median, local solve, end of insertion vs start (h5/h6)", "ms",
-                         1e3 * percentile(last, 0.5), 1e3 * percentile(first, 0.5), "ourselves at the start", "lower");
-            print_figure("needle step latency p99, local solve, end of insertion vs start (h5/h6)", "ms",
-                         1e3 * percentile(last, 0.99), 1e3 * percentile(first, 0.99), "ourselves at the start",
-                         "lower");
-        }
+        end_against_start(runs[1], "local solve, ", "h5/h6");
         const Run whole = insert(5, 6, 0.1);
         double deviation = 0, largest = 0;
         for (const int i : {1, 3}) {
