@@ -165,11 +165,11 @@ void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const 
     detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
     detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
     for (const ElementId t : around) {
-        element_boxes.update(t, detail::element_box<D>(mesh, t, positions));
+        element_boxes.follow(t, detail::BoxTree<D>::extent_of(detail::element_points(mesh, t, positions).span()));
         for (int i = 0; i < mesh.element_vertex_count(); ++i)
             if (mesh.neighbor(t, i) == invalid_id) {
                 const FaceId f = mesh.face(t, i);
-                face_boxes.update(f, detail::face_box<D>(mesh, f, positions));
+                face_boxes.follow(f, detail::BoxTree<D>::extent_of(detail::face_points(mesh, f, positions).span()));
             }
     }
 }

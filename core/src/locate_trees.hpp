@@ -248,6 +248,22 @@ struct BoxTree {
         trim(2);
     }
     void update(std::uint32_t id, const Box& box) { insert(id, box); }
+    // `id` moved to the extent `e` with a few vertices (a tool's local solve writing its region):
+    // what refit does for one id. An entry that still covers it costs that test; one it left is
+    // re-entered grown by a margin, so the next frames, which move it about as far, find it
+    // inside. Re-entering the tight box instead left it again at the next frame: every element
+    // around a local solve's region was removed and inserted every frame, 30 % of the needle's
+    // step on a million triangles (docs/performance.md "needle").
+    void follow(std::uint32_t id, const Extent& e) {
+        if (!is_live(id)) {
+            insert(id, box_of(e));
+            return;
+        }
+        const Box& held = entries[entry_of[id]].box;
+        if (follows(held, e)) return;
+        insert(id, grown(held, e));
+        trim(1);
+    }
 
     // After a move of most of what the tree indexes (a simulation writing its frame): `extent(id)`
     // is the extent of id's positions now. An id whose entry still covers its box costs that test

@@ -3,6 +3,7 @@
 // eq. 4.6) for given corner displacements. D is the dimension: tetrahedra (3) or triangles (2).
 #pragma once
 
+#include <array>
 #include <cmath>
 
 #include <Eigen/Core>
@@ -128,6 +129,39 @@ void linear_element_forces(const RestShape& rest, const double* d, double* out) 
         linear_tetrahedron_forces(rest, d, out);
     else
         linear_triangle_forces(rest, d, out);
+}
+
+// Row j of a linear element's stiffness as 3 x 3 blocks (row-major): block l is the force on
+// corner j per unit displacement of corner l. With G = sum_l d_l b_l^T (b_D = -(b_0 + ... +
+// b_{D-1})), out_j = volume T b_j above is linear in each d_l:
+//
+//     K_jl = volume (mu (b_j . b_l) I + mu b_l b_j^T + lambda b_j b_l^T)
+//
+// (a triangle's I is the plane's: its z row and column are zero, as its forces' z are). For a
+// region's assembled product (LocalRelaxation); the element-by-element product above stays the
+// whole body's (no matrix to rebuild when the mesh changes).
+template <int D>
+void linear_element_row(const RestShape& rest, int j, std::array<std::array<double, 9>, 4>& blocks) {
+    std::array<std::array<double, 3>, D + 1> b{};  // the corners' gradients
+    for (int k = 0; k < D; ++k)
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double g = rest.gradient[3 * static_cast<std::size_t>(k) + i];
+            b[static_cast<std::size_t>(k)][i] = g;
+            b[D][i] -= g;
+        }
+    const double v = rest.volume, mu = rest.lame.mu * v, lambda = rest.lame.lambda * v;
+    const std::array<double, 3>& bj = b[static_cast<std::size_t>(j)];
+    for (std::size_t l = 0; l <= D; ++l) {
+        const std::array<double, 3>& bl = b[l];
+        double dot = 0;
+        for (std::size_t a = 0; a < D; ++a) dot += bj[a] * bl[a];
+        std::array<double, 9>& block = blocks[l];
+        block.fill(0);  // a triangle's z row and column stay zero
+        for (std::size_t a = 0; a < D; ++a) {
+            for (std::size_t c = 0; c < D; ++c) block[3 * a + c] = mu * bl[a] * bj[c] + lambda * bj[a] * bl[c];
+            block[4 * a] += mu * dot;
+        }
+    }
 }
 
 // The neo-Hookean element of eq. 4.6, W = 1/2 (mu (trace C - D) - mu ln det C + lambda (J - 1)^2)

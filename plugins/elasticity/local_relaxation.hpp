@@ -63,8 +63,12 @@ public:
 private:
     // the region by breadth-first search from the seeds, then its elements and rim
     void gather(const ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices);
-    // out = K d over the region's elements (d and out: 3 per local vertex)
-    void multiply(const ElasticBody& body, const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
+    // the region's rows of K, 3 x 3 blocks by row (a region vertex) and column (a local vertex),
+    // summed over the stars that gather() recorded
+    void assemble(const ElasticBody& body);
+    // out = K d on the region's rows; the rim's rows are left zero (the projection zeroes them
+    // anyway). d and out: 3 per local vertex.
+    void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
     // v onto the motions the region allows: the body's constraints, a planar body's z, the rim held
     void project(const ElasticBody& body, Eigen::VectorXd& v) const;
     // forgets the marks of the last solve (in time proportional to its region)
@@ -72,11 +76,19 @@ private:
 
     static constexpr std::uint32_t none = 0xffffffffu;
     std::vector<std::uint32_t> m_local;  // per body vertex: its local index, or none
-    std::vector<char> m_taken;           // per element id: one of m_elements
+    std::vector<std::uint32_t> m_element_index;  // per element id: its index in m_elements, or none
     std::vector<VertexId> m_vertices;    // the region (m_region of them), then the rim
     std::size_t m_region = 0;
     std::vector<ElementId> m_elements;
     std::vector<std::array<std::uint32_t, 4>> m_element_corners;  // local indices, per m_elements
+    // each region vertex's star: m_star[m_star_start[i] .. m_star_start[i + 1]) (m_elements indices)
+    std::vector<std::uint32_t> m_star_start, m_star;
+    // the region's rows of K: row i's blocks are m_blocks[m_row_start[i] .. m_row_start[i + 1]),
+    // in the columns m_columns (local vertices); m_slot: per local vertex, its block in the row
+    // being assembled, or none
+    std::vector<std::size_t> m_row_start;
+    std::vector<std::uint32_t> m_columns, m_slot;
+    std::vector<std::array<double, 9>> m_blocks;
     int m_dimension = 3;
 };
 

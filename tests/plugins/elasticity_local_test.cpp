@@ -2,7 +2,7 @@
 // whole body's solution when the region is the whole body (planar and tetrahedral, and after an
 // edit heard only by refresh_shapes), a bounded region changes nothing outside it and meets its
 // threshold, the refusals, elastic_forces_at against elastic_forces, write_deformed of a subset,
-// and the service's relax_near.
+// the service's relax_near, and the stiffness rows the region's product is assembled from.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "elastic_body.hpp"
+#include "element_kernels.hpp"
 #include "local_relaxation.hpp"
 #include "simulation.hpp"
 #include "solve.hpp"
@@ -49,6 +50,37 @@ struct Slab {
 
 double largest_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return (a - b).cwiseAbs().maxCoeff();
+}
+
+// linear_element_row<D> against the element's forces (linear_element_forces) for a unit
+// displacement of each corner along each axis: the blocks are the columns of K_t.
+template <int D>
+void expect_rows_are_the_forces(const Eigen::Matrix<double, D, D>& edges) {
+    detail::RestShape rest = detail::rest_shape<D>(edges, 0.01);
+    rest.lame = {.mu = 1.3e4, .lambda = 2.9e4};
+    for (int l = 0; l <= D; ++l)
+        for (int c = 0; c < 3; ++c) {
+            double d[12] = {}, forces[12] = {};
+            d[3 * l + c] = 1;
+            detail::linear_element_forces<D>(rest, d, forces);
+            for (int j = 0; j <= D; ++j) {
+                std::array<std::array<double, 9>, 4> row{};
+                detail::linear_element_row<D>(rest, j, row);
+                for (int a = 0; a < 3; ++a)
+                    EXPECT_NEAR(row[static_cast<std::size_t>(l)][static_cast<std::size_t>(3 * a + c)],
+                                forces[3 * j + a], 1e-9 * rest.lame.lambda * rest.volume)
+                        << "D " << D << ", row " << j << ", corner " << l << ", axes " << a << " " << c;
+            }
+        }
+}
+
+TEST(ElasticityLocal, AssembledRowsAreTheElementsForces) {
+    Eigen::Matrix2d triangle;
+    triangle << 0.7, -0.2, 0.1, 0.9;
+    expect_rows_are_the_forces<2>(triangle);
+    Eigen::Matrix3d tetrahedron;
+    tetrahedron << 1.1, 0.2, -0.3, 0.1, 0.8, 0.4, -0.2, 0.3, 1.3;
+    expect_rows_are_the_forces<3>(tetrahedron);
 }
 
 TEST(ElasticityLocal, RegionOfTheWholeBodyFindsTheSolveOfTheWholeBody) {

@@ -8,11 +8,11 @@
 // whole mesh (docs/architecture.md "An edit, end to end"):
 //
 //        mesh edit ──► element_removed / changed / added ──► rtree remove / insert (one box each)
-//        move_vertices ──► vertices_moved ──► re-box star(v) and its boundary faces (a quarter
-//                                             of the vertices or more, a simulation's frame:
-//                                             refit, every box tested where it is, re-entered
-//                                             with a margin only when it left; the seed grid of
-//                                             locate stays)
+//        move_vertices ──► vertices_moved ──► re-box star(v) and its boundary faces: each box
+//                                             tested where it is, re-entered with a margin only
+//                                             when it left (a quarter of the vertices or more, a
+//                                             simulation's frame: refit, every box so; the seed
+//                                             grid of locate stays)
 //        EditJournal rollback ──► the net change back, as one edit ──► the same
 //
 //        query ──► (a walk from the hint) ──► rtree candidates ──► exact test per candidate
