@@ -44,6 +44,11 @@ std::span<const ElementId> ToolSession::elements_edited_in_step() const {
     return *m_step_elements;
 }
 
+std::span<const VertexId> ToolSession::vertices_moved_in_step() const {
+    if (m_step_vertices == nullptr) return {};
+    return *m_step_vertices;
+}
+
 Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     if (m_ended) return Refusal{RefusalCode::not_applicable, "step: the session has ended"};
     EditJournal& journal = m_journal.journal();
@@ -59,10 +64,15 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
         EditStep step(journal);
         const ScopedWatcher watching(m_mesh, watcher);
         m_step_elements = &watcher.elements;
-        struct Forget {  // also when apply throws: the watcher's list goes out of scope with it
+        m_step_vertices = &watcher.vertices;
+        struct Forget {  // also when apply throws: the watcher's lists go out of scope with it
             const std::vector<ElementId>*& elements;
-            ~Forget() { elements = nullptr; }
-        } forget{m_step_elements};
+            const std::vector<VertexId>*& vertices;
+            ~Forget() {
+                elements = nullptr;
+                vertices = nullptr;
+            }
+        } forget{m_step_elements, m_step_vertices};
         applied = apply(pose, report);
         recorded = journal.recorded() > 0;
         if (applied) (void)step.commit();

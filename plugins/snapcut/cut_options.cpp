@@ -40,6 +40,18 @@ void add_cut_options(CLI::App& app, Options& options) {
                    "With a simulation (--deform): CG iterations after each step, 1..10^8")
         ->check(whole_number_in(1, 100000000))
         ->capture_default_str();
+    app.add_option("--local", options.local_vertices,
+                   "With a simulation (--deform): relax only around what each step changed, at most this many "
+                   "vertices (the edited elements' corners and the snapped nodes, then their neighbours ring by "
+                   "ring), the rest of the body held: a step costs the same on any mesh size, the far field lags "
+                   "(0: the whole body every step)")
+        ->check(whole_number_in(0, 100000000))
+        ->capture_default_str();
+    app.add_option("--far", options.far_vertices,
+                   "With --local: after each step's relaxation, one more block of at most this many vertices "
+                   "where the far field is most out of balance (0: none)")
+        ->check(whole_number_in(0, 100000000))
+        ->capture_default_str();
     app.add_option("--cut-label", options.cut_label, "Face label of the cut surface")
         ->check(whole_number("LABEL"))
         ->capture_default_str();

@@ -11,6 +11,9 @@
 //   --remove-loose             remove the pieces a step cuts loose
 //   --cut-label L              the face label of the cut surface (9999)
 //   --relax-iterations N       with a simulation: CG iterations after each step (100)
+//   --local N                  with a simulation: relax only around what the step changed, at
+//                              most N vertices (0: the whole body)
+//   --far N                    with --local: one far-field block of at most N vertices per step
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -43,6 +43,8 @@ nlohmann::ordered_json to_json(const CutStepReport& r) {
         relax["residual"] = r.relax_residual;
         relax["shown"] = r.relax_shown;
         relax["pieces_held"] = r.pieces_held;
+        relax["region_vertices"] = r.relax_region_vertices;
+        relax["far_vertices"] = r.relax_far_vertices;
         if (!r.relax_refusal.empty()) relax["refusal"] = r.relax_refusal;
         json["relax"] = relax;
     }
@@ -65,6 +67,9 @@ nlohmann::ordered_json to_json(const Options& options, bool degeneracy_service) 
     json["remove_loose"] = options.remove_loose_pieces;
     json["cut_label"] = options.cut_label;
     json["split_beyond"] = options.split_beyond;
+    json["relax_iterations"] = options.relax_iterations;
+    json["local_vertices"] = options.local_vertices;
+    json["far_vertices"] = options.far_vertices;
     return json;
 }
 

@@ -57,6 +57,7 @@ struct DegeneracyService;
 }
 namespace sxk::elasticity {
 class Simulation;
+struct RelaxReport;
 }
 
 namespace sxk::snapcut {
@@ -110,6 +111,16 @@ struct Options {
     bool remove_loose_pieces = false;
     // With a simulation: CG iterations after each step (a frame's worth; warm started).
     std::size_t relax_iterations = 100;
+    // With a simulation: relax only around what the step changed (the vertices of the elements it
+    // edited and the nodes it moved, then their neighbours ring by ring, up to this many
+    // vertices), the rest of the body held (Simulation::relax_near): a step's relaxation then
+    // costs the same on any mesh size, and the far field lags until a whole-body relaxation (the
+    // needle's Options::local_vertices, docs/elasticity.md "Local relaxation"). 0: the whole
+    // body every step.
+    std::size_t local_vertices = 0;
+    // With local_vertices: after each step's relaxation one more block of at most this many
+    // vertices where the far field is most out of balance (Simulation::relax_far). 0: none.
+    std::size_t far_vertices = 0;
     // Find a sweep's elements from those the blade lay in before it (blade_track.hpp); false:
     // ask the spatial index along the whole blade every sweep. The cut is the same either way
     // (tests/plugins/snapcut_track_test.cpp); following costs less on large meshes.
@@ -155,6 +166,9 @@ struct CutStepReport {
     // the simulation's relaxation after the step (with CutServices::simulation)
     bool relaxed = false;
     std::size_t relax_iterations = 0, pieces_held = 0;
+    // with Options::local_vertices: the vertices the step's relaxation solved for (0: the whole
+    // body), and the far-field block's
+    std::size_t relax_region_vertices = 0, relax_far_vertices = 0;
     bool relax_converged = false, relax_shown = false;
     double relax_residual = 0;
     std::string relax_refusal;  // why it could not relax (the cut stands)
@@ -240,6 +254,8 @@ private:
     Outcome<Done> settle_loose_pieces();
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
+    // Options::local_vertices: the simulation's relax_near around what the step changed.
+    Outcome<elasticity::RelaxReport> relax_near_step();
 
     Options m_options;
     CutServices m_services;

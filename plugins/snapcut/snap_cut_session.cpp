@@ -116,19 +116,41 @@ void SnapCutSession::relax(StepReport& report) {
         m_last.pieces_held += *held;
     }
     if (m_last.relax_refusal.empty()) {
-        if (auto relaxed = m_services.simulation->relax(m_options.relax_iterations)) {
+        auto relaxed = m_options.local_vertices > 0 ? relax_near_step() : m_services.simulation->relax(m_options.relax_iterations);
+        if (relaxed) {
             m_last.relax_iterations = relaxed->iterations;
             m_last.relax_converged = relaxed->converged;
             m_last.relax_residual = relaxed->residual;
             m_last.relax_shown = relaxed->shown;
+            m_last.relax_region_vertices = relaxed->region_vertices;
         } else {
             m_last.relax_refusal = relaxed.reason();
+        }
+    }
+    if (m_last.relax_refusal.empty() && m_options.local_vertices > 0 && m_options.far_vertices > 0) {
+        if (auto far = m_services.simulation->relax_far(m_options.relax_iterations, m_options.far_vertices)) {
+            m_last.relax_iterations += far->iterations;
+            m_last.relax_far_vertices = far->region_vertices;
+        } else {
+            m_last.relax_refusal = far.reason();
         }
     }
     report.actions.push_back(m_last.relax_refusal.empty()
                                  ? "relaxed " + std::to_string(m_last.relax_iterations) + " iterations"
                                  : "not relaxed: " + m_last.relax_refusal);
     m_last.seconds_relax = seconds_since(start);
+}
+
+// Around what the step changed: the corners of the elements it edited that are still there, and
+// the nodes it moved (snapped).
+Outcome<elasticity::RelaxReport> SnapCutSession::relax_near_step() {
+    std::vector<VertexId> seeds(vertices_moved_in_step().begin(), vertices_moved_in_step().end());
+    for (const ElementId t : elements_edited_in_step())
+        if (mesh().is_element(t))
+            for (const VertexId v : mesh().simplex(t).vertices()) seeds.push_back(v);
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+    return m_services.simulation->relax_near(seeds, m_options.relax_iterations, m_options.local_vertices);
 }
 
 bool same_blade(const Scalpel& a, const Scalpel& b) { return a.handle == b.handle && a.tip == b.tip; }

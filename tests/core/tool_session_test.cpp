@@ -214,5 +214,42 @@ TEST(ToolSession, TheToolSeesTheElementsItsStepEditedSoFar) {
     EXPECT_TRUE(mesh.validate().ok());
 }
 
+// vertices_moved_in_step(): the vertices the step has moved so far, empty at the start of each
+// step and outside apply().
+class MovingTool final : public ToolSession {
+public:
+    using ToolSession::ToolSession;
+    std::vector<std::vector<VertexId>> seen;  // before and after the move, per step
+    std::size_t outside() const { return vertices_moved_in_step().size(); }
+
+protected:
+    Outcome<Done> apply(const ToolPose& pose, StepReport&) override {
+        seen.emplace_back(vertices_moved_in_step().begin(), vertices_moved_in_step().end());
+        const std::array<VertexId, 2> v{4, 1};
+        const std::array<Point, 2> p{pose.position, mesh().reference(1)};
+        if (auto moved = mesh().move_vertices(v, p, PositionSet::deformed, MoveCheck{true, true}); !moved)
+            return moved.refusal();
+        seen.emplace_back(vertices_moved_in_step().begin(), vertices_moved_in_step().end());
+        return Done{};
+    }
+};
+
+TEST(ToolSession, TheToolSeesTheVerticesItsStepMovedSoFar) {
+    Mesh mesh = test::planar_grid(2);  // vertex 4: the middle of a 3 x 3 grid of vertices
+    MovingTool tool(mesh);
+    EXPECT_EQ(tool.outside(), 0u);
+    ToolPose pose;
+    pose.position = {0.9, 1.1, 0};
+    ASSERT_TRUE(tool.step(pose).ok());
+    ASSERT_EQ(tool.seen.size(), 2u);
+    EXPECT_TRUE(tool.seen[0].empty());
+    EXPECT_EQ(tool.seen[1], (std::vector<VertexId>{4, 1}));
+    EXPECT_EQ(tool.outside(), 0u);
+    pose.position = {1.1, 0.9, 0};
+    ASSERT_TRUE(tool.step(pose).ok());  // the next step starts from nothing again
+    EXPECT_TRUE(tool.seen[2].empty());
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 }  // namespace
 }  // namespace sxk

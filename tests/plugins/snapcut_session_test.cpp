@@ -2,6 +2,7 @@
 // refusals, the tool through the host. Every cut ends with validate().
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/fixtures.hpp"
@@ -317,6 +318,47 @@ TEST(SnapCut, ADeformingBodyIsRelaxedAfterEveryStepAndTheCutFollowsIt) {
     }
     expect_valid(mesh);
     EXPECT_GT(dissected, 50u);
+    EXPECT_EQ((*simulation)->total_iterations(), settled->iterations + relaxed);
+    ASSERT_TRUE(session->cancel());
+    expect_same_state(mesh, loaded);
+}
+
+// Options::local_vertices: each step relaxes only around what it changed (bounded regions), the
+// far field by blocks with far_vertices; the iterations reported are those the simulation ran, and
+// undoing every step gives back the deformed mesh of before the cut.
+TEST(SnapCut, ALocalRelaxationAfterEachStepStaysAroundWhatTheStepChanged) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    const std::vector<std::string> words{"--fix", "y<0.001", "--force", "y>7.99:0,20000,0", "--E", "1e5"};
+    auto simulation = elasticity::simulate(mesh, words);
+    ASSERT_TRUE(simulation) << simulation.reason();
+    const auto settled = (*simulation)->relax(100000);
+    ASSERT_TRUE(settled && settled->converged && settled->shown);
+    const Mesh loaded = mesh;
+    snapcut::Options options;
+    options.relax_iterations = 200;
+    options.local_vertices = 120;
+    options.far_vertices = 120;
+    auto session = SnapCutSession::make(mesh, options, {degeneracy_service(), simulation->get()}).value();
+    std::size_t dissected = 0, largest_region = 0, far_blocks = 0, relaxed = 0;
+    for (const Scalpel& scalpel : plane_path(diagonal_point, diagonal_normal, -8, 8, -1, 10, 24)) {
+        ASSERT_TRUE(session->cut(scalpel));
+        const auto& r = session->last_step();
+        EXPECT_TRUE(r.relaxed);
+        EXPECT_EQ(r.relax_refusal, "");
+        if (r.faces_dissected > 0) {
+            EXPECT_GT(r.relax_region_vertices, 0u);  // a region, not the whole body (0)
+            EXPECT_GT(r.relax_iterations, 0u);
+        }
+        largest_region = std::max(largest_region, r.relax_region_vertices);
+        far_blocks += r.relax_far_vertices > 0;
+        dissected += r.faces_dissected;
+        relaxed += r.relax_iterations;
+    }
+    expect_valid(mesh);
+    EXPECT_GT(dissected, 50u);
+    // the region is the step's seeds and their rings up to 120 vertices: well short of the body
+    EXPECT_LT(largest_region, mesh.vertex_count() / 2) << "of " << mesh.vertex_count();
+    EXPECT_GT(far_blocks, 0u);
     EXPECT_EQ((*simulation)->total_iterations(), settled->iterations + relaxed);
     ASSERT_TRUE(session->cancel());
     expect_same_state(mesh, loaded);

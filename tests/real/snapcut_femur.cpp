@@ -2,7 +2,8 @@
 // tetrahedralised by TetGen -pq1.4 (tools/make-data: 47,733 nodes, 212,936 tetrahedra), deformed
 // by a load (the elasticity plug-in's simulation: the lower end held, the upper end pushed
 // sideways by 4 N, E = 1e6), cut through the shaft by the 20-sample curved path of
-// tests/data/paths/femur-shaft.path with the simulation relaxed after every step. Then: a valid
+// tests/data/paths/femur-shaft.path with the simulation relaxed after every step (the whole body,
+// and again only around what each step changed: Options::local_vertices). Then: a valid
 // mesh with no element inverted or flat in either configuration; no degenerate element on the cut
 // (TetGen's own boundary needles, about 30, are not the cut's); the bone in two pieces; the
 // corners of the cut's faces within half a mean edge length h of the scalpel's sweep
@@ -80,7 +81,9 @@ bool degenerate(const Mesh& mesh, ElementId t) {
     return aspect_ratio(element_points(mesh, t, Positions::reference)) < 0.01;
 }
 
-TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
+// The cut with the simulation relaxed after each step: the whole body `relax_iterations` CG
+// iterations (local_vertices 0), or only around what the step changed (Options::local_vertices).
+void cut_the_deformed_femur(std::size_t relax_iterations, std::size_t local_vertices) {
     const std::string femur = make_femur();
     ASSERT_FALSE(femur.empty()) << "tools/make-data femur failed";
     Mesh mesh = read_mesh(femur);
@@ -105,7 +108,8 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
     const Mesh loaded = mesh;
 
     snapcut::Options options;
-    options.relax_iterations = 20;
+    options.relax_iterations = relax_iterations;
+    options.local_vertices = local_vertices;
     auto session = snapcut::SnapCutSession::make(
                        mesh, options, {host.service<degeneracy::DegeneracyService>().value(), simulation->get()})
                        .value();
@@ -120,6 +124,7 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
         const auto stepped = session->cut(scalpel);
         ASSERT_TRUE(stepped) << "step " << i << ": " << stepped.reason();
         EXPECT_EQ(session->last_step().relax_refusal, "") << "step " << i;
+        if (local_vertices > 0) EXPECT_LE(session->last_step().relax_region_vertices, local_vertices) << "step " << i;
         loose += session->last_step().loose_pieces.size();
         // the corners of the faces this step selected, right after the snapping, and of those it
         // opened, right after the dissection (before the relaxation moves them)
@@ -162,6 +167,12 @@ TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) {
     ASSERT_TRUE(session->cancel());
     expect_same_state(mesh, loaded);
 }
+
+TEST(SnapCutFemur, ACurvedCutThroughTheShaftOfADeformedFemur) { cut_the_deformed_femur(20, 0); }
+
+// The same with each step's relaxation around what it changed, 300 vertices (a step's region is
+// the seeds, a few hundred corners at most here, then rings up to 300): the same invariants.
+TEST(SnapCutFemur, TheSameCutRelaxedOnlyAroundEachStep) { cut_the_deformed_femur(200, 300); }
 
 // The recorded femur path with each sample moved by `moved`, each movement in `steps` steps (the
 // handle and the tip interpolated linearly; the samples themselves kept exactly).

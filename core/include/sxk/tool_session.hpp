@@ -92,6 +92,11 @@ protected:
     // step, so a tool that follows what its own edits made (a cutter carrying its marks over to
     // new edges) keeps how far it has read. Empty outside apply().
     std::span<const ElementId> elements_edited_in_step() const;
+    // Inside apply(): the vertices the step's edits have moved so far (Mesh::move_vertices, in
+    // either position set), in the order of their events (a vertex may repeat). With
+    // elements_edited_in_step(), where the step changed the body: a simulation relaxes around
+    // them (Simulation::relax_near). Empty outside apply().
+    std::span<const VertexId> vertices_moved_in_step() const;
 
 private:
     Mesh& m_mesh;
@@ -103,6 +108,7 @@ private:
     std::vector<Kept> m_kept;
     std::uint64_t m_revision = 0;  // the mesh's revision after this session's last change
     const std::vector<ElementId>* m_step_elements = nullptr;  // the step watcher's, during apply()
+    const std::vector<VertexId>* m_step_vertices = nullptr;   // the same
     bool m_ended = false;
 };
 
