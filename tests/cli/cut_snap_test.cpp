@@ -233,6 +233,32 @@ TEST(SxkCutSnap, ListedAsAPluginCommandAndCutsADeformingBody) {
     EXPECT_EQ(bad.err, "sxk: cut snap: --deform: deform: --fix 'x<-5' selects no vertex of the mesh\n");
 }
 
+// --local N: each step relaxes a region around what it changed; the JSON says how large, and the
+// options carry it.
+TEST(SxkCutSnap, ADeformingBodyRelaxedOnlyAroundEachStep) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const ProcessResult run = f.cut(path, {"--json", "--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5",
+                                           "--relax-iterations", "200", "--local", "100", "--far", "50"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["options"]["local_vertices"], 100);
+    EXPECT_EQ(json["options"]["far_vertices"], 50);
+    std::size_t cutting = 0;
+    for (const auto& step : json["steps"]) {
+        if (step["faces_dissected"].get<int>() == 0) continue;
+        ++cutting;
+        EXPECT_GT(step["relax"]["region_vertices"].get<int>(), 0) << step.dump();
+        EXPECT_LT(step["relax"]["region_vertices"].get<int>(), 729) << step.dump();
+    }
+    EXPECT_GT(cutting, 0u);
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+    const ProcessResult bad = f.cut(path, {"--deform", "--fix y<0.001", "--local", "-3"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err, "sxk: cut snap: --local: '-3' is not a whole number in 0..100000000\n"
+                       "Run 'sxk cut snap --help' for more information.\n");
+}
+
 TEST(SxkGenerate, TheThesisCubeAndTheDelaunayCylinder) {
     ScratchFolder folder;
     const ProcessResult cube = sxk({"generate", (folder / "cube.mesh").string(), "--cells", "8"});

@@ -6,13 +6,18 @@
 // several runs of the cut on fresh copies, and their ratio between the meshes - the peer is the
 // small femur, as a step must cost the same on a mesh 6 times larger.
 //
-//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=[index:][reordered:]MESH.ele [NAME=...]
+//   snapcut_latency PATH [--substeps N | --rate HZ] NAME=[deformed:|local:][index:][reordered:]MESH.ele [NAME=...]
 //
 // The first mesh is the peer of the others. `reordered:` renumbers a mesh as `sxk convert
 // --reorder` does (Cuthill-McKee vertices, elements by their lowest vertex) before it is cut:
 // TetGen's numbering against a cache-friendly one (docs/performance.md "snapcut"). `index:` cuts
 // it asking the spatial index along the whole blade every sweep (Options::follow_blade false)
-// instead of following the blade through the elements.
+// instead of following the blade through the elements. `deformed:` cuts the femur deformed by
+// the load of tests/real/snapcut_femur.cpp (the lower end held, the upper end pushed sideways by
+// 4 N; 500 CG iterations before the cut, not timed) and relaxes the whole body 20 CG iterations
+// after every step; `local:` the same, relaxing only around what each step changed
+// (Options::local_vertices 300, up to 200 iterations). The loads name the femur's coordinates:
+// femur meshes only.
 // --substeps N replays each movement of the path as N movements (handle and tip interpolated
 // linearly); --rate HZ as many as a device sampling at HZ takes over the movement's time in the
 // path (--rate 1000: a haptic loop's steps). A step then moves the blade a fraction of an
@@ -26,12 +31,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "figure_line.hpp"
 #include "percentile.hpp"
 #include "degeneracy_plugin.hpp"
+#include "simulation.hpp"
 #include "snap_cut.hpp"
 #include "sxk/io.hpp"
 #include "sxk/ops/reorder_vertices.hpp"
@@ -58,19 +65,35 @@ struct Figures {
     double searched = 0, hit = 0;  // elements searched, edges hit: means over the cutting steps
     double rounds = 0;  // selection rounds (sweeps and their repeats): mean over the cutting steps
     double per_face = 0;  // ms of cutting steps per dissected face
+    double relax = 0, relax99 = 0;  // with a simulation: the relaxation's median and p99, ms
+    double relax_iterations = 0;    // and its CG iterations: mean over the cutting steps
 };
 
+// The femur deformed as tests/real/snapcut_femur.cpp deforms it, relaxed 500 CG iterations.
+std::unique_ptr<sxk::elasticity::Simulation> deform_femur(Mesh& mesh) {
+    const std::vector<std::string> loads{"--fix", "z<-0.45", "--force", "z>0.45:4,0,0", "--E", "1e6", "--nu", "0.3",
+                                         "--tol", "1e-3"};
+    auto made = sxk::elasticity::simulate(mesh, loads);
+    if (!made) throw std::runtime_error(made.reason());
+    std::unique_ptr<sxk::elasticity::Simulation> simulation = std::move(*made);
+    if (auto settled = simulation->relax(500); !settled) throw std::runtime_error(settled.reason());
+    return simulation;
+}
+
 Figures measure(const std::string& name, const Mesh& original, const std::vector<Scalpel>& path,
-                const sxk::snapcut::Options& options) {
+                const sxk::snapcut::Options& options, bool deformed) {
     Figures f;
     f.name = name;
     f.elements = original.element_count();
-    std::vector<double> step, select, snap, dissect, degeneracy_ms, pieces, per_face;
+    std::vector<double> step, select, snap, dissect, degeneracy_ms, pieces, per_face, relax;
     for (int run = 0; run < runs; ++run) {
         Mesh mesh = original;
+        std::unique_ptr<sxk::elasticity::Simulation> simulation;
+        if (deformed) simulation = deform_femur(mesh);
         const auto start = std::chrono::steady_clock::now();
-        auto session =
-            sxk::snapcut::SnapCutSession::make(mesh, options, {sxk::degeneracy::linked_in_service(), nullptr}).value();
+        auto session = sxk::snapcut::SnapCutSession::make(mesh, options,
+                                                          {sxk::degeneracy::linked_in_service(), simulation.get()})
+                           .value();
         f.index_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::size_t dissected = 0;
         const std::size_t first = step.size();
@@ -88,6 +111,8 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
             dissect.push_back(r.seconds_dissect * 1e3);
             degeneracy_ms.push_back(r.seconds_degeneracy * 1e3);
             pieces.push_back(r.seconds_pieces * 1e3);
+            relax.push_back(r.seconds_relax * 1e3);
+            f.relax_iterations += double(r.relax_iterations);
         }
         f.dissected = dissected;
         double total = 0;
@@ -110,18 +135,22 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     f.dissect99 = percentile(dissect, 0.99);
     f.degeneracy99 = percentile(degeneracy_ms, 0.99);
     f.pieces99 = percentile(pieces, 0.99);
+    f.relax = percentile(relax, 0.5);
+    f.relax99 = percentile(relax, 0.99);
     f.cutting_steps = step.size() / runs;
     f.searched /= double(step.size());
     f.hit /= double(step.size());
     f.rounds /= double(step.size());
+    f.relax_iterations /= double(step.size());
     std::fprintf(stderr,
                  "%s (%zu tets): %zu cutting steps, median %.3f ms, p99 %.3f, max %.3f; phases median/p99: select "
                  "%.3f/%.3f, snap %.3f/%.3f, dissect %.3f/%.3f, degeneracy %.3f/%.3f, pieces %.3f/%.3f; %zu faces "
                  "dissected, %+lld elements, %.3f ms per dissected face; per step %.0f elements searched, %.0f edges hit, "
-                 "%.1f selection rounds; index %.2f s\n",
+                 "%.1f selection rounds; index %.2f s; relaxation median/p99 %.3f/%.3f ms, %.1f CG iterations\n",
                  name.c_str(), f.elements, f.cutting_steps, f.median, f.p99, f.max, f.select, f.select99, f.snap,
                  f.snap99, f.dissect, f.dissect99, f.degeneracy, f.degeneracy99, f.pieces, f.pieces99, f.dissected,
-                 f.new_elements, f.per_face, f.searched, f.hit, f.rounds, f.index_build);
+                 f.new_elements, f.per_face, f.searched, f.hit, f.rounds, f.index_build, f.relax, f.relax99,
+                 f.relax_iterations);
     return f;
 }
 
@@ -133,7 +162,8 @@ void line(const std::string& name, const char* unit, double ours, double peer, c
 
 int main(int argc, char** argv) {
     const char* usage =
-        "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=[index:][reordered:]MESH.ele [NAME=...]\n";
+        "usage: snapcut_latency PATH [--substeps N | --rate HZ] NAME=[deformed:|local:][index:][reordered:]MESH.ele "
+        "[NAME=...]\n";
     int first_mesh = 2;
     int substeps = 1;  // per movement
     double rate = 0;   // samples per second of the path's time column (0: by substeps)
@@ -179,13 +209,20 @@ int main(int argc, char** argv) {
                 return true;
             };
             sxk::snapcut::Options options;
+            const bool local = prefixed("local:");
+            const bool deformed = local || prefixed("deformed:");
+            options.relax_iterations = local ? 200 : 20;
+            options.local_vertices = local ? 300 : 0;
             options.follow_blade = !prefixed("index:");
             const bool reorder = prefixed("reordered:");
-            std::fprintf(stderr, "snapcut_latency: reading %s%s%s\n", file.c_str(), reorder ? " (reordered)" : "",
-                         options.follow_blade ? "" : " (the index every sweep)");
+            std::fprintf(stderr, "snapcut_latency: reading %s%s%s%s\n", file.c_str(), reorder ? " (reordered)" : "",
+                         options.follow_blade ? "" : " (the index every sweep)",
+                         local      ? " (deformed, relaxed around each step)"
+                         : deformed ? " (deformed, relaxed whole)"
+                                    : "");
             Mesh mesh = sxk::read_mesh(file);
             if (reorder) mesh = sxk::renumbered(mesh, sxk::cuthill_mckee_order(mesh));
-            all.push_back(measure(name, mesh, path, options));
+            all.push_back(measure(name, mesh, path, options, deformed));
         }
         const Figures& peer = all.front();
         for (const Figures& f : all) {
@@ -199,6 +236,10 @@ int main(int argc, char** argv) {
             line(what + ": loose pieces (median)", "ms", f.pieces, peer.pieces, peer.name);
             line(what + ": loose pieces (p99)", "ms", f.pieces99, peer.pieces99, peer.name);
             line(what + ": degeneracy removal (p99)", "ms", f.degeneracy99, peer.degeneracy99, peer.name);
+            if (f.relax > 0 || peer.relax > 0) {
+                line(what + ": relaxation (median)", "ms", f.relax, peer.relax, peer.name);
+                line(what + ": relaxation (p99)", "ms", f.relax99, peer.relax99, peer.name);
+            }
             line("snap cut on " + f.name + how + ": cutting time per dissected face", "ms", f.per_face, peer.per_face,
                  peer.name);
             line("snap cut on " + f.name + how + ": new elements per dissected face", "elements",
