@@ -99,6 +99,26 @@ void LocalRelaxation::assemble(const ElasticBody& body) {
         for (std::size_t k = row_begin; k < m_columns.size(); ++k) m_slot[m_columns[k]] = none;
         m_row_start.push_back(m_columns.size());
     }
+    // block Jacobi: each region row's diagonal block inverted (a triangle's in its plane); a block
+    // that is not positive (no element of positive volume around the vertex) is left out (I)
+    using Block = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>;
+    m_inverse_diagonal.resize(m_region);
+    for (std::size_t i = 0; i < m_region; ++i) {
+        Eigen::Matrix3d block = Eigen::Matrix3d::Identity();
+        for (std::size_t k = m_row_start[i]; k < m_row_start[i + 1]; ++k)
+            if (m_columns[k] == i) block = Block(m_blocks[k].data());
+        if (m_dimension == 2) block(2, 2) = 1;
+        m_inverse_diagonal[i] = Eigen::Matrix3d::Identity();
+        if (block.determinant() > 0) m_inverse_diagonal[i] = block.inverse();
+    }
+}
+
+void LocalRelaxation::block_jacobi(const ElasticBody& body, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+    z.setZero(r.size());
+    for (std::size_t i = 0; i < m_region; ++i)
+        z.segment<3>(3 * static_cast<Eigen::Index>(i)) =
+            m_inverse_diagonal[i] * r.segment<3>(3 * static_cast<Eigen::Index>(i));
+    project(body, z);
 }
 
 void LocalRelaxation::unmark() {
@@ -180,15 +200,21 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
     residual();
     double rr = r.squaredNorm();
     solve.history.push_back(std::sqrt(rr));
-    d = r;
     auto times_k = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
         multiply(x, out);
         ++solve.evaluations;
     };
     auto allowed = [&](Eigen::VectorXd& x) { project(body, x); };
+    Eigen::VectorXd z(size);
+    auto precondition = [&](const Eigen::VectorXd& x) -> const Eigen::VectorXd& {
+        block_jacobi(body, x, z);
+        return z;
+    };
+    d = precondition(r);
+    double rz = r.dot(d);
     while (std::sqrt(rr) > solve.threshold && solve.iterations < options.max_iterations &&
-           detail::cg_iteration(u, r, d, q, rr, solve.iterations, options.recompute_every, times_k, allowed,
-                                residual))
+           detail::preconditioned_cg_iteration(u, r, d, q, rr, rz, solve.iterations, options.recompute_every, times_k,
+                                               allowed, residual, precondition))
         solve.history.push_back(std::sqrt(rr));
     solve.residual = std::sqrt(rr);
     solve.converged = solve.residual <= solve.threshold;

@@ -69,6 +69,9 @@ private:
     // out = K d on the region's rows; the rim's rows are left zero (the projection zeroes them
     // anyway). d and out: 3 per local vertex.
     void multiply(const Eigen::VectorXd& d, Eigen::VectorXd& out) const;
+    // z = P M^-1 r, M the diagonal blocks of the region's rows (block Jacobi: on the femur, whose
+    // slivers make K ill-conditioned, it halves a local solve's CG iterations)
+    void block_jacobi(const ElasticBody& body, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
     // v onto the motions the region allows: the body's constraints, a planar body's z, the rim held
     void project(const ElasticBody& body, Eigen::VectorXd& v) const;
     // forgets the marks of the last solve (in time proportional to its region)
@@ -89,6 +92,7 @@ private:
     std::vector<std::size_t> m_row_start;
     std::vector<std::uint32_t> m_columns, m_slot;
     std::vector<std::array<double, 9>> m_blocks;
+    std::vector<Eigen::Matrix3d> m_inverse_diagonal;  // per region row: its diagonal block inverted
     int m_dimension = 3;
 };
 

@@ -160,31 +160,46 @@ Eigen::SparseMatrix<double> assemble_stiffness(const ElasticBody& body);
 Outcome<SolveReport> solve_assembled_cg(ElasticBody& body, const SolveOptions& options = {});
 
 namespace detail {
-// One iteration of projected linear CG (thesis §2.4.1 with the constraints of §6.6), shared by
-// LinearRelaxation (the whole body) and LocalRelaxation (a region): u the unknowns, r = P(f - K u)
-// the residual, d the direction (in the allowed space), rr = |r|^2; multiply(d, q) sets q = K d,
+// One iteration of projected, preconditioned linear CG (thesis §2.4.1 with the constraints of
+// §6.6), shared by LinearRelaxation (the whole body, unpreconditioned: cg_iteration below) and
+// LocalRelaxation (a region, block Jacobi): u the unknowns, r = P(f - K u) the residual, d the
+// direction (in the allowed space), rr = |r|^2, rz = r^T z with z = precondition(r) (a reference
+// to z, in the allowed space: P M^-1 P r; r itself for none). multiply(d, q) sets q = K d,
 // project(q) projects q in place, residual() recomputes r afresh (every recompute_every
 // iterations, against drift). False, nothing changed, when d^T K d is not positive (d = 0, or K
 // not positive on d): no progress is possible.
-template <class Unknowns, class Multiply, class Project, class Residual>
-bool cg_iteration(Unknowns&& u, Eigen::VectorXd& r, Eigen::VectorXd& d, Eigen::VectorXd& q, double& rr,
-                  std::size_t& iterations, std::size_t recompute_every, const Multiply& multiply,
-                  const Project& project, const Residual& residual) {
+template <class Unknowns, class Multiply, class Project, class Residual, class Precondition>
+bool preconditioned_cg_iteration(Unknowns&& u, Eigen::VectorXd& r, Eigen::VectorXd& d, Eigen::VectorXd& q,
+                                 double& rr, double& rz, std::size_t& iterations, std::size_t recompute_every,
+                                 const Multiply& multiply, const Project& project, const Residual& residual,
+                                 const Precondition& precondition) {
     multiply(d, q);
     project(q);  // P K P: d is already in the allowed space
     const double dq = d.dot(q);
     if (!(dq > 0)) return false;
-    const double alpha = rr / dq;
+    const double alpha = rz / dq;
     u += alpha * d;
     ++iterations;
     if (recompute_every > 0 && iterations % recompute_every == 0)
         residual();
     else
         r -= alpha * q;
-    const double next = r.squaredNorm();
-    d = r + (next / rr) * d;
-    rr = next;
+    rr = r.squaredNorm();
+    const Eigen::VectorXd& z = precondition(r);
+    const double next = &z == &r ? rr : r.dot(z);
+    d = z + (next / rz) * d;
+    rz = next;
     return true;
+}
+
+// The same without a preconditioner (z = r, rz = rr).
+template <class Unknowns, class Multiply, class Project, class Residual>
+bool cg_iteration(Unknowns&& u, Eigen::VectorXd& r, Eigen::VectorXd& d, Eigen::VectorXd& q, double& rr,
+                  std::size_t& iterations, std::size_t recompute_every, const Multiply& multiply,
+                  const Project& project, const Residual& residual) {
+    double rz = rr;
+    return preconditioned_cg_iteration(u, r, d, q, rr, rz, iterations, recompute_every, multiply, project, residual,
+                                       [](const Eigen::VectorXd& x) -> const Eigen::VectorXd& { return x; });
 }
 
 // What both solvers check first: some vertex is constrained (else bad_argument: K is singular),

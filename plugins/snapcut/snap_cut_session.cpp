@@ -116,7 +116,8 @@ void SnapCutSession::relax(StepReport& report) {
         m_last.pieces_held += *held;
     }
     if (m_last.relax_refusal.empty()) {
-        auto relaxed = m_options.local_vertices > 0 ? relax_near_step() : m_services.simulation->relax(m_options.relax_iterations);
+        auto relaxed = m_options.local_vertices > 0 ? relax_near_step()
+                                                    : m_services.simulation->relax(m_options.relax_iterations);
         if (relaxed) {
             m_last.relax_iterations = relaxed->iterations;
             m_last.relax_converged = relaxed->converged;
