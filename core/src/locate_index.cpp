@@ -165,11 +165,11 @@ void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const 
     detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
     detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
     for (const ElementId t : around) {
-        element_boxes.follow(t, detail::BoxTree<D>::extent_of(detail::element_points(mesh, t, positions).span()));
+        element_boxes.follow(t, detail::element_extent<D>(mesh, t, positions));
         for (int i = 0; i < mesh.element_vertex_count(); ++i)
             if (mesh.neighbor(t, i) == invalid_id) {
                 const FaceId f = mesh.face(t, i);
-                face_boxes.follow(f, detail::BoxTree<D>::extent_of(detail::face_points(mesh, f, positions).span()));
+                face_boxes.follow(f, detail::face_extent<D>(mesh, f, positions));
             }
     }
 }
@@ -178,13 +178,9 @@ void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const 
 // re-boxed, re-entered only where it left its entry's box.
 template <int D>
 void refit_trees(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
-    using Extent = typename detail::BoxTree<D>::Extent;
-    detail::element_tree<D>(trees).refit([&](std::uint32_t t) -> Extent {
-        return detail::BoxTree<D>::extent_of(detail::element_points(mesh, t, positions).span());
-    });
-    detail::face_tree<D>(trees).refit([&](std::uint32_t f) -> Extent {
-        return detail::BoxTree<D>::extent_of(detail::face_points(mesh, f, positions).span());
-    });
+    detail::element_tree<D>(trees).refit(
+        [&](std::uint32_t t) { return detail::element_extent<D>(mesh, t, positions); });
+    detail::face_tree<D>(trees).refit([&](std::uint32_t f) { return detail::face_extent<D>(mesh, f, positions); });
 }
 
 // The box `stored` holds the tight box `tight` (boxes are conservative, locate_trees.hpp).

@@ -554,13 +554,23 @@ inline ElementPoints face_points(const Mesh& mesh, FaceId f, Positions positions
     return e;
 }
 
+// The extent of an element's or a face's positions (what a moved id is tested against), and the
+// box the tree stores for it.
+template <int D>
+typename BoxTree<D>::Extent element_extent(const Mesh& mesh, ElementId t, Positions positions) {
+    return BoxTree<D>::extent_of(element_points(mesh, t, positions).span());
+}
+template <int D>
+typename BoxTree<D>::Extent face_extent(const Mesh& mesh, FaceId f, Positions positions) {
+    return BoxTree<D>::extent_of(face_points(mesh, f, positions).span());
+}
 template <int D>
 typename BoxTree<D>::Box element_box(const Mesh& mesh, ElementId t, Positions positions) {
-    return BoxTree<D>::box_of(element_points(mesh, t, positions).span());
+    return BoxTree<D>::box_of(element_extent<D>(mesh, t, positions));
 }
 template <int D>
 typename BoxTree<D>::Box face_box(const Mesh& mesh, FaceId f, Positions positions) {
-    return BoxTree<D>::box_of(face_points(mesh, f, positions).span());
+    return BoxTree<D>::box_of(face_extent<D>(mesh, f, positions));
 }
 
 inline double distance_squared(const Point& a, const Point& b) {

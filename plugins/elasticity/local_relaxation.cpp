@@ -74,6 +74,7 @@ void LocalRelaxation::assemble(const ElasticBody& body) {
     m_columns.clear();
     m_blocks.clear();
     if (m_slot.size() < m_vertices.size()) m_slot.resize(m_vertices.size(), none);
+    m_inverse_diagonal.resize(m_region);
     std::array<std::array<double, 9>, 4> row{};  // an element's blocks in the row being assembled
     for (std::size_t i = 0; i < m_region; ++i) {
         const std::size_t row_begin = m_columns.size();
@@ -97,20 +98,16 @@ void LocalRelaxation::assemble(const ElasticBody& body) {
                 for (std::size_t k = 0; k < 9; ++k) sum[k] += row[l][k];  // 9: unrolled, and vectorised
             }
         }
+        // block Jacobi: the row's diagonal block inverted (a triangle's in its plane); a block that
+        // is not positive (no element of positive volume around the vertex) is left out (I)
+        Eigen::Matrix3d diagonal = Eigen::Matrix3d::Identity();
+        if (m_slot[i] != none)
+            diagonal = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(m_blocks[m_slot[i]].data());
+        if (m_dimension == 2) diagonal(2, 2) = 1;
+        m_inverse_diagonal[i] = Eigen::Matrix3d::Identity();
+        if (diagonal.determinant() > 0) m_inverse_diagonal[i] = diagonal.inverse();
         for (std::size_t k = row_begin; k < m_columns.size(); ++k) m_slot[m_columns[k]] = none;
         m_row_start.push_back(m_columns.size());
-    }
-    // block Jacobi: each region row's diagonal block inverted (a triangle's in its plane); a block
-    // that is not positive (no element of positive volume around the vertex) is left out (I)
-    using Block = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>;
-    m_inverse_diagonal.resize(m_region);
-    for (std::size_t i = 0; i < m_region; ++i) {
-        Eigen::Matrix3d block = Eigen::Matrix3d::Identity();
-        for (std::size_t k = m_row_start[i]; k < m_row_start[i + 1]; ++k)
-            if (m_columns[k] == i) block = Block(m_blocks[k].data());
-        if (m_dimension == 2) block(2, 2) = 1;
-        m_inverse_diagonal[i] = Eigen::Matrix3d::Identity();
-        if (block.determinant() > 0) m_inverse_diagonal[i] = block.inverse();
     }
 }
 

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <memory>
 #include <span>
 #include <utility>
@@ -234,10 +235,9 @@ int main(int argc, char** argv) {
                               {"h3, 720 x 720 cells, far field blocks", 3, 720, local_vertices, local_vertices},
                               {"h3, half the region", 3, 0, 0, half},
                               {"h5, half the region", 5, 0, 0, half}};
-        constexpr int case_count = 7;
-        double median[case_count], p99[case_count];
-        Run runs[case_count];
-        for (int i = 0; i < case_count; ++i) {
+        std::vector<double> median(std::size(cases)), p99(std::size(cases));
+        std::vector<Run> runs(std::size(cases));
+        for (std::size_t i = 0; i < std::size(cases); ++i) {
             const Run& run = runs[i] =
                 insert(cases[i].k_start, 6, 0.1, cases[i].local, cases[i].cells, cases[i].far);
             median[i] = 1e3 * percentile(run.latency, 0.5);
