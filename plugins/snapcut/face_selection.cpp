@@ -63,6 +63,23 @@ double distance_to_sweep(const Sweep& sweep, const Point& p) { return std::sqrt(
 
 namespace {
 
+// A tetrahedron's corners as the selection sees them meet the sweep triangle (a, b, c), exactly.
+// The selection sees a dissection's copy of a snapped node where its original was, so there a
+// tetrahedron may be flat (two corners at one point, or four in a plane) while it is proper where
+// it lies. triangle_meets_tetrahedron lets a flat one meet nothing, but its edges are edges of the
+// mesh, and the selection marks every edge the sweep crosses whatever the shape of the elements
+// around it (as close_over_crossed_edges finds them): a flat one meets the sweep where one of its
+// edges crosses it. Without this, asking the index missed an edge that following the blade marked
+// (an edge whose only element was flat as the selection saw it; tests/plugins/snapcut_track_test).
+bool corners_meet_sweep(const std::array<Point, 4>& p, const Point& a, const Point& b, const Point& c) {
+    if (triangle_meets_tetrahedron(a, b, c, p[0], p[1], p[2], p[3])) return true;
+    if (orient3d(p[0], p[1], p[2], p[3]) != Sign::zero) return false;
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j)
+            if (segment_meets_triangle(p[i], p[j], a, b, c)) return true;
+    return false;
+}
+
 // The squared distance from p to the farthest of `corners`: an element lies in the ball about p
 // through its farthest corner when p is one of its corners.
 double squared_farthest_corner(const std::array<Point, 4>& corners, const Point& p) {
@@ -179,8 +196,7 @@ std::vector<ElementId> CutMarks::elements_near(const Mesh& mesh, const Sweep& sw
     near.erase(std::unique(near.begin(), near.end()), near.end());
     std::erase_if(near, [&](ElementId t) {
         if (std::binary_search(known.begin(), known.end(), t)) return true;
-        const std::array<Point, 4> corners = selection_corners(mesh, t);
-        return !triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, corners[0], corners[1], corners[2], corners[3]);
+        return !corners_meet_sweep(selection_corners(mesh, t), sweep.a, sweep.b, sweep.c);
     });
     return near;
 }
@@ -336,8 +352,7 @@ VertexId nearer_end(const Mesh& mesh, const CutMarks& marks, VertexId u, VertexI
 
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b,
                        const Point& c) {
-    const std::array<Point, 4> p = marks.selection_corners(mesh, t);
-    return triangle_meets_tetrahedron(a, b, c, p[0], p[1], p[2], p[3]);
+    return corners_meet_sweep(marks.selection_corners(mesh, t), a, b, c);
 }
 
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b) {

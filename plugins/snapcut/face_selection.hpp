@@ -184,7 +184,7 @@ public:
     // (selection_position), sorted, each once: in the stars of the snapped nodes whose own reach
     // (radius) comes as near as the sweep, the elements that reach from the node as far as the
     // sweep is (an element lies in the ball about any of its corners through its farthest
-    // corner), not parted from it by its planes in doubles, and met in the exact test. Those in
+    // corner), not parted from it by its planes in doubles, and met in meets_as_selected's test. Those in
     // `known` (sorted: elements the caller has already, such as the ones the blade the sweep
     // starts from lies in) are left out untested.
     std::vector<ElementId> elements_near(const Mesh& mesh, const Sweep& sweep,
@@ -287,7 +287,9 @@ struct Selection {
 };
 
 // Live element t meets the closed triangle (a, b, c) (collinear corners: the segment between the
-// two farthest) as the selection sees the mesh (CutMarks::selection_position), exactly.
+// two farthest) as the selection sees the mesh (CutMarks::selection_position), exactly; an element
+// flat as the selection sees it (a dissection's copy where its original was) meets it where one of
+// its edges crosses it.
 bool meets_as_selected(const Mesh& mesh, const CutMarks& marks, ElementId t, const Point& a, const Point& b,
                        const Point& c);
 // Live element t meets the closed segment [a, b] (a blade) as the selection sees the mesh, exactly.

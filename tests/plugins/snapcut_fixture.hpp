@@ -164,12 +164,22 @@ inline std::vector<snapcut::Scalpel> random_path(const Box& box, const Point& th
     return path;
 }
 
+// `count` points uniform in the unit cube, from a stream of their own made from a run's `seed`: the
+// one seed_for of a test that draws both a mesh and paths, so that one SXK_SEED replays both.
+inline std::vector<Point> random_points(std::uint64_t seed, int count) {
+    std::mt19937_64 random(seed ^ 0x9e3779b97f4a7c15ULL);
+    std::uniform_real_distribution<double> coordinate(0, 1);
+    std::vector<Point> points;
+    for (int i = 0; i < count; ++i) points.push_back({coordinate(random), coordinate(random), coordinate(random)});
+    return points;
+}
+
 // Random curved paths (random_path) on `original`, `paths` of `steps` movements, each a session with
 // random options: every step kept and the mesh valid, no element inverted or flat; every path
-// cancelled gives `original` back. `name` seeds the run (SXK_SEED replays it). `dissected`: the
-// faces the run dissected, for the caller to assert on.
-inline void check_random_cuts(const char* name, const Mesh& original, int paths, int steps, std::size_t& dissected) {
-    const std::uint64_t seed = seed_for(name);
+// cancelled gives `original` back. `seed` (seed_for(name)) seeds the run. `dissected`: the faces the
+// run dissected, for the caller to assert on.
+inline void check_random_cuts(const char* name, std::uint64_t seed, const Mesh& original, int paths, int steps,
+                              std::size_t& dissected) {
     std::mt19937_64 random(seed);
     const Box box = bounding_box(original);
     std::vector<ElementId> all;
@@ -199,6 +209,9 @@ inline void check_random_cuts(const char* name, const Mesh& original, int paths,
         if (::testing::Test::HasFatalFailure()) return;
     }
     std::cout << "[ steps    ] " << name << ": " << taken << " steps, " << dissected << " faces dissected\n";
+}
+inline void check_random_cuts(const char* name, const Mesh& original, int paths, int steps, std::size_t& dissected) {
+    check_random_cuts(name, seed_for(name), original, paths, steps, dissected);
 }
 
 }  // namespace sxk::test

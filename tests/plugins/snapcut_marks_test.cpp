@@ -15,6 +15,7 @@
 #include "sxk/generators.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "sxk/ops/split_edge.hpp"
+#include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk::test {
@@ -207,6 +208,57 @@ TEST(SnapCutMarks, ElementsNearHoldEveryElementWithASnappedCornerThatMeetsTheSwe
     }
     EXPECT_GT(meeting, 1000u);  // the sweeps do meet elements around snapped nodes
     EXPECT_LT(handed, 3 * meeting) << "the planes part most of those that do not";
+}
+
+// A dissection's copy of a snapped node is recorded with its original's place, so an element with
+// both as corners is flat as the selection sees it, yet its edges are edges of the mesh that the
+// selection marks when a sweep crosses them: the element meets such a sweep (meets_as_selected)
+// and elements_near hands it over. (Asking the index along the blade missed such an edge that
+// following the blade marked: tests/plugins/snapcut_track_test.cpp, found on random points.)
+TEST(SnapCutMarks, AnElementFlatAsTheSelectionSeesItMeetsASweepThatCrossesOneOfItsEdges) {
+    const Mesh mesh = make_kuhn_cube(2).value();
+    const ElementId t = *elements(mesh).begin();
+    const Simplex s = mesh.simplex(t);
+    const VertexId original = s.vertex(0), copy = s.vertex(1), other = s.vertex(2);
+    CutMarks marks;
+    marks.add_snapped(mesh, original, mesh.deformed(original));
+    marks.add_snapped(mesh, copy, marks.selection_position(mesh, original));
+    const auto corners = marks.selection_corners(mesh, t);
+    ASSERT_EQ(orient3d(corners[0], corners[1], corners[2], corners[3]), Sign::zero);
+    // a small triangle square to the edge from `other` to the original's place, about its middle
+    const Point& from = mesh.deformed(other);
+    const Point& to = marks.selection_position(mesh, original);
+    const Point middle{(from[0] + to[0]) / 2, (from[1] + to[1]) / 2, (from[2] + to[2]) / 2};
+    const Point along{to[0] - from[0], to[1] - from[1], to[2] - from[2]};
+    // two directions square to `along`: crossed with the axis it is least along, then with itself
+    const std::size_t least = std::abs(along[0]) <= std::abs(along[1]) && std::abs(along[0]) <= std::abs(along[2])
+                                  ? 0
+                                  : (std::abs(along[1]) <= std::abs(along[2]) ? 1 : 2);
+    Point axis{0, 0, 0};
+    axis[least] = 1;
+    auto cross = [](const Point& x, const Point& y) {
+        return Point{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+    };
+    const Point e1 = cross(along, axis), e2 = cross(along, e1);
+    const double size = 0.01;
+    const snapcut::Sweep sweep{{middle[0] + size * e1[0], middle[1] + size * e1[1], middle[2] + size * e1[2]},
+                               {middle[0] + size * e2[0], middle[1] + size * e2[1], middle[2] + size * e2[2]},
+                               {middle[0] - size * (e1[0] + e2[0]), middle[1] - size * (e1[1] + e2[1]),
+                                middle[2] - size * (e1[2] + e2[2])}};
+    ASSERT_TRUE(segment_meets_triangle(from, to, sweep.a, sweep.b, sweep.c));
+    EXPECT_FALSE(triangle_meets_tetrahedron(sweep.a, sweep.b, sweep.c, corners[0], corners[1], corners[2], corners[3]))
+        << "a flat tetrahedron meets nothing in the kernel's test";
+    EXPECT_TRUE(snapcut::meets_as_selected(mesh, marks, t, sweep.a, sweep.b, sweep.c));
+    const std::vector<ElementId> near = marks.elements_near(mesh, sweep);
+    EXPECT_TRUE(std::binary_search(near.begin(), near.end(), t));
+    // moved off the edge (beyond `other`, along it), the sweep crosses none of its edges
+    const Point beyond{2 * from[0] - middle[0], 2 * from[1] - middle[1], 2 * from[2] - middle[2]};
+    const Point shift{beyond[0] - middle[0], beyond[1] - middle[1], beyond[2] - middle[2]};
+    const snapcut::Sweep off{{sweep.a[0] + shift[0], sweep.a[1] + shift[1], sweep.a[2] + shift[2]},
+                             {sweep.b[0] + shift[0], sweep.b[1] + shift[1], sweep.b[2] + shift[2]},
+                             {sweep.c[0] + shift[0], sweep.c[1] + shift[1], sweep.c[2] + shift[2]}};
+    EXPECT_FALSE(snapcut::meets_as_selected(mesh, marks, t, off.a, off.b, off.c));
+    expect_valid(mesh);
 }
 
 // A dissection's copy of a snapped node is recorded with its original's place, passed as the

@@ -23,12 +23,10 @@ TEST(SnapCutRandom, ThesisCube) {
 }
 
 TEST(SnapCutRandom, DelaunayOfRandomPoints) {
-    std::mt19937_64 random(seed_for("SnapCutRandom.DelaunayOfRandomPoints/points"));
-    std::uniform_real_distribution<double> coordinate(0, 1);
-    std::vector<Point> points;
-    for (int i = 0; i < 600; ++i) points.push_back({coordinate(random), coordinate(random), coordinate(random)});
+    const char* name = "SnapCutRandom.DelaunayOfRandomPoints";
+    const std::uint64_t seed = seed_for(name);
     std::size_t dissected = 0;
-    check_random_cuts("SnapCutRandom.DelaunayOfRandomPoints", make_delaunay(points).value(), 50, 60, dissected);
+    check_random_cuts(name, seed, make_delaunay(random_points(seed, 600)).value(), 50, 60, dissected);
     EXPECT_GT(dissected, 0u);
 }
 

@@ -124,7 +124,9 @@ void cut_the_deformed_femur(std::size_t relax_iterations, std::size_t local_vert
         const auto stepped = session->cut(scalpel);
         ASSERT_TRUE(stepped) << "step " << i << ": " << stepped.reason();
         EXPECT_EQ(session->last_step().relax_refusal, "") << "step " << i;
-        if (local_vertices > 0) EXPECT_LE(session->last_step().relax_region_vertices, local_vertices) << "step " << i;
+        if (local_vertices > 0) {
+            EXPECT_LE(session->last_step().relax_region_vertices, local_vertices) << "step " << i;
+        }
         loose += session->last_step().loose_pieces.size();
         // the corners of the faces this step selected, right after the snapping, and of those it
         // opened, right after the dissection (before the relaxation moves them)
