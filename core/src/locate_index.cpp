@@ -152,16 +152,12 @@ void build(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
     build_seeds<D>(trees.seeds, mesh, positions);
 }
 
-// Re-boxes the elements around the moved vertices and their boundary faces (a face's box
-// depends on its vertices only, so the boundary faces of those elements are all that can move).
+// Re-boxes the elements around the moved vertices (Mesh::elements_around_moved) and their
+// boundary faces (a face's box depends on its vertices only, so the boundary faces of those
+// elements are all that can move).
 template <int D>
-void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, std::span<const VertexId> vertices,
-                  Positions positions) {
-    std::vector<ElementId> around;
-    for (const VertexId v : vertices)
-        if (v < mesh.vertex_count() && mesh.vertex_element(v) != invalid_id)
-            collect_star(mesh, v, mesh.vertex_element(v), around);
-    detail::sort_unique(around);
+void rebox_around(SpatialIndex::Trees& trees, const Mesh& mesh, Positions positions) {
+    const std::span<const ElementId> around = mesh.elements_around_moved();
     detail::BoxTree<D>& element_boxes = detail::element_tree<D>(trees);
     detail::BoxTree<D>& face_boxes = detail::face_tree<D>(trees);
     for (const ElementId t : around) {
@@ -352,7 +348,7 @@ void SpatialIndex::vertices_moved(const Mesh& mesh, std::span<const VertexId> ve
         detail::in_dimension(mesh, [&](auto d) { refit_trees<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
         return;
     }
-    detail::in_dimension(mesh, [&](auto d) { rebox_around<decltype(d)::value>(*m_trees, mesh, vertices, m_options.positions); });
+    detail::in_dimension(mesh, [&](auto d) { rebox_around<decltype(d)::value>(*m_trees, mesh, m_options.positions); });
 }
 
 }  // namespace sxk

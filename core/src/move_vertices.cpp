@@ -8,6 +8,7 @@
 #include "sxk/mesh.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
+#include "moving_vertices.hpp"
 #include "undo_log.hpp"
 
 namespace sxk {
@@ -17,6 +18,18 @@ namespace {
 const char* set_name(bool reference) { return reference ? "reference" : "deformed"; }
 
 }  // namespace
+
+std::span<const ElementId> Mesh::elements_around_moved() const {
+    if (!m_around_moved_found) {
+        m_around_moved.clear();
+        for (const VertexId v : m_moving)
+            if (m_vertex_element[v] != invalid_id) collect_star(*this, v, m_vertex_element[v], m_around_moved);
+        std::sort(m_around_moved.begin(), m_around_moved.end());
+        m_around_moved.erase(std::unique(m_around_moved.begin(), m_around_moved.end()), m_around_moved.end());
+        m_around_moved_found = true;
+    }
+    return m_around_moved;
+}
 
 Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,
                                   PositionSet which, const MoveCheck& check) {
@@ -54,13 +67,10 @@ Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<
                                " is listed twice",
                            std::max(moved[i].second, moved[i - 1].second)};
 
+    const MovingVertices moving(*this, vertices);
     if (check.refuse_inverted || check.refuse_flat) {
         // every element around a moved vertex, once, at the positions it would have
-        std::vector<ElementId> around;
-        for (const auto& [v, i] : moved)
-            if (m_vertex_element[v] != invalid_id) collect_star(*this, v, m_vertex_element[v], around);
-        std::sort(around.begin(), around.end());
-        around.erase(std::unique(around.begin(), around.end()), around.end());
+        const std::span<const ElementId> around = elements_around_moved();
         auto after = [&](VertexId w, bool reference) -> const Point* {
             const auto it = std::lower_bound(moved.begin(), moved.end(), std::pair<VertexId, std::size_t>{w, 0});
             if (it != moved.end() && it->first == w) return &points[it->second];
@@ -103,6 +113,7 @@ void Mesh::set_position(VertexId v, const Point& p, PositionSet which) {
     if (writes_reference(which)) m_reference[v] = p;
     if (writes_deformed(which)) m_deformed[v] = p;
     const VertexId one[] = {v};
+    const MovingVertices moving(*this, one);
     for (Watcher* w : m_watchers) w->vertices_moved(*this, one, which);
 }
 

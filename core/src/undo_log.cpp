@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "moving_vertices.hpp"
+
 namespace sxk {
 
 // ---- what the mesh notes ------------------------------------------------------------------------
@@ -208,6 +210,7 @@ void UndoLog::undo(Mesh& mesh, std::size_t first, UndoLog* inverse) {
     sort_unique(moved);
     moved.erase(std::remove_if(moved.begin(), moved.end(), [&](VertexId v) { return v >= mesh.vertex_count(); }),
                 moved.end());
+    const MovingVertices moving(mesh, moved);
     for (Watcher* w : mesh.m_watchers) {
         for (std::size_t i = 0; i < elements.size(); ++i) {
             const ElementState &was = elements_before[i], &now = elements_after[i];

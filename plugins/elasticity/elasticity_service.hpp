@@ -70,6 +70,10 @@ public:
     // a report with region_vertices 0. A neo-Hookean body: nothing to do (relax_near relaxed it
     // whole).
     virtual Outcome<RelaxReport> relax_far(std::size_t iterations, std::size_t max_vertices) = 0;
+    // Whether relax_near and relax_far remember their rims for relax_far (the default: yes).
+    // Measuring how far out of balance a rim is costs about a sixth of a local solve on the femur,
+    // so a tool that never calls relax_far says no; relax_far then finds nothing to do.
+    virtual void follow_far_field(bool follow) = 0;
     // A piece that came loose (thesis §3.3: "all unfixed components are fixed on an arbitrary
     // face"): unless a vertex of it is held already, the corners of its lowest-id boundary face
     // are fixed where they are. True when it fixed them.
@@ -110,7 +114,8 @@ public:
 
 struct ElasticityService {
     static constexpr std::string_view service_id = "sxk.elasticity";
-    static constexpr std::uint32_t service_version = 3;  // 2: vertices a tool holds; 3: relax_near, relax_far
+    static constexpr std::uint32_t service_version = 4;  // 2: vertices a tool holds; 3: relax_near, relax_far;
+                                                          // 4: follow_far_field
 
     // A simulation of `mesh` (which must stay where it is while the simulation lives) set up from
     // `sxk deform`'s options; refuses bad options and empty selections with `sxk deform`'s

@@ -93,13 +93,13 @@ void ElasticBody::take_element(const Mesh& mesh, ElementId element) {
             interpolate_new_vertex(mesh, v, s);
 }
 
-void ElasticBody::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices,
+void ElasticBody::vertices_moved(const Mesh& mesh, std::span<const VertexId> /*vertices*/,
                                  PositionSet which) {
     if (!writes_reference(which))
         return;  // the deformed positions are ours to write, not a rest shape
-    for (const VertexId v : vertices)
-        for (const ElementId t : star(mesh, v))
-            m_dirty.push_back(t);
+    // the moved vertices' stars, found by the mesh once for every watcher
+    const std::span<const ElementId> around = mesh.elements_around_moved();
+    m_dirty.insert(m_dirty.end(), around.begin(), around.end());
     m_stale = true;
 }
 

@@ -86,6 +86,11 @@ public:
         return RelaxReport{.converged = true};
     }
 
+    void follow_far_field(bool follow) override {
+        m_follow_far_field = follow;
+        if (!follow) m_frontier.clear();
+    }
+
     Outcome<bool> hold_piece(std::span<const ElementId> piece) override {
         ElasticBody& body = *m_built.body;
         if (Outcome<Done> fresh = body.refresh(); !fresh) return fresh.refusal().prefixed("hold_piece: ");
@@ -193,6 +198,10 @@ private:
         result.region_elements = local->elements;
         m_total += result.iterations;
         result.shown = body.write_deformed(m_mesh, m_local.region()).ok();
+        if (!m_follow_far_field) {
+            result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            return result;
+        }
         // the rim held the region: remember where it is out of balance, for relax_far
         const std::span<const VertexId> rim = m_local.rim();
         auto balance = out_of_balance(rim);
@@ -250,6 +259,7 @@ private:
     // tolerance per vertex
     std::vector<std::pair<double, VertexId>> m_frontier;
     double m_balance = 0;
+    bool m_follow_far_field = true;  // follow_far_field
 };
 
 }  // namespace

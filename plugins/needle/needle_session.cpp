@@ -95,7 +95,10 @@ NeedleSession::NeedleSession(Mesh& mesh, const Options& options, elasticity::Sim
       m_options(options),
       m_simulation(simulation),
       m_reference_index(std::make_unique<SpatialIndex>(mesh, Positions::reference)),
-      m_deformed_index(std::make_unique<SpatialIndex>(mesh, Positions::deformed)) {}
+      m_deformed_index(std::make_unique<SpatialIndex>(mesh, Positions::deformed)) {
+    // the far field's rims are measured only for a session that relaxes them
+    if (simulation != nullptr) simulation->follow_far_field(options.far_vertices > 0);
+}
 
 NeedleSession::~NeedleSession() = default;
 

@@ -102,8 +102,8 @@ void BladeTrack::element_changed(const Mesh& /*mesh*/, ElementId element, const 
 void BladeTrack::vertices_moved(const Mesh& mesh, std::span<const VertexId> vertices, PositionSet which) {
     if (!m_following || !m_watch_moves || which == PositionSet::reference) return;
     if (vertices.size() > largest_move_followed) return forget();
-    for (const VertexId v : vertices)
-        if (mesh.vertex_element(v) != invalid_id) collect_star(mesh, v, mesh.vertex_element(v), m_fresh);
+    const std::span<const ElementId> around = mesh.elements_around_moved();
+    m_fresh.insert(m_fresh.end(), around.begin(), around.end());
 }
 
 }  // namespace sxk::snapcut

@@ -209,7 +209,10 @@ SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServ
       m_element_volume(mean_element_volume(mesh, Positions::reference)),
       m_split_beyond(options.split_beyond > 0
                          ? options.split_beyond * mean_edge_length(mesh, Positions::deformed)
-                         : 0) {}
+                         : 0) {
+    // the far field's rims are measured only for a session that relaxes them
+    if (services.simulation != nullptr) services.simulation->follow_far_field(options.far_vertices > 0);
+}
 
 SnapCutSession::~SnapCutSession() = default;
 

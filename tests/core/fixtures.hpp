@@ -19,6 +19,7 @@
 
 #include "sxk/generators.hpp"
 #include "sxk/mesh.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk::test {
 
@@ -235,6 +236,15 @@ struct MirrorWatcher : Watcher {
         std::vector<VertexId> sorted(vertices.begin(), vertices.end());
         std::sort(sorted.begin(), sorted.end());
         EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a vertex listed twice";
+        // the elements around them, as the mesh finds them once for every watcher
+        std::vector<ElementId> around;
+        for (const VertexId v : vertices)
+            if (mesh.vertex_element(v) != invalid_id) collect_star(mesh, v, mesh.vertex_element(v), around);
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        const std::span<const ElementId> told = mesh.elements_around_moved();
+        EXPECT_TRUE(std::equal(told.begin(), told.end(), around.begin(), around.end()))
+            << "elements_around_moved is not the moved vertices' stars";
         for (VertexId v : vertices) {
             if (writes_reference(which)) reference[v] = mesh.reference(v);
             if (writes_deformed(which)) deformed[v] = mesh.deformed(v);

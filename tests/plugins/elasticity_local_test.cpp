@@ -37,7 +37,9 @@ struct Slab {
         mesh.add_watcher(*body);
         for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
             const Point& x = mesh.reference(v);
-            if (x[0] > 0.0999) EXPECT_TRUE(body->fix(v).ok());
+            if (x[0] > 0.0999) {
+                EXPECT_TRUE(body->fix(v).ok());
+            }
             if (std::abs(x[0] - 0.05) < 1e-9 && std::abs(x[1] - 0.05) < 1e-9) pulled = v;
             if (std::abs(x[0]) < 1e-9 && std::abs(x[1] - 0.05) < 1e-9) slipping = v;
         }
@@ -118,7 +120,9 @@ TEST(ElasticityLocal, BoundedRegionChangesNothingOutsideAndMeetsItsThreshold) {
     for (VertexId v = 0; v < slab.mesh.vertex_count(); ++v) {
         const bool same = slab.body->displacement(v) ==
                           Vector3{before[3 * v], before[3 * v + 1], before[3 * v + 2]};
-        if (!region.count(v)) EXPECT_TRUE(same) << "vertex " << v << " outside the region moved";
+        if (!region.count(v)) {
+            EXPECT_TRUE(same) << "vertex " << v << " outside the region moved";
+        }
         moved += same ? 0 : 1;
     }
     EXPECT_GT(moved, 20u);
@@ -144,8 +148,12 @@ TEST(ElasticityLocal, KuhnCubeAfterASplitHeardOnlyByRefreshShapes) {
     auto constrain = [](ElasticBody& body, const Mesh& mesh) {
         for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
             const double z = mesh.reference(v)[2];
-            if (z < 1e-9) EXPECT_TRUE(body.fix(v).ok());
-            if (z > 1 - 1e-9) EXPECT_TRUE(body.fix(v, {0.01, 0, 0.02}).ok());
+            if (z < 1e-9) {
+                EXPECT_TRUE(body.fix(v).ok());
+            }
+            if (z > 1 - 1e-9) {
+                EXPECT_TRUE(body.fix(v, {0.01, 0, 0.02}).ok());
+            }
         }
     };
     auto build = [&](Mesh& mesh) {

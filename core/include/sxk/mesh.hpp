@@ -139,6 +139,11 @@ public:
     // Cost: O(moved vertices), plus their stars when checking.
     Outcome<Done> move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,
                                 PositionSet which, const MoveCheck& check = {});
+    // Inside Watcher::vertices_moved: the elements with a corner among the moved vertices (their
+    // stars; sorted, each once), found once per move for move_vertices' check and every watcher
+    // that asks (the spatial index re-boxes them, a body refreshes them) rather than by each: on
+    // a local solve's write they were half its cost, found twice. Empty outside a move.
+    std::span<const ElementId> elements_around_moved() const;
     // One vertex, one set, no check. While neither a watcher nor an EditJournal step watches
     // the mesh this is the bulk path (a plain store: readers and generators set millions of
     // positions); otherwise it is move_vertices of one vertex, so nothing goes unobserved.
@@ -553,6 +558,12 @@ private:
     EditJournal* m_journal = nullptr;   // the journal attached, not copied
     detail::UndoLog* m_undo = nullptr;  // its open step's record, not copied
     std::uint64_t m_revision = 0;
+    // the move being told (elements_around_moved), and the elements around it once found: not
+    // copied, a scratch kept between moves
+    std::span<const VertexId> m_moving;
+    mutable std::vector<ElementId> m_around_moved;
+    mutable bool m_around_moved_found = false;
+    friend class MovingVertices;
 };
 
 // Attaches a watcher for the lifetime of the object, early returns and exceptions included.
