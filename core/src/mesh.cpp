@@ -80,6 +80,8 @@ void Mesh::reserve(std::size_t vertices, std::size_t elements) {
         a.values.reserve(vertices * static_cast<std::size_t>(a.components));
     m_elements.reserve(elements);
     m_faces.reserve(elements * static_cast<std::size_t>(m_dimension + 1));
+    for (detail::AttributeColumn& a : m_element_attributes)
+        a.values.reserve(elements * static_cast<std::size_t>(a.components));
 }
 
 VertexId Mesh::opposite_vertex(ElementId t, FaceId f) const {

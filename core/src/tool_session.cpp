@@ -35,6 +35,11 @@ void sort_unique(std::vector<T>& ids) {
 ToolSession::ToolSession(Mesh& mesh) : m_mesh(mesh), m_journal(mesh), m_revision(mesh.revision()) {
     // a journal of its own keeps every step, so that cancel() can take them all back
     if (m_journal.owned()) m_journal->set_history_limit(std::numeric_limits<std::size_t>::max());
+    // Room for the mesh to grow by half before a step copies its pools: a pool that grows past
+    // its capacity is copied whole, and a mesh just read has none to spare (the first cutting
+    // step on the 213k femur spent 16 ms dissecting, most of it copying the element and face
+    // pools). Copied here, before the first step, once; address space until elements use it.
+    mesh.reserve(mesh.vertex_count() + mesh.vertex_count() / 2, mesh.element_capacity() + mesh.element_capacity() / 2);
 }
 
 ToolSession::~ToolSession() = default;

@@ -79,6 +79,13 @@ Outcome<ElasticBody> ElasticBody::make(const Mesh& mesh, Material material, Body
 void ElasticBody::resize_vertices(std::size_t n) {
     const auto size = static_cast<Eigen::Index>(3 * n);
     const auto old = static_cast<Eigen::Index>(dof_count());
+    // room to double, taken when they would grow (refresh_shapes: the rest shapes): a tool's
+    // first new vertex would otherwise copy them inside its step
+    if (m_freedom.capacity() < n) {
+        m_freedom.reserve(2 * n);
+        m_line.reserve(2 * n);
+        m_known.reserve(2 * n);
+    }
     m_freedom.resize(n, Freedom::free);
     m_line.resize(n, Vector3{0, 0, 0});
     m_known.resize(n, 0);
@@ -87,7 +94,7 @@ void ElasticBody::resize_vertices(std::size_t n) {
         m_force.segment(size, old - size).setZero();
     }
     if (size > m_u.size()) {  // doubling: a split's vertex costs O(1) amortised, not a copy of all
-        const Eigen::Index capacity = std::max(size, 2 * m_u.size());
+        const Eigen::Index capacity = 2 * std::max(size, m_u.size());  // from the first size too
         const Eigen::Index was = m_u.size();
         m_u.conservativeResize(capacity);
         m_force.conservativeResize(capacity);

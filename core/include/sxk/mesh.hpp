@@ -332,6 +332,8 @@ public:
     std::vector<FaceId> boundary_faces() const;
 
     // ---- building and editing -----------------------------------------------------------------
+    // Room for this many vertices and elements (their faces and attributes too) before a pool is
+    // copied to grow: a tool session takes half as much again when it begins (ToolSession).
     void reserve(std::size_t vertices, std::size_t elements);
 
     // Builds the connectivity of an element-less mesh from a simplex soup in one pass (sorting
