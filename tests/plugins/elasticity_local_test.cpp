@@ -294,10 +294,14 @@ TEST(ElasticityLocal, ServiceRelaxNearWritesTheRegionAndRelaxSettlesTheRest) {
     EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
 }
 
+// The far-field tests' slab: 16 x 16 cells of the thesis' 0.1 m slab, fixed at x = 0.1.
+const std::vector<std::string> far_field_slab_words{"--fix", "x>0.0999", "--E",   "34e3", "--nu",
+                                                    "0.34",  "--thickness", "0.01", "--tol", "1e-4"};
+Mesh far_field_slab() { return *make_triangle_grid({16, 16}, {0.1 / 16, 0.1 / 16}); }
+
 TEST(ElasticityLocal, RelaxFarBlocksBringTheFarFieldToTheWholeBodysSolution) {
-    const std::vector<std::string> words{"--fix", "x>0.0999", "--E",   "34e3", "--nu",
-                                         "0.34",  "--thickness", "0.01", "--tol", "1e-4"};
-    Mesh mesh = *make_triangle_grid({16, 16}, {0.1 / 16, 0.1 / 16});
+    const std::vector<std::string>& words = far_field_slab_words;
+    Mesh mesh = far_field_slab();
     Mesh whole_mesh = mesh;
     auto made = simulate(mesh, words), whole = simulate(whole_mesh, words);
     ASSERT_TRUE(made.ok() && whole.ok());
@@ -336,9 +340,8 @@ TEST(ElasticityLocal, RelaxFarBlocksBringTheFarFieldToTheWholeBodysSolution) {
 // rim, and relax_far, asked anyway, has nothing to do, where the same local solve leaves the far
 // field out of balance for a body that follows it. The local solve itself is the same.
 TEST(ElasticityLocal, ABodyThatDoesNotFollowTheFarFieldRemembersNoRim) {
-    const std::vector<std::string> words{"--fix", "x>0.0999", "--E",   "34e3", "--nu",
-                                         "0.34",  "--thickness", "0.01", "--tol", "1e-4"};
-    Mesh mesh = *make_triangle_grid({16, 16}, {0.1 / 16, 0.1 / 16});
+    const std::vector<std::string>& words = far_field_slab_words;
+    Mesh mesh = far_field_slab();
     Mesh following_mesh = mesh;
     auto made = simulate(mesh, words), following = simulate(following_mesh, words);
     ASSERT_TRUE(made.ok() && following.ok());
