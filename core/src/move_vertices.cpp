@@ -20,6 +20,7 @@ const char* set_name(bool reference) { return reference ? "reference" : "deforme
 }  // namespace
 
 std::span<const ElementId> Mesh::elements_around_moved() const {
+    if (m_moving.empty()) return {};  // outside a move: nothing written (a const mesh read by threads)
     if (!m_around_moved_found) {
         m_around_moved.clear();
         for (const VertexId v : m_moving)
