@@ -198,11 +198,16 @@ private:
         result.region_elements = local->elements;
         m_total += result.iterations;
         result.shown = body.write_deformed(m_mesh, m_local.region()).ok();
-        if (!m_follow_far_field) {
-            result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            return result;
-        }
         // the rim held the region: remember where it is out of balance, for relax_far
+        if (m_follow_far_field) {
+            if (Outcome<Done> kept = remember_rim(max_vertices); !kept) return kept.refusal();
+        }
+        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+    }
+
+    // The last local solve's rim vertices out of balance, into relax_far's heap.
+    Outcome<Done> remember_rim(std::size_t max_vertices) {
         const std::span<const VertexId> rim = m_local.rim();
         auto balance = out_of_balance(rim);
         if (!balance) return balance.refusal();
@@ -217,8 +222,7 @@ private:
             m_frontier.erase(half, m_frontier.end());
             std::make_heap(m_frontier.begin(), m_frontier.end());
         }
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return result;
+        return Done{};
     }
 
     // |P(f - K u)| at each of `vertices` (0 for a vertex not in the body), from their stars
