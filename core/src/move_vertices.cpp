@@ -22,14 +22,82 @@ const char* set_name(bool reference) { return reference ? "reference" : "deforme
 std::span<const ElementId> Mesh::elements_around_moved() const {
     if (m_moving.empty()) return {};  // outside a move: nothing written (a const mesh read by threads)
     if (!m_around_moved_found) {
+        // each star appended, then what an earlier star listed dropped by the elements' marks (a sort
+        // of the stars' union was a tenth of a femur needle step, docs/performance.md "needle")
+        if (m_around_seen.size() < m_elements.size()) m_around_seen.resize(m_elements.size(), 0);
+        if (++m_around_generation == 0) {  // wrapped: marks of 2^32 searches ago would look fresh
+            std::fill(m_around_seen.begin(), m_around_seen.end(), 0);
+            m_around_generation = 1;
+        }
         m_around_moved.clear();
-        for (const VertexId v : m_moving)
-            if (m_vertex_element[v] != invalid_id) collect_star(*this, v, m_vertex_element[v], m_around_moved);
-        std::sort(m_around_moved.begin(), m_around_moved.end());
-        m_around_moved.erase(std::unique(m_around_moved.begin(), m_around_moved.end()), m_around_moved.end());
+        for (const VertexId v : m_moving) {
+            if (m_vertex_element[v] == invalid_id) continue;
+            const std::size_t from = m_around_moved.size();
+            std::size_t kept = from;
+            collect_star(*this, v, m_vertex_element[v], m_around_moved);
+            for (std::size_t i = from; i < m_around_moved.size(); ++i) {
+                const ElementId t = m_around_moved[i];
+                if (m_around_seen[t] == m_around_generation) continue;
+                m_around_seen[t] = m_around_generation;
+                m_around_moved[kept++] = t;
+            }
+            m_around_moved.resize(kept);
+        }
         m_around_moved_found = true;
     }
     return m_around_moved;
+}
+
+// move_vertices' checks, before anything is written: no vertex listed twice, and, as asked, no
+// element around the moved vertices inverted or flat at the positions it would have. Each
+// vertex's index in the call is kept per vertex (m_move_slot) while checking, and forgotten before
+// the watchers hear of the move (one of them may move vertices in turn).
+Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<const Point> points,
+                               PositionSet which, const MoveCheck& check) {
+    constexpr std::uint32_t none = ~std::uint32_t{0};
+    if (m_move_slot.size() < vertex_count()) m_move_slot.resize(vertex_count(), none);
+    struct Forget {
+        std::vector<std::uint32_t>& slot;
+        std::span<const VertexId> vertices;
+        std::size_t set = 0;
+        ~Forget() {
+            for (std::size_t i = 0; i < set; ++i) slot[vertices[i]] = none;
+        }
+    } slots{m_move_slot, vertices};
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        if (m_move_slot[vertices[i]] != none)
+            return Refusal{RefusalCode::bad_argument,
+                           "move_vertices: vertex " + std::to_string(vertices[i]) + " is listed twice", i};
+        m_move_slot[vertices[i]] = static_cast<std::uint32_t>(i);
+        slots.set = i + 1;
+    }
+    if (!check.refuse_inverted && !check.refuse_flat) return Done{};
+    // every element around a moved vertex, once, at the positions it would have
+    const std::span<const ElementId> around = elements_around_moved();
+    auto after = [&](VertexId w, bool reference) -> const Point* {
+        if (m_move_slot[w] != none) return &points[m_move_slot[w]];
+        return reference ? &m_reference[w] : &m_deformed[w];
+    };
+    for (const bool reference : {true, false}) {
+        if (reference ? !writes_reference(which) : !writes_deformed(which)) continue;
+        for (const ElementId t : around) {
+            const Simplex& s = m_elements[t].simplex;
+            std::array<const Point*, 4> at{};
+            for (int j = 0; j < s.count(); ++j) at[static_cast<std::size_t>(j)] = after(s.vertex(j), reference);
+            const Sign sign = simplex_orientation(s, m_ambient, {at.data(), static_cast<std::size_t>(s.count())});
+            if (sign == Sign::negative && check.refuse_inverted)
+                return Refusal{RefusalCode::would_invert,
+                               "element " + std::to_string(t) + " would be inverted in the " +
+                                   set_name(reference) + " positions",
+                               t};
+            if (sign == Sign::zero && check.refuse_flat)
+                return Refusal{RefusalCode::would_flatten,
+                               "element " + std::to_string(t) + " would be flat in the " + set_name(reference) +
+                                   " positions",
+                               t};
+        }
+    }
+    return Done{};
 }
 
 Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,
@@ -39,8 +107,6 @@ Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<
                        "move_vertices: " + std::to_string(vertices.size()) + " vertices but " +
                            std::to_string(points.size()) + " points"};
     if (vertices.empty()) return Done{};
-    // (vertex, its index in the call), sorted by vertex: repeats, and the lookup of the checks
-    std::vector<std::pair<VertexId, std::size_t>> moved(vertices.size());
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         if (vertices[i] >= vertex_count())
             return Refusal{RefusalCode::not_found,
@@ -58,45 +124,9 @@ Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<
                            "move_vertices: the point of vertex " + std::to_string(vertices[i]) +
                                " has z != 0 in a planar mesh",
                            i};
-        moved[i] = {vertices[i], i};
     }
-    std::sort(moved.begin(), moved.end());
-    for (std::size_t i = 1; i < moved.size(); ++i)
-        if (moved[i].first == moved[i - 1].first)
-            return Refusal{RefusalCode::bad_argument,
-                           "move_vertices: vertex " + std::to_string(moved[i].first) +
-                               " is listed twice",
-                           std::max(moved[i].second, moved[i - 1].second)};
-
     const MovingVertices moving(*this, vertices);
-    if (check.refuse_inverted || check.refuse_flat) {
-        // every element around a moved vertex, once, at the positions it would have
-        const std::span<const ElementId> around = elements_around_moved();
-        auto after = [&](VertexId w, bool reference) -> const Point* {
-            const auto it = std::lower_bound(moved.begin(), moved.end(), std::pair<VertexId, std::size_t>{w, 0});
-            if (it != moved.end() && it->first == w) return &points[it->second];
-            return reference ? &m_reference[w] : &m_deformed[w];
-        };
-        for (const bool reference : {true, false}) {
-            if (reference ? !writes_reference(which) : !writes_deformed(which)) continue;
-            for (const ElementId t : around) {
-                const Simplex& s = m_elements[t].simplex;
-                std::array<const Point*, 4> at{};
-                for (int j = 0; j < s.count(); ++j) at[static_cast<std::size_t>(j)] = after(s.vertex(j), reference);
-                const Sign sign = simplex_orientation(s, m_ambient, {at.data(), static_cast<std::size_t>(s.count())});
-                if (sign == Sign::negative && check.refuse_inverted)
-                    return Refusal{RefusalCode::would_invert,
-                                   "element " + std::to_string(t) + " would be inverted in the " +
-                                       set_name(reference) + " positions",
-                                   t};
-                if (sign == Sign::zero && check.refuse_flat)
-                    return Refusal{RefusalCode::would_flatten,
-                                   "element " + std::to_string(t) + " would be flat in the " +
-                                       set_name(reference) + " positions",
-                                   t};
-            }
-        }
-    }
+    if (auto checked = check_move(vertices, points, which, check); !checked) return checked;
 
     ++m_revision;
     for (std::size_t i = 0; i < vertices.size(); ++i) {

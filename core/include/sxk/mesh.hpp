@@ -140,9 +140,10 @@ public:
     Outcome<Done> move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,
                                 PositionSet which, const MoveCheck& check = {});
     // Inside Watcher::vertices_moved: the elements with a corner among the moved vertices (their
-    // stars; sorted, each once), found once per move for move_vertices' check and every watcher
-    // that asks (the spatial index re-boxes them, a body refreshes them) rather than by each: on
-    // a local solve's write they were half its cost, found twice. Empty outside a move.
+    // stars; each once, in the order the stars are walked), found once per move for
+    // move_vertices' check and every watcher that asks (the spatial index re-boxes them, a body
+    // refreshes them) rather than by each: on a local solve's write they were half its cost,
+    // found twice. Empty outside a move.
     std::span<const ElementId> elements_around_moved() const;
     // One vertex, one set, no check. While neither a watcher nor an EditJournal step watches
     // the mesh this is the bulk path (a plain store: readers and generators set millions of
@@ -539,6 +540,10 @@ private:
     }
     // Recounts it after the anchors were set in bulk. O(vertices).
     void recount_anchors();
+    // move_vertices' checks of a move (its vertices in range, its points finite): no vertex
+    // listed twice and, as `check` asks, no element around them inverted or flat after it.
+    Outcome<Done> check_move(std::span<const VertexId> vertices, std::span<const Point> points, PositionSet which,
+                             const MoveCheck& check);
 
     int m_dimension;
     int m_ambient;
@@ -561,10 +566,15 @@ private:
     detail::UndoLog* m_undo = nullptr;  // its open step's record, not copied
     std::uint64_t m_revision = 0;
     // the move being told (elements_around_moved), and the elements around it once found: not
-    // copied, a scratch kept between moves
+    // copied, a scratch kept between moves. m_around_seen: per element id, the generation of the
+    // last search that listed it (each once without a sort); m_move_slot: per vertex, its index in
+    // the move being checked, or none (the check's positions without a search)
     std::span<const VertexId> m_moving;
     mutable std::vector<ElementId> m_around_moved;
     mutable bool m_around_moved_found = false;
+    mutable std::vector<std::uint32_t> m_around_seen;
+    mutable std::uint32_t m_around_generation = 0;
+    std::vector<std::uint32_t> m_move_slot;
     friend class MovingVertices;
 };
 
