@@ -71,6 +71,11 @@ Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<con
         m_move_slot[vertices[i]] = static_cast<std::uint32_t>(i);
         slots.set = i + 1;
     }
+    // the stars a caller walked for this move (walk_star), while the mesh is as they found it
+    if (walked_exactly(vertices)) {
+        m_around_moved.assign(m_walks.around.begin(), m_walks.around.end());
+        m_around_moved_found = true;
+    }
     if (!check.refuse_inverted && !check.refuse_flat) return Done{};
     // every element around a moved vertex, once, at the positions it would have
     const std::span<const ElementId> around = elements_around_moved();
@@ -98,6 +103,46 @@ Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<con
         }
     }
     return Done{};
+}
+
+void Mesh::begin_star_walks() const {
+    m_walks.open = true;
+    m_walks.revision = m_revision;
+    m_walks.vertices.clear();
+    m_walks.around.clear();
+    if (m_walks.vertex_seen.size() < vertex_count()) m_walks.vertex_seen.resize(vertex_count(), 0);
+    if (m_walks.element_seen.size() < m_elements.size()) m_walks.element_seen.resize(m_elements.size(), 0);
+    if (++m_walks.generation == 0) {  // wrapped: marks of 2^32 walks ago would look fresh
+        std::fill(m_walks.vertex_seen.begin(), m_walks.vertex_seen.end(), 0);
+        std::fill(m_walks.element_seen.begin(), m_walks.element_seen.end(), 0);
+        m_walks.generation = 1;
+    }
+}
+
+std::span<const ElementId> Mesh::walk_star(VertexId v) const {
+    m_walks.last.clear();
+    if (v >= vertex_count() || m_vertex_element[v] == invalid_id) return {};
+    collect_star(*this, v, m_vertex_element[v], m_walks.last);
+    // remembered only for the mesh the walks began on: after a change they can no longer be taken
+    if (!m_walks.open || m_walks.revision != m_revision) return m_walks.last;
+    if (m_walks.vertex_seen[v] != m_walks.generation) {
+        m_walks.vertex_seen[v] = m_walks.generation;
+        m_walks.vertices.push_back(v);
+    }
+    for (const ElementId t : m_walks.last)
+        if (m_walks.element_seen[t] != m_walks.generation) {
+            m_walks.element_seen[t] = m_walks.generation;
+            m_walks.around.push_back(t);
+        }
+    return m_walks.last;
+}
+
+bool Mesh::walked_exactly(std::span<const VertexId> vertices) const {
+    if (!m_walks.open || m_walks.revision != m_revision || vertices.size() != m_walks.vertices.size()) return false;
+    // as many vertices as were walked, each walked and none twice (move_vertices refuses repeats
+    // before it asks): the same set
+    return std::all_of(vertices.begin(), vertices.end(),
+                       [&](VertexId v) { return m_walks.vertex_seen[v] == m_walks.generation; });
 }
 
 Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,

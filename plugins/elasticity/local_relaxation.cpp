@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "element_kernels.hpp"
-#include "sxk/traversal.hpp"
 
 namespace sxk::elasticity {
 
@@ -30,11 +29,12 @@ void LocalRelaxation::gather(const ElasticBody& body, std::span<const VertexId> 
     // are whole) and its neighbours, which join the region while it has room and the rim after
     bool open = m_vertices.size() < max_vertices;
     m_region = m_vertices.size();
-    std::vector<ElementId> around;
+    // walked through the mesh, which keeps them for the region's write (Mesh::walk_star): the
+    // write's check and the spatial index then need no walks of their own
+    mesh.begin_star_walks();
     for (std::size_t head = 0; head < m_region; ++head) {
         const VertexId v = m_vertices[head];
-        around.clear();
-        collect_star(mesh, v, mesh.vertex_element(v), around);
+        const std::span<const ElementId> around = mesh.walk_star(v);
         m_star_start.push_back(static_cast<std::uint32_t>(m_star.size()));
         for (const ElementId t : around) {
             if (m_element_index[t] != none) {

@@ -18,8 +18,9 @@
 //     body.write_deformed(mesh, local.region());   // only what moved
 //
 // Nothing in a solve is proportional to the body's size: the region grows by breadth-first search
-// over the mesh's stars (sxk/traversal.hpp), the body is brought in step by refresh_shapes(), and
-// the scratch is kept between solves (per vertex and per element id: grown, never cleared whole).
+// over the mesh's stars (Mesh::walk_star, which keeps them for the region's write), the body is
+// brought in step by refresh_shapes(), and the scratch is kept between solves (per vertex and per
+// element id: grown, never cleared whole).
 #pragma once
 
 #include <array>

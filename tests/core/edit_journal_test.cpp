@@ -14,6 +14,7 @@
 #include "sxk/mesh.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/ops/split_edge.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk {
 namespace {
@@ -309,6 +310,43 @@ TEST(MoveVertices, RefusesInversionAndFlatnessOnRequest) {
     ASSERT_TRUE(mesh.move_vertices(v, below, PositionSet::deformed).ok());
     EXPECT_EQ(mesh.validate(ValidateOptions{true, false}).reason(), "element 0 is inverted in the deformed positions");
     EXPECT_EQ(mesh.validate(ValidateOptions{true, false}).code(), RefusalCode::invalid_mesh);
+}
+
+// A move takes the stars walked for it (Mesh::walk_star) only while they are the stars of exactly
+// its vertices in the mesh as it is: the watcher compares every move's elements_around_moved with
+// the stars walked afresh.
+TEST(MoveVertices, TakesTheStarsWalkedForItOnlyWhileTheyAreItsVerticesStars) {
+    Mesh mesh = test::kuhn_cube(3);
+    MirrorWatcher mirror;
+    mesh.add_watcher(mirror);
+    const VertexId a = 21, b = 22, c = 25;  // (1,1,1), (2,1,1), (1,2,1): inside, a-b an edge
+    auto nudge = [&](std::vector<VertexId> vertices, double by) {
+        std::vector<Point> points;
+        for (const VertexId v : vertices) {
+            const Point& x = mesh.deformed(v);
+            points.push_back({x[0] + by, x[1] + by / 2, x[2] - by / 3});
+        }
+        return mesh.move_vertices(vertices, points, PositionSet::deformed, {true, true});
+    };
+    auto walk = [&](std::vector<VertexId> vertices) {
+        mesh.begin_star_walks();
+        for (const VertexId v : vertices) EXPECT_EQ(mesh.walk_star(v).size(), star(mesh, v).size()) << v;
+    };
+    walk({a, b});  // exactly the vertices moved: taken
+    ASSERT_TRUE(nudge({b, a}, 0.01).ok());
+    walk({a, b, c});  // more than moved
+    ASSERT_TRUE(nudge({a, b}, 0.01).ok());
+    walk({a, b});  // then the mesh changed: a's and b's stars have new elements
+    ASSERT_TRUE(split_edge(mesh, a, b, 0.5).ok());
+    ASSERT_TRUE(nudge({a, b}, 0.01).ok());
+    walk({a});  // a refused move changes nothing: the walks stand for the next move
+    EXPECT_EQ(nudge({a}, 2.0).code(), RefusalCode::would_invert);
+    ASSERT_TRUE(nudge({a}, -0.01).ok());
+    EXPECT_TRUE(mesh.walk_star(static_cast<VertexId>(mesh.vertex_count())).empty());
+    EXPECT_EQ(mirror.moves, 4);
+    mirror.expect_mirrors(mesh);
+    EXPECT_TRUE(mesh.validate({true, true}).ok()) << mesh.validate({true, true}).reason();
+    mesh.remove_watcher(mirror);
 }
 
 }  // namespace

@@ -145,6 +145,16 @@ public:
     // refreshes them) rather than by each: on a local solve's write they were half its cost,
     // found twice. Empty outside a move.
     std::span<const ElementId> elements_around_moved() const;
+    // Star walks a move takes over. A caller that walks the stars of the vertices it is about to
+    // move (a local solve gathers its region by their stars, then writes the region's positions)
+    // walks them here: begin_star_walks() forgets earlier walks, walk_star(v) gives star(v) (as
+    // sxk::star; valid until the next walk, empty for a vertex in no element) and remembers it.
+    // While the mesh has not changed since (its revision), a move of exactly the vertices walked
+    // checks and tells their stars' union instead of walking them again: on the femur those walks
+    // were a sixth of a needle step. Any other move walks as usual. Not for concurrent readers:
+    // the walks are kept in the mesh.
+    void begin_star_walks() const;
+    std::span<const ElementId> walk_star(VertexId v) const;
     // One vertex, one set, no check. While neither a watcher nor an EditJournal step watches
     // the mesh this is the bulk path (a plain store: readers and generators set millions of
     // positions); otherwise it is move_vertices of one vertex, so nothing goes unobserved.
@@ -541,7 +551,8 @@ private:
     // Recounts it after the anchors were set in bulk. O(vertices).
     void recount_anchors();
     // move_vertices' checks of a move (its vertices in range, its points finite): no vertex
-    // listed twice and, as `check` asks, no element around them inverted or flat after it.
+    // listed twice and, as `check` asks, no element around them inverted or flat after it. The
+    // elements around them are the caller's walks when they fit (walk_star).
     Outcome<Done> check_move(std::span<const VertexId> vertices, std::span<const Point> points, PositionSet which,
                              const MoveCheck& check);
 
@@ -575,6 +586,19 @@ private:
     mutable std::vector<std::uint32_t> m_around_seen;
     mutable std::uint32_t m_around_generation = 0;
     std::vector<std::uint32_t> m_move_slot;
+    // the star walks since begin_star_walks() (walk_star), at the revision m_walks_revision:
+    // the vertices walked, marked by the generation m_walks_generation, and their stars' union
+    struct StarWalks {
+        bool open = false;
+        std::uint64_t revision = 0;
+        std::uint32_t generation = 0;
+        std::vector<VertexId> vertices;
+        std::vector<ElementId> around, last;
+        std::vector<std::uint32_t> vertex_seen, element_seen;
+    };
+    mutable StarWalks m_walks;
+    // the walks are of this mesh as it is, and of exactly `vertices` (each listed once)
+    bool walked_exactly(std::span<const VertexId> vertices) const;
     friend class MovingVertices;
 };
 
