@@ -125,6 +125,9 @@ std::span<const ElementId> Mesh::walk_star(VertexId v) const {
     collect_star(*this, v, m_vertex_element[v], m_walks.last);
     // remembered only for the mesh the walks began on: after a change they can no longer be taken
     if (!m_walks.open || m_walks.revision != m_revision) return m_walks.last;
+    // (sized when the walks began; grown here for a walk from inside an edit, before its revision)
+    if (m_walks.vertex_seen.size() < vertex_count()) m_walks.vertex_seen.resize(vertex_count(), 0);
+    if (m_walks.element_seen.size() < m_elements.size()) m_walks.element_seen.resize(m_elements.size(), 0);
     if (m_walks.vertex_seen[v] != m_walks.generation) {
         m_walks.vertex_seen[v] = m_walks.generation;
         m_walks.vertices.push_back(v);
@@ -141,8 +144,9 @@ bool Mesh::walked_exactly(std::span<const VertexId> vertices) const {
     if (!m_walks.open || m_walks.revision != m_revision || vertices.size() != m_walks.vertices.size()) return false;
     // as many vertices as were walked, each walked and none twice (move_vertices refuses repeats
     // before it asks): the same set
-    return std::all_of(vertices.begin(), vertices.end(),
-                       [&](VertexId v) { return m_walks.vertex_seen[v] == m_walks.generation; });
+    return std::all_of(vertices.begin(), vertices.end(), [&](VertexId v) {
+        return v < m_walks.vertex_seen.size() && m_walks.vertex_seen[v] == m_walks.generation;
+    });
 }
 
 Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,

@@ -586,8 +586,9 @@ private:
     mutable std::vector<std::uint32_t> m_around_seen;
     mutable std::uint32_t m_around_generation = 0;
     std::vector<std::uint32_t> m_move_slot;
-    // the star walks since begin_star_walks() (walk_star), at the revision m_walks_revision:
-    // the vertices walked, marked by the generation m_walks_generation, and their stars' union
+    // the star walks since begin_star_walks() (walk_star), of the mesh at `revision`: the
+    // vertices walked (each marked in vertex_seen by `generation`), their stars' union (each
+    // marked in element_seen), and the last star walked
     struct StarWalks {
         bool open = false;
         std::uint64_t revision = 0;
