@@ -24,23 +24,15 @@ std::span<const ElementId> Mesh::elements_around_moved() const {
     if (!m_around_moved_found) {
         // each star appended, then what an earlier star listed dropped by the elements' marks (a sort
         // of the stars' union was a tenth of a femur needle step, docs/performance.md "needle")
-        if (m_around_seen.size() < m_elements.size()) m_around_seen.resize(m_elements.size(), 0);
-        if (++m_around_generation == 0) {  // wrapped: marks of 2^32 searches ago would look fresh
-            std::fill(m_around_seen.begin(), m_around_seen.end(), 0);
-            m_around_generation = 1;
-        }
+        m_around_seen.new_round(m_elements.size());
         m_around_moved.clear();
         for (const VertexId v : m_moving) {
             if (m_vertex_element[v] == invalid_id) continue;
             const std::size_t from = m_around_moved.size();
             std::size_t kept = from;
             collect_star(*this, v, m_vertex_element[v], m_around_moved);
-            for (std::size_t i = from; i < m_around_moved.size(); ++i) {
-                const ElementId t = m_around_moved[i];
-                if (m_around_seen[t] == m_around_generation) continue;
-                m_around_seen[t] = m_around_generation;
-                m_around_moved[kept++] = t;
-            }
+            for (std::size_t i = from; i < m_around_moved.size(); ++i)
+                if (m_around_seen.mark(m_around_moved[i])) m_around_moved[kept++] = m_around_moved[i];
             m_around_moved.resize(kept);
         }
         m_around_moved_found = true;
@@ -108,15 +100,10 @@ Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<con
 void Mesh::begin_star_walks() const {
     m_walks.open = true;
     m_walks.revision = m_revision;
-    m_walks.vertices.clear();
+    m_walks.walked = 0;
     m_walks.around.clear();
-    if (m_walks.vertex_seen.size() < vertex_count()) m_walks.vertex_seen.resize(vertex_count(), 0);
-    if (m_walks.element_seen.size() < m_elements.size()) m_walks.element_seen.resize(m_elements.size(), 0);
-    if (++m_walks.generation == 0) {  // wrapped: marks of 2^32 walks ago would look fresh
-        std::fill(m_walks.vertex_seen.begin(), m_walks.vertex_seen.end(), 0);
-        std::fill(m_walks.element_seen.begin(), m_walks.element_seen.end(), 0);
-        m_walks.generation = 1;
-    }
+    m_walks.vertices.new_round(vertex_count());
+    m_walks.elements.new_round(m_elements.size());
 }
 
 std::span<const ElementId> Mesh::walk_star(VertexId v) const {
@@ -125,28 +112,20 @@ std::span<const ElementId> Mesh::walk_star(VertexId v) const {
     collect_star(*this, v, m_vertex_element[v], m_walks.last);
     // remembered only for the mesh the walks began on: after a change they can no longer be taken
     if (!m_walks.open || m_walks.revision != m_revision) return m_walks.last;
-    // (sized when the walks began; grown here for a walk from inside an edit, before its revision)
-    if (m_walks.vertex_seen.size() < vertex_count()) m_walks.vertex_seen.resize(vertex_count(), 0);
-    if (m_walks.element_seen.size() < m_elements.size()) m_walks.element_seen.resize(m_elements.size(), 0);
-    if (m_walks.vertex_seen[v] != m_walks.generation) {
-        m_walks.vertex_seen[v] = m_walks.generation;
-        m_walks.vertices.push_back(v);
-    }
+    // (room made when the walks began; grown here for a walk from inside an edit, before its revision)
+    m_walks.vertices.grow(vertex_count());
+    m_walks.elements.grow(m_elements.size());
+    if (m_walks.vertices.mark(v)) ++m_walks.walked;
     for (const ElementId t : m_walks.last)
-        if (m_walks.element_seen[t] != m_walks.generation) {
-            m_walks.element_seen[t] = m_walks.generation;
-            m_walks.around.push_back(t);
-        }
+        if (m_walks.elements.mark(t)) m_walks.around.push_back(t);
     return m_walks.last;
 }
 
 bool Mesh::walked_exactly(std::span<const VertexId> vertices) const {
-    if (!m_walks.open || m_walks.revision != m_revision || vertices.size() != m_walks.vertices.size()) return false;
+    if (!m_walks.open || m_walks.revision != m_revision || vertices.size() != m_walks.walked) return false;
     // as many vertices as were walked, each walked and none twice (move_vertices refuses repeats
     // before it asks): the same set
-    return std::all_of(vertices.begin(), vertices.end(), [&](VertexId v) {
-        return v < m_walks.vertex_seen.size() && m_walks.vertex_seen[v] == m_walks.generation;
-    });
+    return std::all_of(vertices.begin(), vertices.end(), [&](VertexId v) { return m_walks.vertices.marked(v); });
 }
 
 Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,

@@ -47,6 +47,7 @@
 
 #include "sxk/config.hpp"
 #include "sxk/detail/boundary_map.hpp"
+#include "sxk/detail/id_marks.hpp"
 #include "sxk/detail/large_array.hpp"
 #include "sxk/ids.hpp"
 #include "sxk/outcome.hpp"
@@ -577,25 +578,23 @@ private:
     detail::UndoLog* m_undo = nullptr;  // its open step's record, not copied
     std::uint64_t m_revision = 0;
     // the move being told (elements_around_moved), and the elements around it once found: not
-    // copied, a scratch kept between moves. m_around_seen: per element id, the generation of the
-    // last search that listed it (each once without a sort); m_move_slot: per vertex, its index in
-    // the move being checked, or none (the check's positions without a search)
+    // copied, a scratch kept between moves. m_around_seen: the elements listed (each once without
+    // a sort); m_move_slot: per vertex, its index in the move being checked, or none (the check's
+    // positions without a search)
     std::span<const VertexId> m_moving;
     mutable std::vector<ElementId> m_around_moved;
     mutable bool m_around_moved_found = false;
-    mutable std::vector<std::uint32_t> m_around_seen;
-    mutable std::uint32_t m_around_generation = 0;
+    mutable detail::IdMarks m_around_seen;
     std::vector<std::uint32_t> m_move_slot;
     // the star walks since begin_star_walks() (walk_star), of the mesh at `revision`: the
-    // vertices walked (each marked in vertex_seen by `generation`), their stars' union (each
-    // marked in element_seen), and the last star walked
+    // vertices walked (how many, and each marked), their stars' union (each element marked), and
+    // the last star walked
     struct StarWalks {
         bool open = false;
         std::uint64_t revision = 0;
-        std::uint32_t generation = 0;
-        std::vector<VertexId> vertices;
+        std::size_t walked = 0;
+        detail::IdMarks vertices, elements;
         std::vector<ElementId> around, last;
-        std::vector<std::uint32_t> vertex_seen, element_seen;
     };
     mutable StarWalks m_walks;
     // the walks are of this mesh as it is, and of exactly `vertices` (each listed once)
