@@ -47,9 +47,9 @@ std::span<const ElementId> Mesh::elements_around_moved() const {
 Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<const Point> points,
                                PositionSet which, const MoveCheck& check) {
     constexpr std::uint32_t none = ~std::uint32_t{0};
-    if (m_move_slot.size() < vertex_count()) m_move_slot.resize(vertex_count(), none);
+    detail::grow_doubling(m_move_slot, vertex_count(), none);
     struct Forget {
-        std::vector<std::uint32_t>& slot;
+        detail::LargeVector<std::uint32_t>& slot;
         std::span<const VertexId> vertices;
         std::size_t set = 0;
         ~Forget() {
@@ -128,6 +128,12 @@ bool Mesh::walked_exactly(std::span<const VertexId> vertices) const {
     return std::all_of(vertices.begin(), vertices.end(), [&](VertexId v) { return m_walks.vertices.marked(v); });
 }
 
+void Mesh::count_move() {
+    const bool walks_current = m_walks.revision == m_revision;
+    ++m_revision;
+    if (walks_current) m_walks.revision = m_revision;
+}
+
 Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<const Point> points,
                                   PositionSet which, const MoveCheck& check) {
     if (vertices.size() != points.size())
@@ -156,7 +162,7 @@ Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<
     const MovingVertices moving(*this, vertices);
     if (auto checked = check_move(vertices, points, which, check); !checked) return checked;
 
-    ++m_revision;
+    count_move();
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         if (m_undo != nullptr) m_undo->position(*this, vertices[i]);
         if (writes_reference(which)) m_reference[vertices[i]] = points[i];
@@ -167,7 +173,7 @@ Outcome<Done> Mesh::move_vertices(std::span<const VertexId> vertices, std::span<
 }
 
 void Mesh::set_position(VertexId v, const Point& p, PositionSet which) {
-    ++m_revision;
+    count_move();
     if (m_undo != nullptr) m_undo->position(*this, v);
     if (writes_reference(which)) m_reference[v] = p;
     if (writes_deformed(which)) m_deformed[v] = p;

@@ -132,6 +132,12 @@ public:
     // edit; the element list and the stars that multiply reads wait for the next refresh().
     // largest_young() only grows here. Refuses as refresh does.
     Outcome<Done> refresh_shapes();
+    // Changes with every event the body hears but a move of the deformed positions (an element
+    // added, removed or changed, a reference position moved, init, materials_changed), and takes no
+    // value any other body had: while it stands, the rest shapes, the elements' corners and materials
+    // and the vertices' stars are as they were. What a local solve keeps between solves is keyed to
+    // it (local_relaxation.hpp).
+    std::uint64_t shape_revision() const { return m_shape_revision; }
 
     void init(const Mesh& mesh) override;
     void element_removed(const Mesh& mesh, ElementId element, const Simplex& was) override;
@@ -296,6 +302,9 @@ private:
     mutable std::vector<double> m_element_energy;  // per entry of m_elements
 
     // what the events recorded for the next refresh
+    void heard_edit();  // m_stale, and a new shape revision
+    static std::uint64_t new_shape_revision();
+    std::uint64_t m_shape_revision = new_shape_revision();
     bool m_stale = false;
     bool m_stars_stale = false;  // refresh_shapes ran since the last rebuild_elements_and_stars
     bool m_rebuild_all = false;      // init: every rest shape again

@@ -1,6 +1,7 @@
 // ElasticBody following the edits of its mesh (elastic_body.hpp; watchers: thesis §7.4): the
 // events record what changed, refresh() recomputes what they recorded.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -45,6 +46,16 @@ std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, 
 
 }  // namespace
 
+std::uint64_t ElasticBody::new_shape_revision() {
+    static std::atomic<std::uint64_t> last{0};  // shared by all bodies: a revision never repeats
+    return ++last;
+}
+
+void ElasticBody::heard_edit() {
+    m_stale = true;
+    m_shape_revision = new_shape_revision();
+}
+
 void ElasticBody::init(const Mesh& mesh) {
     m_mesh = &mesh;
     resize_vertices(mesh.vertex_count());
@@ -53,12 +64,12 @@ void ElasticBody::init(const Mesh& mesh) {
     m_dirty.clear();
     m_edit_removed.clear();
     m_edit_adding = false;
-    m_stale = true;
+    heard_edit();
 }
 
 void ElasticBody::materials_changed() {
     m_rebuild_all = true;
-    m_stale = true;
+    heard_edit();
 }
 
 void ElasticBody::element_removed(const Mesh&, ElementId, const Simplex& was) {
@@ -67,7 +78,7 @@ void ElasticBody::element_removed(const Mesh&, ElementId, const Simplex& was) {
         m_edit_adding = false;
     }
     m_edit_removed.push_back(was);
-    m_stale = true;
+    heard_edit();
 }
 
 void ElasticBody::element_changed(const Mesh& mesh, ElementId element, const Simplex& was) {
@@ -83,7 +94,7 @@ void ElasticBody::element_added(const Mesh& mesh, ElementId element) {
 }
 
 void ElasticBody::take_element(const Mesh& mesh, ElementId element) {
-    m_stale = true;
+    heard_edit();
     m_dirty.push_back(element);
     if (mesh.vertex_count() > vertex_count())
         resize_vertices(mesh.vertex_count());
@@ -100,7 +111,7 @@ void ElasticBody::vertices_moved(const Mesh& mesh, std::span<const VertexId> /*v
     // the moved vertices' stars, found by the mesh once for every watcher
     const std::span<const ElementId> around = mesh.elements_around_moved();
     m_dirty.insert(m_dirty.end(), around.begin(), around.end());
-    m_stale = true;
+    heard_edit();
 }
 
 void ElasticBody::interpolate_new_vertex(const Mesh& mesh, VertexId v, const Simplex& added) {

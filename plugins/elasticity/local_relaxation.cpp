@@ -2,6 +2,7 @@
 // body held (local_relaxation.hpp).
 #include "local_relaxation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -17,8 +18,8 @@ void LocalRelaxation::gather(const ElasticBody& body, std::span<const VertexId> 
     m_star_start.clear();
     m_star.clear();
     // grown with the mesh, never cleared whole: unmark() resets what a solve marked
-    if (m_local.size() < body.vertex_count()) m_local.resize(body.vertex_count(), none);
-    if (m_element_index.size() < mesh.element_capacity()) m_element_index.resize(mesh.element_capacity(), none);
+    sxk::detail::grow_doubling(m_local, body.vertex_count(), none);
+    sxk::detail::grow_doubling(m_element_index, mesh.element_capacity(), none);
     auto add = [&](VertexId v) {
         m_local[v] = static_cast<std::uint32_t>(m_vertices.size());
         m_vertices.push_back(v);
@@ -119,6 +120,12 @@ void LocalRelaxation::block_jacobi(const ElasticBody& body, const Eigen::VectorX
     project(body, z);
 }
 
+bool LocalRelaxation::made_for(const ElasticBody& body, std::span<const VertexId> seeds,
+                               std::size_t max_vertices) const {
+    return m_made.body == &body && m_made.shapes == body.shape_revision() && m_made.max_vertices == max_vertices &&
+           std::equal(seeds.begin(), seeds.end(), m_made.seeds.begin(), m_made.seeds.end());
+}
+
 void LocalRelaxation::unmark() {
     for (const VertexId v : m_vertices) m_local[v] = none;
     for (const ElementId t : m_elements) m_element_index[t] = none;
@@ -160,12 +167,15 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
                        "relax the whole body"};
     if (auto fresh = body.refresh_shapes(); !fresh) return fresh.refusal();
     m_dimension = body.dimension();
-    gather(body, seeds, max_vertices);
-    struct Unmark {
-        LocalRelaxation& local;
-        ~Unmark() { local.unmark(); }
-    } unmark_at_end{*this};
     LocalSolveReport report;
+    report.kept = made_for(body, seeds, max_vertices);
+    if (!report.kept) {
+        m_made.body = nullptr;
+        gather(body, seeds, max_vertices);
+        unmark();  // only the gather reads the marks
+        if (m_region > 0) assemble(body);
+        m_made = {&body, body.shape_revision(), max_vertices, {seeds.begin(), seeds.end()}};
+    }
     report.region_vertices = m_region;
     report.rim_vertices = m_vertices.size() - m_region;
     report.elements = m_elements.size();
@@ -175,7 +185,6 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
         return report;
     }
 
-    assemble(body);
     const auto size = static_cast<Eigen::Index>(3 * m_vertices.size());
     const auto region = static_cast<Eigen::Index>(3 * m_region);
     Eigen::VectorXd u(size), f(size), ku, r, d, q;

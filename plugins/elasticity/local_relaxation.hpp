@@ -32,6 +32,7 @@
 #include <Eigen/Core>
 
 #include "elastic_body.hpp"
+#include "sxk/detail/large_array.hpp"
 #include "solve.hpp"
 
 namespace sxk::elasticity {
@@ -41,6 +42,7 @@ struct LocalSolveReport {
     std::size_t region_vertices = 0;  // the vertices solved for
     std::size_t rim_vertices = 0;     // their neighbours outside the region, held where they were
     std::size_t elements = 0;         // the elements around the region: the product's
+    bool kept = false;  // the region and its rows of K were the last solve's (see solve())
 };
 
 class LocalRelaxation {
@@ -50,7 +52,11 @@ public:
     // max_vertices vertices. Seeds out of range or in no element are skipped; no seed left: nothing
     // to do (a report of zeros, converged). The stop threshold is eq. 6.9 over the region (its
     // loads and the reactions at its constrained vertices) with the rounding term of the whole
-    // body. Refuses a neo-Hookean body (bad_argument: its forces are not K u; solve the whole body
+    // body. A solve for the same seeds and bound as the last, on the same body with the same shape
+    // revision (ElasticBody::shape_revision: no edit heard since), keeps the last region and its rows
+    // of K: a needle holding the same nodes steps through an unchanged mesh between refinements and
+    // interceptions, and on the femur gathering and assembling were half of such a step. Refuses a
+    // neo-Hookean body (bad_argument: its forces are not K u; solve the whole body
     // with solve_nonlinear_cg) and as refresh_shapes does; a region without a constrained vertex is
     // solved all the same (its rim holds it). The report's energy is left 0: it is a sum over the
     // whole body.
@@ -75,12 +81,14 @@ private:
     void block_jacobi(const ElasticBody& body, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
     // v onto the motions the region allows: the body's constraints, a planar body's z, the rim held
     void project(const ElasticBody& body, Eigen::VectorXd& v) const;
-    // forgets the marks of the last solve (in time proportional to its region)
+    // forgets the marks of the last gather (in time proportional to its region)
     void unmark();
+    // the region and its rows of K are those of `seeds` and `max_vertices` on the body as it is
+    bool made_for(const ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices) const;
 
     static constexpr std::uint32_t none = 0xffffffffu;
-    std::vector<std::uint32_t> m_local;  // per body vertex: its local index, or none
-    std::vector<std::uint32_t> m_element_index;  // per element id: its index in m_elements, or none
+    // per body vertex: its local index, or none; per element id: its index in m_elements, or none
+    sxk::detail::LargeVector<std::uint32_t> m_local, m_element_index;
     std::vector<VertexId> m_vertices;    // the region (m_region of them), then the rim
     std::size_t m_region = 0;
     std::vector<ElementId> m_elements;
@@ -95,6 +103,13 @@ private:
     std::vector<std::array<double, 9>> m_blocks;
     std::vector<Eigen::Matrix3d> m_inverse_diagonal;  // per region row: its diagonal block inverted
     int m_dimension = 3;
+    // what the region and its rows were made for (made_for)
+    struct Made {
+        const ElasticBody* body = nullptr;
+        std::uint64_t shapes = 0;  // the body's shape revision
+        std::size_t max_vertices = 0;
+        std::vector<VertexId> seeds;
+    } m_made;
 };
 
 }  // namespace sxk::elasticity

@@ -342,8 +342,11 @@ TEST(MoveVertices, TakesTheStarsWalkedForItOnlyWhileTheyAreItsVerticesStars) {
     walk({a});  // a refused move changes nothing: the walks stand for the next move
     EXPECT_EQ(nudge({a}, 2.0).code(), RefusalCode::would_invert);
     ASSERT_TRUE(nudge({a}, -0.01).ok());
+    ASSERT_TRUE(nudge({a}, 0.01).ok());  // nor does a move change a star: they stand for the next
+    ASSERT_TRUE(split_edge(mesh, a, c, 0.5).ok());  // until an edit
+    ASSERT_TRUE(nudge({a}, -0.01).ok());
     EXPECT_TRUE(mesh.walk_star(static_cast<VertexId>(mesh.vertex_count())).empty());
-    EXPECT_EQ(mirror.moves, 4);
+    EXPECT_EQ(mirror.moves, 6);
     mirror.expect_mirrors(mesh);
     EXPECT_TRUE(mesh.validate({true, true}).ok()) << mesh.validate({true, true}).reason();
     mesh.remove_watcher(mirror);

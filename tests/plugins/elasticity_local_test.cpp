@@ -2,7 +2,8 @@
 // whole body's solution when the region is the whole body (planar and tetrahedral, and after an
 // edit heard only by refresh_shapes), a bounded region changes nothing outside it and meets its
 // threshold, the refusals, elastic_forces_at against elastic_forces, write_deformed of a subset,
-// the service's relax_near, and the stiffness rows the region's product is assembled from.
+// the service's relax_near, the stiffness rows the region's product is assembled from, and the
+// region and rows a solve keeps for the next.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -139,6 +140,67 @@ TEST(ElasticityLocal, BoundedRegionChangesNothingOutsideAndMeetsItsThreshold) {
     EXPECT_EQ(slab.body->displacement(slab.pulled), (Vector3{-0.001, 0, 0}));
     EXPECT_EQ(slab.body->displacement(slab.slipping)[0], 0);
     EXPECT_GT(slab.body->displacement(slab.slipping)[1], 0);
+}
+
+// A solve for the seeds and bound of the last, on the same body with no edit heard since, keeps
+// the region and its rows of K; it finds what a solver that gathers afresh finds, to the bit. A
+// new constraint or load, or a write of the deformed positions, keeps them; a reference move, an
+// edit, other seeds, another bound or another body do not.
+TEST(ElasticityLocal, ASolveKeepsTheLastRegionWhileTheBodyHearsNoEdit) {
+    Slab slab(16);
+    ElasticBody& body = *slab.body;
+    LocalRelaxation keeping;
+    const VertexId seeds[] = {slab.pulled, slab.slipping};
+    const SolveOptions options{.tolerance = 1e-8};
+    // keeping's solve from the body as it is, then a fresh solver's from the same displacements:
+    // the same region, report and displacements
+    auto solve_as_fresh = [&](std::span<const VertexId> with, std::size_t bound) {
+        const Eigen::VectorXd before = body.displacements();
+        auto kept = keeping.solve(body, with, bound, options);
+        EXPECT_TRUE(kept.ok()) << kept.reason();
+        const Eigen::VectorXd after = body.displacements();
+        body.displacements() = before;
+        LocalRelaxation fresh;
+        auto afresh = fresh.solve(body, with, bound, options);
+        EXPECT_TRUE(afresh.ok()) << afresh.reason();
+        EXPECT_FALSE(afresh->kept);
+        EXPECT_TRUE(std::equal(keeping.region().begin(), keeping.region().end(), fresh.region().begin(),
+                               fresh.region().end()));
+        EXPECT_TRUE(std::equal(keeping.rim().begin(), keeping.rim().end(), fresh.rim().begin(), fresh.rim().end()));
+        EXPECT_EQ(kept->solve.iterations, afresh->solve.iterations);
+        EXPECT_EQ(kept->elements, afresh->elements);
+        EXPECT_TRUE(after == body.displacements()) << "largest difference " << largest_difference(after, body.displacements());
+        return kept->kept;
+    };
+    EXPECT_FALSE(solve_as_fresh(seeds, 40));
+    ASSERT_TRUE(body.fix(slab.pulled, {-0.002, 0, 0}).ok());  // constraints are read by every solve
+    EXPECT_TRUE(solve_as_fresh(seeds, 40));
+    ASSERT_TRUE(body.add_force(slab.slipping, {0, 0.02, 0}).ok());
+    ASSERT_TRUE(body.write_deformed(slab.mesh, keeping.region()).ok());  // deformed positions: no rest shape
+    EXPECT_TRUE(solve_as_fresh(seeds, 40));
+    EXPECT_FALSE(solve_as_fresh(seeds, 41));
+    const VertexId reversed[] = {slab.slipping, slab.pulled};
+    EXPECT_FALSE(solve_as_fresh(reversed, 41));
+    EXPECT_TRUE(solve_as_fresh(reversed, 41));
+    // a reference move in the region: its elements' rest shapes change
+    const VertexId inside = keeping.region()[5];
+    Point x = slab.mesh.reference(inside);
+    x[0] += 0.1 / 16 / 10;
+    const VertexId one[] = {inside};
+    ASSERT_TRUE(slab.mesh.move_vertices(one, std::span<const Point>(&x, 1), PositionSet::reference, {true, true}).ok());
+    EXPECT_FALSE(solve_as_fresh(reversed, 41));
+    EXPECT_TRUE(solve_as_fresh(reversed, 41));
+    // an edit, even far from the region: the body hears it, the region is gathered again
+    ASSERT_TRUE(split_edge(slab.mesh, VertexId{0}, VertexId{1}, 0.5).ok());
+    EXPECT_FALSE(solve_as_fresh(reversed, 41));
+    EXPECT_TRUE(solve_as_fresh(reversed, 41));
+    // another body
+    Slab other(16);
+    auto on_other = keeping.solve(*other.body, reversed, 41, options);
+    ASSERT_TRUE(on_other.ok()) << on_other.reason();
+    EXPECT_FALSE(on_other->kept);
+    EXPECT_TRUE(slab.mesh.validate({true, true}).ok()) << slab.mesh.validate({true, true}).reason();
+    EXPECT_TRUE(other.mesh.validate({true, true}).ok()) << other.mesh.validate({true, true}).reason();
 }
 
 TEST(ElasticityLocal, KuhnCubeAfterASplitHeardOnlyByRefreshShapes) {

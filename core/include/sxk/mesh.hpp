@@ -150,10 +150,10 @@ public:
     // move (a local solve gathers its region by their stars, then writes the region's positions)
     // walks them here: begin_star_walks() forgets earlier walks, walk_star(v) gives star(v) (as
     // sxk::star; valid until the next walk, empty for a vertex in no element) and remembers it.
-    // While the mesh has not changed since (its revision), a move of exactly the vertices walked
-    // checks and tells their stars' union instead of walking them again: on the femur those walks
-    // were a sixth of a needle step. Any other move walks as usual. Not for concurrent readers:
-    // the walks are kept in the mesh.
+    // While the mesh has not changed since but for moves (which change no star), a move of exactly
+    // the vertices walked checks and tells their stars' union instead of walking them again: on
+    // the femur those walks were a sixth of a needle step. Any other move walks as usual. Not for
+    // concurrent readers: the walks are kept in the mesh.
     void begin_star_walks() const;
     std::span<const ElementId> walk_star(VertexId v) const;
     // One vertex, one set, no check. While neither a watcher nor an EditJournal step watches
@@ -585,7 +585,7 @@ private:
     mutable std::vector<ElementId> m_around_moved;
     mutable bool m_around_moved_found = false;
     mutable detail::IdMarks m_around_seen;
-    std::vector<std::uint32_t> m_move_slot;
+    detail::LargeVector<std::uint32_t> m_move_slot;
     // the star walks since begin_star_walks() (walk_star), of the mesh at `revision`: the
     // vertices walked (how many, and each marked), their stars' union (each element marked), and
     // the last star walked
@@ -599,6 +599,9 @@ private:
     mutable StarWalks m_walks;
     // the walks are of this mesh as it is, and of exactly `vertices` (each listed once)
     bool walked_exactly(std::span<const VertexId> vertices) const;
+    // A move's new revision. Walks current before it stay current: a move changes no star, so a
+    // caller that gathers a region once and writes it frame after frame walks it once.
+    void count_move();
     friend class MovingVertices;
 };
 

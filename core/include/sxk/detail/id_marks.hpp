@@ -8,7 +8,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+
+#include "sxk/detail/large_array.hpp"
 
 namespace sxk::detail {
 
@@ -23,9 +24,7 @@ public:
         }
     }
     // Room for ids below n, the round's marks kept.
-    void grow(std::size_t n) {
-        if (m_round_of.size() < n) m_round_of.resize(n, 0);
-    }
+    void grow(std::size_t n) { grow_doubling(m_round_of, n, std::uint32_t{0}); }
     // Marks id (below the room made); true when this round had not marked it yet.
     bool mark(std::size_t id) {
         if (m_round_of[id] == m_round) return false;
@@ -35,7 +34,7 @@ public:
     bool marked(std::size_t id) const { return m_round != 0 && id < m_round_of.size() && m_round_of[id] == m_round; }
 
 private:
-    std::vector<std::uint32_t> m_round_of;  // per id: the round that last marked it (0: none)
+    LargeVector<std::uint32_t> m_round_of;  // per id: the round that last marked it (0: none)
     std::uint32_t m_round = 0;
 };
 

@@ -61,6 +61,18 @@ struct LargeArrayAllocator {
 template <class T>
 using LargeVector = std::vector<T, LargeArrayAllocator<T>>;
 
+// Grows v to at least n entries (the new ones `fill`), making room for it to double when it has
+// none: scratch kept per vertex or element id that follows a growing mesh (marks, slots) is then
+// copied once per doubling of the mesh, not each time the mesh grows a little. Inside a tool's
+// step such a copy, with the fresh pages it touches, took 36-47 ms on a million triangles
+// (docs/performance.md "needle").
+template <class T>
+void grow_doubling(LargeVector<T>& v, std::size_t n, const T& fill) {
+    if (v.size() >= n) return;
+    if (v.capacity() < n) v.reserve(2 * n);
+    v.resize(n, fill);
+}
+
 // A file's bytes as the readers hold them.
 using TextBuffer = std::basic_string<char, std::char_traits<char>, LargeArrayAllocator<char>>;
 
