@@ -82,6 +82,7 @@ void Mesh::reserve(std::size_t vertices, std::size_t elements) {
     m_faces.reserve(elements * static_cast<std::size_t>(m_dimension + 1));
     for (detail::AttributeColumn& a : m_element_attributes)
         a.values.reserve(elements * static_cast<std::size_t>(a.components));
+    size_move_scratch();
 }
 
 VertexId Mesh::opposite_vertex(ElementId t, FaceId f) const {

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ namespace sxk {
 namespace {
 
 const char* set_name(bool reference) { return reference ? "reference" : "deformed"; }
+
+constexpr std::uint32_t no_slot = ~std::uint32_t{0};  // m_move_slot of a vertex not being moved
 
 }  // namespace
 
@@ -46,18 +49,17 @@ std::span<const ElementId> Mesh::elements_around_moved() const {
 // the watchers hear of the move (one of them may move vertices in turn).
 Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<const Point> points,
                                PositionSet which, const MoveCheck& check) {
-    constexpr std::uint32_t none = ~std::uint32_t{0};
-    detail::grow_doubling(m_move_slot, vertex_count(), none);
+    detail::grow_doubling(m_move_slot, vertex_count(), no_slot);
     struct Forget {
         detail::LargeVector<std::uint32_t>& slot;
         std::span<const VertexId> vertices;
         std::size_t set = 0;
         ~Forget() {
-            for (std::size_t i = 0; i < set; ++i) slot[vertices[i]] = none;
+            for (std::size_t i = 0; i < set; ++i) slot[vertices[i]] = no_slot;
         }
     } slots{m_move_slot, vertices};
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-        if (m_move_slot[vertices[i]] != none)
+        if (m_move_slot[vertices[i]] != no_slot)
             return Refusal{RefusalCode::bad_argument,
                            "move_vertices: vertex " + std::to_string(vertices[i]) + " is listed twice", i};
         m_move_slot[vertices[i]] = static_cast<std::uint32_t>(i);
@@ -72,7 +74,7 @@ Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<con
     // every element around a moved vertex, once, at the positions it would have
     const std::span<const ElementId> around = elements_around_moved();
     auto after = [&](VertexId w, bool reference) -> const Point* {
-        if (m_move_slot[w] != none) return &points[m_move_slot[w]];
+        if (m_move_slot[w] != no_slot) return &points[m_move_slot[w]];
         return reference ? &m_reference[w] : &m_deformed[w];
     };
     for (const bool reference : {true, false}) {
@@ -95,6 +97,13 @@ Outcome<Done> Mesh::check_move(std::span<const VertexId> vertices, std::span<con
         }
     }
     return Done{};
+}
+
+void Mesh::size_move_scratch() {
+    detail::grow_doubling(m_move_slot, vertex_count(), no_slot);
+    m_around_seen.grow(m_elements.size());
+    m_walks.vertices.grow(vertex_count());
+    m_walks.elements.grow(m_elements.size());
 }
 
 void Mesh::begin_star_walks() const {

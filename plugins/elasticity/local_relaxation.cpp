@@ -10,6 +10,11 @@
 
 namespace sxk::elasticity {
 
+void LocalRelaxation::reserve(const ElasticBody& body) {
+    sxk::detail::grow_doubling(m_local, body.vertex_count(), none);
+    sxk::detail::grow_doubling(m_element_index, body.mesh().element_capacity(), none);
+}
+
 void LocalRelaxation::gather(const ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices) {
     const Mesh& mesh = body.mesh();
     m_vertices.clear();
@@ -18,8 +23,7 @@ void LocalRelaxation::gather(const ElasticBody& body, std::span<const VertexId> 
     m_star_start.clear();
     m_star.clear();
     // grown with the mesh, never cleared whole: unmark() resets what a solve marked
-    sxk::detail::grow_doubling(m_local, body.vertex_count(), none);
-    sxk::detail::grow_doubling(m_element_index, mesh.element_capacity(), none);
+    reserve(body);
     auto add = [&](VertexId v) {
         m_local[v] = static_cast<std::uint32_t>(m_vertices.size());
         m_vertices.push_back(v);

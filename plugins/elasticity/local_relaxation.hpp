@@ -62,6 +62,9 @@ public:
     // whole body.
     Outcome<LocalSolveReport> solve(ElasticBody& body, std::span<const VertexId> seeds, std::size_t max_vertices,
                                     const SolveOptions& options = {});
+    // Sizes the scratch kept per vertex and element id for the body's mesh as it is (with room to
+    // double), which the first solve would otherwise do inside a tool's step: a setup's cost.
+    void reserve(const ElasticBody& body);
     // The region of the last solve: the vertices whose displacements it may have changed.
     std::span<const VertexId> region() const { return {m_vertices.data(), m_region}; }
     // Its rim: the other corners of the region's elements, held where they were.

@@ -4,6 +4,7 @@
 #include "sxk/ops/tet_bisection.hpp"
 
 #include "ops/tet_bisection_plan.hpp"
+#include "sxk/detail/large_array.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -100,6 +101,9 @@ std::array<TetMarking, 2> bisected_markings(const TetMarking& parent, VertexId m
 
 TetBisection::TetBisection(Mesh& mesh, std::vector<TetMarking> markings, BisectionRule rule)
     : m_mesh(&mesh), m_markings(std::move(markings)), m_rule(rule) {
+    // room to double before write_marking grows them: a growth copies them, with the fresh pages
+    // it touches, inside the step that bisects (detail::grow_doubling)
+    m_markings.reserve(2 * std::max(m_markings.size(), mesh.element_capacity()));
     attach();
 }
 
@@ -260,7 +264,8 @@ Outcome<Done> TetBisection::check_marking() const {
 // ---- watching the mesh ----------------------------------------------------------------------
 
 void TetBisection::write_marking(ElementId t, const TetMarking& marking) {
-    if (m_markings.size() <= t) m_markings.resize(std::max<std::size_t>(t + 1, m_mesh->element_capacity()));
+    if (m_markings.size() <= t)
+        detail::grow_doubling(m_markings, std::max<std::size_t>(t + 1, m_mesh->element_capacity()), TetMarking{});
     m_undo.push_back({t, m_markings[t], m_last_child});
     m_markings[t] = marking;
 }

@@ -66,8 +66,8 @@ using LargeVector = std::vector<T, LargeArrayAllocator<T>>;
 // copied once per doubling of the mesh, not each time the mesh grows a little. Inside a tool's
 // step such a copy, with the fresh pages it touches, took 36-47 ms on a million triangles
 // (docs/performance.md "needle").
-template <class T>
-void grow_doubling(LargeVector<T>& v, std::size_t n, const T& fill) {
+template <class Vector>
+void grow_doubling(Vector& v, std::size_t n, const typename Vector::value_type& fill) {
     if (v.size() >= n) return;
     if (v.capacity() < n) v.reserve(2 * n);
     v.resize(n, fill);
