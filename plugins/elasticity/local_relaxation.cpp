@@ -22,7 +22,7 @@ void LocalRelaxation::gather(const ElasticBody& body, std::span<const VertexId> 
     m_element_corners.clear();
     m_star_start.clear();
     m_star.clear();
-    // grown with the mesh, never cleared whole: unmark() resets what a solve marked
+    // grown with the mesh, never cleared whole: unmark() resets what a gather marked
     reserve(body);
     auto add = [&](VertexId v) {
         m_local[v] = static_cast<std::uint32_t>(m_vertices.size());
@@ -174,11 +174,14 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
     LocalSolveReport report;
     report.kept = made_for(body, seeds, max_vertices);
     if (!report.kept) {
-        m_made.body = nullptr;
+        m_made.body = nullptr;  // nothing kept until the region and its rows are whole again
         gather(body, seeds, max_vertices);
         unmark();  // only the gather reads the marks
         if (m_region > 0) assemble(body);
-        m_made = {&body, body.shape_revision(), max_vertices, {seeds.begin(), seeds.end()}};
+        m_made.seeds.assign(seeds.begin(), seeds.end());  // its capacity reused
+        m_made.max_vertices = max_vertices;
+        m_made.shapes = body.shape_revision();
+        m_made.body = &body;
     }
     report.region_vertices = m_region;
     report.rim_vertices = m_vertices.size() - m_region;
