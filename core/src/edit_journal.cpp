@@ -32,6 +32,7 @@ void EditJournal::checkpoint() {
         m_mesh.m_undo = m_open.get();
     }
     m_marks.push_back(m_open->size());
+    m_mesh.new_record_stretch();
 }
 
 std::size_t EditJournal::recorded() const { return m_marks.empty() ? 0 : m_open->size(); }
@@ -69,6 +70,7 @@ Outcome<Done> EditJournal::rollback() {
     m_open->undo(m_mesh, mark, nullptr);
     if (!m_marks.empty()) {
         m_mesh.m_undo = m_open.get();
+        m_mesh.new_record_stretch();
     } else if (m_revision_at_open == m_history_revision) {
         // the mesh is exactly as after the history's last step again
         m_history_revision = m_mesh.revision();

@@ -2,12 +2,16 @@
 //
 // Watchers are told net changes only (watcher.hpp). The primitives record the state of every
 // face they touch *before* touching it, and which faces and elements they freed and created;
-// at the end the log compares before and after and reports each difference once. Edits touch
-// O(k) faces, so a flat vector with linear search beats any map here.
+// at the end the log compares before and after and reports each difference once. Most edits
+// touch a few faces, found by a linear search; an AMP closure replaces tens of elements in one
+// edit and touches a thousand faces, found through an index (docs/performance.md "A record per
+// element and stretch": the linear search was a tenth of a femur needle's refinement).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
+#include "sxk/detail/flat_set.hpp"
 #include "sxk/mesh.hpp"
 
 namespace sxk::detail {
@@ -84,14 +88,23 @@ private:
         bool created;
         bool existed_before;
     };
+    static constexpr std::size_t linear_search_limit = 32;
     FaceRecord* find(FaceId f) {
-        for (FaceRecord& r : m_faces)
-            if (r.face == f) return &r;
-        return nullptr;
+        if (m_faces.size() <= linear_search_limit) {
+            for (FaceRecord& r : m_faces)
+                if (r.face == f) return &r;
+            return nullptr;
+        }
+        for (; m_indexed < m_faces.size(); ++m_indexed)
+            m_index.insert(m_faces[m_indexed].face.value(), static_cast<std::uint32_t>(m_indexed));
+        const std::uint32_t* at = m_index.find(f.value());
+        return at == nullptr ? nullptr : &m_faces[*at];
     }
 
     bool m_active;
     std::vector<FaceRecord> m_faces;
+    FlatMap<std::uint32_t, std::uint32_t> m_index;  // face -> its record, past linear_search_limit
+    std::size_t m_indexed = 0;                      // the records in m_index
     std::vector<std::pair<ElementId, Simplex>> m_removed;
     std::vector<std::pair<ElementId, Simplex>> m_changed;
     std::vector<ElementId> m_added;

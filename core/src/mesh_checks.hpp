@@ -80,6 +80,10 @@ namespace sxk {
 // face-connected among themselves, so every path through star(v) across the old elements can be
 // rerouted across the new ones: that gives (b).
 //
+// The splits (ops/split_parents.hpp) and AMP's replay of a conforming refinement
+// (ops/tet_bisection_amp.cpp, which checks the edges it bisects for two fans first) prove both
+// from their new vertex or vertices, which no element had.
+//
 // `change` is change_elements on the same terms. Dissection (ops/dissect.cpp) proves both. (a)
 // Every element it changes gets a copy of a split vertex, a vertex in no element before, so no
 // changed element and no face holding a copy exists in an element that stays; a face without a

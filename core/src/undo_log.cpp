@@ -10,8 +10,18 @@ namespace sxk {
 
 // ---- what the mesh notes ------------------------------------------------------------------------
 
-void Mesh::note_element(ElementId t) { m_undo->element(*this, t); }
-void Mesh::note_face(FaceId f) { m_undo->face(*this, f); }
+void Mesh::note_element(ElementId t) {
+    m_noted.elements.grow(std::size_t{t} + 1);
+    if (m_noted.elements.mark(t)) m_undo->element(*this, t);
+}
+void Mesh::note_face(FaceId f) {
+    m_noted.faces.grow(std::size_t{f} + 1);
+    if (m_noted.faces.mark(f)) m_undo->face(*this, f);
+}
+void Mesh::new_record_stretch() {
+    m_noted.elements.new_round(m_elements.size());
+    m_noted.faces.new_round(m_faces.size());
+}
 void Mesh::note_anchor(VertexId v) { m_undo->anchor(*this, v); }
 void Mesh::note_pools() {
     if (m_undo != nullptr) m_undo->pools(*this);

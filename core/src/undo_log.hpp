@@ -12,8 +12,13 @@
 // Replaying emits, into another record, what each entry overwrote in turn: the inverse, which
 // replayed in its turn redoes the step. The undo/redo history of EditJournal is that.
 //
-// Cost: one entry per store (an edit of k elements stores O(k) records), so a step costs what it
-// touched, never the size of the mesh.
+// The mesh keeps an element or face once per stretch between checkpoints and rollbacks
+// (Mesh::m_noted): a replay writes back the first state kept of each, so later ones would be
+// overwritten anyway, and no replay can stop inside a stretch (it goes back to a checkpoint). The
+// inverse a replay emits keeps each element and face it puts back, once per entry.
+//
+// Cost: at most one entry per store (an edit of k elements stores O(k) records), so a step costs
+// what it touched, never the size of the mesh.
 #pragma once
 
 #include <cstddef>

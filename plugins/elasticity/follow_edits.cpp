@@ -21,6 +21,18 @@ namespace {
 // beyond D get 0); nullopt when s is flat or x is outside it by more than a rounding error.
 template <int D>
 std::optional<std::array<double, 4>> inside(const Mesh& mesh, const Simplex& s, const Point& x) {
+    // outside the simplex's box, widened far beyond the slack below: no factorisation (an edit of
+    // an AMP closure removes tens of elements and adds tens of vertices, each tried against them)
+    for (int k = 0; k < D; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        double low = mesh.reference(s.vertex(0))[kk], high = low;
+        for (int j = 1; j <= D; ++j) {
+            low = std::min(low, mesh.reference(s.vertex(j))[kk]);
+            high = std::max(high, mesh.reference(s.vertex(j))[kk]);
+        }
+        const double margin = 1e-6 * (high - low) + 1e-12 * std::max(std::abs(low), std::abs(high));
+        if (x[kk] < low - margin || x[kk] > high + margin) return std::nullopt;
+    }
     const Point& origin = mesh.reference(s.vertex(D));
     const Eigen::FullPivLU<Eigen::Matrix<double, D, D>> lu(detail::edge_matrix<D>(mesh, s));
     if (!lu.isInvertible())

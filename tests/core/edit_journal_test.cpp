@@ -103,6 +103,27 @@ TEST(EditJournal, NestedStepsRollBackToTheirOwnCheckpoint) {
     EXPECT_TRUE(mesh.validate().ok());
 }
 
+// An element or face is recorded once per stretch between checkpoints and rollbacks. What an inner
+// step recorded goes with its rollback: the outer step's next store into the same element is
+// recorded anew, and the outer rollback takes it back.
+TEST(EditJournal, AStoreAfterAnInnerRollbackIsRecordedAgain) {
+    Mesh mesh = test::unit_square();
+    const int label = mesh.label(0);
+    EditJournal journal(mesh);
+    const auto start = snapshot(mesh);
+    journal.checkpoint();
+    journal.checkpoint();
+    mesh.set_label(0, 5);
+    mesh.set_label(0, 6);  // the same stretch: kept once
+    ASSERT_TRUE(journal.rollback().ok());
+    EXPECT_EQ(mesh.label(0), label);
+    mesh.set_label(0, 7);
+    ASSERT_TRUE(journal.rollback().ok());
+    EXPECT_EQ(mesh.label(0), label);
+    EXPECT_TRUE(snapshot(mesh) == start);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(EditJournal, UndoAndRedoWalkTheCommittedSteps) {
     Mesh mesh = test::unit_square();
     MirrorWatcher mirror;

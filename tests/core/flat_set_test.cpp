@@ -1,9 +1,11 @@
-// detail::FlatSet: the open-addressing set of the snap cut's hot loops, against std::set.
+// detail::FlatSet and FlatMap: the open-addressing set of the snap cut's hot loops and the map of
+// an edit's touched faces, against std::set and std::map.
 #include "sxk/detail/flat_set.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <map>
 #include <random>
 #include <set>
 
@@ -43,6 +45,31 @@ TEST(FlatSet, AgreesWithStdSetThroughGrowth) {
         ASSERT_EQ(set.contains(key), peer.count(key) == 1) << "key " << key << " (seed " << seed << ")";
     }
     for (const std::uint64_t key : peer) ASSERT_TRUE(set.contains(key)) << "key " << key << " (seed " << seed << ")";
+}
+
+// Values stay with their keys through the doublings; a second insert keeps the first value.
+TEST(FlatMap, AgreesWithStdMapThroughGrowth) {
+    const std::uint64_t seed = seed_for("FlatMap.AgreesWithStdMapThroughGrowth");
+    std::mt19937_64 random(seed);
+    detail::FlatMap<std::uint32_t, std::uint32_t> map;
+    std::map<std::uint32_t, std::uint32_t> peer;
+    std::uniform_int_distribution<std::uint32_t> key_of(0, 50000), value_of;
+    EXPECT_EQ(map.find(3), nullptr);
+    for (int i = 0; i < 20000; ++i) {
+        const std::uint32_t key = key_of(random), value = value_of(random);
+        ASSERT_EQ(map.insert(key, value), peer.emplace(key, value).second) << "key " << key << " (seed " << seed << ")";
+        ASSERT_NE(map.find(key), nullptr);
+        ASSERT_EQ(*map.find(key), peer.at(key)) << "key " << key << " (seed " << seed << ")";
+    }
+    EXPECT_EQ(map.size(), peer.size());
+    for (std::uint32_t key = 0; key <= 50000; ++key) {
+        const auto it = peer.find(key);
+        const std::uint32_t* value = map.find(key);
+        ASSERT_EQ(value != nullptr, it != peer.end()) << "key " << key << " (seed " << seed << ")";
+        if (value != nullptr) ASSERT_EQ(*value, it->second) << "key " << key << " (seed " << seed << ")";
+    }
+    *map.find(peer.begin()->first) = 7;  // found values are the map's own
+    EXPECT_EQ(*map.find(peer.begin()->first), 7u);
 }
 
 }  // namespace

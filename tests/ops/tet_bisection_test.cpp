@@ -32,6 +32,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -768,6 +769,52 @@ TEST(RefineAroundTetrahedra, RefusesWithReasonAndUntouchedMesh) {
     EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: point (-0.5, 0.5, 0.5) is not in the mesh");
     EXPECT_EQ(refused.code(), RefusalCode::not_found);
     expect_same_state(mesh, before);
+}
+
+// An edge whose tetrahedra are two fans joined only at the edge cannot be bisected (the midpoint's
+// star would be pinched): refused before anything changes by both replays, the split_edge one of
+// Maubach's rule and AMP's one replace_elements, which skips the star walks (a ProvenEdit) and
+// checks the edges it bisects instead. The point is the edge's midpoint: the tetrahedron holding
+// it holds the edge until the edge is bisected.
+TEST(RefineAroundTetrahedra, RefusesToBisectAnEdgeWhoseTetrahedraAreTwoFans) {
+    std::optional<test::TwoFanEdge> fans = test::two_fan_edge();
+    ASSERT_TRUE(fans) << "no edge of the cube became two fans";
+    Mesh& mesh = fans->mesh;
+    const Point &a = mesh.reference(fans->a), &b = mesh.reference(fans->b);
+    const Point x{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+    const std::string around = "the tetrahedra around " + to_text(Simplex(+1, {fans->a, fans->b})) +
+                               " are 2 fans joined only at the edge: bisecting it would pinch the new vertex's star";
+    const Mesh before = mesh;
+    auto maubach = TetBisection::for_kuhn_mesh(mesh);
+    ASSERT_TRUE(maubach.ok()) << maubach.reason();
+    auto refused = refine_around_tetrahedra(*maubach, x, 0.01);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.code(), RefusalCode::pinched_star);
+    EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: " + around);
+    expect_same_state(mesh, before);
+    auto amp = TetBisection::with_amp_marking(mesh);
+    ASSERT_TRUE(amp.ok()) << amp.reason();
+    refused = refine_around_tetrahedra(*amp, x, 0.01);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.code(), RefusalCode::pinched_star);
+    EXPECT_EQ(refused.reason(), "refine_around_tetrahedra: bisect_tetrahedron: " + around);
+    expect_same_state(mesh, before);
+    EXPECT_FALSE(amp->is_stale());
+    // away from the edge (the centroid of the tetrahedron farthest from it) AMP refines, and the
+    // mesh stays valid
+    Point far = x;
+    double farthest = 0;
+    for (const ElementId t : elements(mesh)) {
+        Point c{0, 0, 0};
+        for (const VertexId v : mesh.simplex(t).vertices())
+            for (int k = 0; k < 3; ++k) c[k] += mesh.reference(v)[k] / 4;
+        const double d = std::hypot(c[0] - x[0], c[1] - x[1], c[2] - x[2]);
+        if (d > farthest) farthest = d, far = c;
+    }
+    const auto refined = refine_around_tetrahedra(*amp, far, 0.1);
+    ASSERT_TRUE(refined.ok()) << refined.reason();
+    EXPECT_GT(*refined, 0u);
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
 }
 
 TEST(RefineAroundTetrahedra, RefusesTriangleMeshes) {

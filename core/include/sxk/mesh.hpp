@@ -526,7 +526,8 @@ private:
     bool observed() const { return m_undo != nullptr || !m_watchers.empty(); }
     void set_position(VertexId v, const Point& p, PositionSet which);
     // Each keeps the state that is about to change; the mesh calls them before every store into
-    // its pools, anchors and boundary map while a step is open.
+    // its pools, anchors and boundary map while a step is open. An element or face is kept once
+    // per stretch (m_noted).
     void note_element(ElementId t);
     void note_face(FaceId f);
     void note_anchor(VertexId v);
@@ -579,6 +580,16 @@ private:
     std::vector<Watcher*> m_watchers;
     EditJournal* m_journal = nullptr;   // the journal attached, not copied
     detail::UndoLog* m_undo = nullptr;  // its open step's record, not copied
+    // The elements and faces the open step's record kept since its last checkpoint or rollback
+    // (a stretch: no rollback can end inside one). A replay puts back the first state it kept of
+    // each, so a second store into one in the same stretch needs no record of its own: an AMP
+    // bisection stores into each new element once per face (docs/performance.md "A record per
+    // element and stretch"). Not copied, a scratch.
+    struct Noted {
+        detail::IdMarks elements, faces;
+    };
+    Noted m_noted;
+    void new_record_stretch();  // EditJournal, at each checkpoint and rollback
     std::uint64_t m_revision = 0;
     // the move being told (elements_around_moved), and the elements around it once found: not
     // copied, a scratch kept between moves. m_around_seen: the elements listed (each once without

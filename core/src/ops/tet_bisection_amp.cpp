@@ -9,6 +9,7 @@
 #include <span>
 #include <utility>
 
+#include "mesh_checks.hpp"
 #include "ops/orientation_checks.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/traversal.hpp"
@@ -255,6 +256,13 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
         }
     }
 
+    // An edge of the mesh whose tetrahedra are several fans joined only at the edge cannot be bisected:
+    // the midpoint's star would be pinched (as split_edge refuses it). Checked before anything is
+    // added; the edges the plan makes lie inside the originals' faces and tetrahedra, one fan each.
+    std::vector<TetEdge> split_edges;
+    for (const auto& planned : plan.new_vertices()) split_edges.push_back({planned.a, planned.b});
+    if (auto refused = refuse_pinched_edges(mesh, split_edges, "")) return *refused;
+
     auto undo_vertices = [&] {
         while (mesh.vertex_count() > plan.base()) (void)mesh.remove_last_vertex();
     };
@@ -270,8 +278,17 @@ Outcome<Done> amp_replay(TetBisection& state, const AmpClosurePlan& plan) {
                            (added.ok() ? std::string() : ": " + added.reason())};
         }
     }
+    // The star checks of replace_elements are proven (mesh_checks.hpp, ProvenEdit). (a) A leaf, and a
+    // face of a leaf that is no face of an original, has a new vertex: three old vertices of a leaf
+    // are corners of its original, and span one of its faces. (b) Within an original the leaves
+    // around a vertex v are face-connected through faces holding v (the two children of a bisection
+    // share the face through the midpoint and the two corners off the bisected edge), the plan is
+    // conforming (AMP's closure), so a face between two originals, or between an original and an
+    // element that stays, is split the same way on both sides, and each piece holding v joins
+    // them; a new vertex lies inside an original tetrahedron, inside a face, or on an edge of one
+    // fan (checked above), where a conforming subdivision leaves it a face-connected star.
     TetBisectionAccess::set_own_edit(state, true);
-    auto replaced = mesh.replace_elements(originals, simplexes, {}, origins);
+    auto replaced = ProvenEdit::replace(mesh, originals, simplexes, {}, origins);
     TetBisectionAccess::set_own_edit(state, false);
     if (!replaced.ok()) {
         undo_vertices();

@@ -304,7 +304,8 @@ inline Outcome<std::size_t> plan_refine_around(TetBisectionPlan& plan, ElementId
 // Refuses, before anything is edited, a plan that splits an edge of the mesh whose tetrahedra are
 // several fans joined only at the edge (split_edge refuses such an edge: the midpoint's star
 // would be pinched; met half way through a replay, the refusal would leave the splits before it
-// done). Splits keep each fan of an edge joined, so the edges the plan makes need no check.
+// done). Splits keep each fan of an edge joined, so the edges the plan makes need no check. The
+// reason begins with "<operation>: ", or with "the tetrahedra" when `operation` is empty.
 inline std::optional<Refusal> refuse_pinched_edges(const Mesh& mesh, const std::vector<TetEdge>& splits,
                                                    const std::string& operation) {
     const std::size_t base = mesh.vertex_count();
@@ -312,7 +313,8 @@ inline std::optional<Refusal> refuse_pinched_edges(const Mesh& mesh, const std::
         if (e[0] >= base || e[1] >= base) continue;
         if (const int fans = edge_fans(mesh, elements_with_edge(mesh, e[0], e[1]), e[0], e[1]); fans > 1)
             return Refusal{RefusalCode::pinched_star,
-                           operation + ": the tetrahedra around " + to_text(Simplex(+1, {e[0], e[1]})) + " are " +
+                           (operation.empty() ? "" : operation + ": ") + "the tetrahedra around " +
+                               to_text(Simplex(+1, {e[0], e[1]})) + " are " +
                                std::to_string(fans) +
                                " fans joined only at the edge: bisecting it would pinch the new vertex's star"};
     }
