@@ -53,8 +53,12 @@ Outcome<Done> EditJournal::commit() {
     if (m_revision_at_open != m_history_revision) clear_history();
     m_redo.clear();
     if (m_history_limit > 0) {
+        // room for a step like this one: a tool's steps are alike, and a record grown from empty
+        // by doubling copied itself about ten times a step (the femur needle's 300 moved vertices)
+        const std::size_t entries = m_open->size();
         m_undo.push_back(std::move(m_open));
         m_open = std::make_unique<Log>();
+        m_open->reserve(entries);
         while (m_undo.size() > m_history_limit) m_undo.pop_front();
     }
     m_history_revision = m_mesh.revision();

@@ -89,6 +89,7 @@ public:
                                ElementAttributeWas, VertexAdded, VertexRemoved>;
 
     std::size_t size() const { return m_entries.size(); }
+    void reserve(std::size_t entries) { m_entries.reserve(entries); }
     bool empty() const { return m_entries.empty(); }
     void clear() {
         m_entries.clear();

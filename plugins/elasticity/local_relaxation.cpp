@@ -194,7 +194,11 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
 
     const auto size = static_cast<Eigen::Index>(3 * m_vertices.size());
     const auto region = static_cast<Eigen::Index>(3 * m_region);
-    Eigen::VectorXd u(size), f(size), ku, r, d, q;
+    // resized, which allocates only when the size changes (a new region)
+    Eigen::VectorXd &u = m_cg.u, &f = m_cg.f, &ku = m_cg.ku, &r = m_cg.r, &d = m_cg.d, &q = m_cg.q, &z = m_cg.z;
+    u.resize(size);
+    f.resize(size);
+    z.resize(size);
     for (std::size_t i = 0; i < m_vertices.size(); ++i) {
         const auto at = static_cast<Eigen::Index>(3 * m_vertices[i]);
         u.segment<3>(3 * static_cast<Eigen::Index>(i)) = body.displacements().segment<3>(at);
@@ -219,7 +223,6 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
         ++solve.evaluations;
     };
     auto allowed = [&](Eigen::VectorXd& x) { project(body, x); };
-    Eigen::VectorXd z(size);
     auto precondition = [&](const Eigen::VectorXd& x) -> const Eigen::VectorXd& {
         block_jacobi(body, x, z);
         return z;

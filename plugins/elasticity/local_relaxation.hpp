@@ -113,6 +113,13 @@ private:
         std::size_t max_vertices = 0;
         std::vector<VertexId> seeds;
     } m_made;
+    // The CG's vectors, kept from solve to solve: a kept region solves without allocating. Freed
+    // and allocated again at every solve, they were what glibc trims from the top of its heap
+    // and faults in again, and a fifth of a femur needle step that keeps its region, depending on
+    // what the process freed before (docs/performance.md "A record per element and stretch").
+    struct Vectors {
+        Eigen::VectorXd u, f, ku, r, d, q, z;
+    } m_cg;
 };
 
 }  // namespace sxk::elasticity

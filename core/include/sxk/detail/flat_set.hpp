@@ -27,7 +27,10 @@ public:
     const Value* find(Key key) const {
         if (m_keys.empty()) return nullptr;
         for (std::size_t slot = home(key);; slot = (slot + 1) & m_mask) {
-            if (m_keys[slot] == key) return &m_values[slot];
+            if (m_keys[slot] == key) {
+                if constexpr (has_values) return &m_values[slot];
+                return &m_no_value;
+            }
             if (m_keys[slot] == vacant) return nullptr;
         }
     }
@@ -40,7 +43,7 @@ public:
             if (m_keys[slot] == key) return false;
             if (m_keys[slot] == vacant) {
                 m_keys[slot] = key;
-                m_values[slot] = value;
+                if constexpr (has_values) m_values[slot] = value;
                 ++m_count;
                 return true;
             }
@@ -51,6 +54,9 @@ public:
 
 private:
     static constexpr Key vacant = ~Key{0};
+    // a set (FlatSet: an empty Value) keeps no values, only its keys
+    static constexpr bool has_values = !std::is_empty_v<Value>;
+    static inline const Value m_no_value{};
     static constexpr std::size_t first_capacity = 256;
 
     // Fibonacci hashing: the high bits of the key times 2^64 / phi, so that ids in runs (the
@@ -64,13 +70,13 @@ private:
         std::vector<Value> old_values = std::move(m_values);
         const std::size_t capacity = old_keys.empty() ? first_capacity : 2 * old_keys.size();
         m_keys.assign(capacity, vacant);
-        m_values.assign(capacity, Value{});
+        if constexpr (has_values) m_values.assign(capacity, Value{});
         m_mask = capacity - 1;
         m_shift = 64;
         for (std::size_t c = capacity; c > 1; c /= 2) --m_shift;
         m_count = 0;
         for (std::size_t i = 0; i < old_keys.size(); ++i)
-            if (old_keys[i] != vacant) insert(old_keys[i], old_values[i]);
+            if (old_keys[i] != vacant) insert(old_keys[i], has_values ? old_values[i] : Value{});
     }
 
     std::vector<Key> m_keys;
