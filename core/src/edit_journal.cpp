@@ -2,6 +2,7 @@
 // undo_log.hpp).
 #include "sxk/edit_journal.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "undo_log.hpp"
@@ -54,8 +55,10 @@ Outcome<Done> EditJournal::commit() {
     m_redo.clear();
     if (m_history_limit > 0) {
         // room for a step like this one: a tool's steps are alike, and a record grown from empty
-        // by doubling copied itself about ten times a step (the femur needle's 300 moved vertices)
-        const std::size_t entries = m_open->size();
+        // by doubling copied itself about ten times a step (the femur needle's 300 moved vertices).
+        // At most a frame's worth: after one large edit the history keeps the next record's room.
+        constexpr std::size_t frame_entries = std::size_t{1} << 16;
+        const std::size_t entries = std::min(m_open->size(), frame_entries);
         m_undo.push_back(std::move(m_open));
         m_open = std::make_unique<Log>();
         m_open->reserve(entries);
