@@ -109,4 +109,26 @@ std::vector<VertexId> intercepted_nodes(const Mesh& mesh, const SpatialIndex& de
     return out;
 }
 
+std::vector<VertexId> nodes_within_radius(const Mesh& mesh, const SpatialIndex& deformed, const Point& from,
+                                          const Point& to, const Point& axis, double radius) {
+    std::vector<VertexId> out;
+    Point low = from, high = from;
+    for (std::size_t k = 0; k < 3; ++k) {
+        low[k] = std::min(from[k], to[k]) - radius;
+        high[k] = std::max(from[k], to[k]) + radius;
+    }
+    const Eigen::Vector3d a = vec(from), path = vec(to) - a, tip = vec(to), direction = vec(axis);
+    const double length2 = path.squaredNorm();
+    for (const ElementId t : deformed.elements_with_vertex_in_box(low, high))
+        for (const VertexId v : mesh.simplex(t).vertices()) {
+            const Eigen::Vector3d x = vec(mesh.deformed(v));
+            if ((x - tip).dot(direction) > 0) continue;  // ahead of the tip
+            const double s = length2 > 0 ? std::clamp((x - a).dot(path) / length2, 0.0, 1.0) : 0.0;
+            if ((x - (a + s * path)).norm() <= radius) out.push_back(v);
+        }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 }  // namespace sxk::needle

@@ -86,6 +86,13 @@ struct Options {
     // default, as in the thesis (§6.4: "nodes are not moved within the mesh", which keeps the
     // bisection's triangles congruent).
     bool relocate = false;
+    // The needle's radius, in the mesh's units. 0: a line, the thesis' 2D needle (§6.4), whose
+    // nodes are the nearest node of each edge (face) the tip enters. Above 0 (thesis Fig. 6.14: a
+    // 1 mm needle in a 10 cm cube, "represented in the mesh by a jagged surface"): every node
+    // within the radius of the tip's path becomes a needle node too, keeping its offset from the
+    // axis, and the refinement reaches across the radius (shaft_refinement.hpp). Friction is still
+    // shared along the axis (friction.hpp): the nodes at one cross-section split its stretch.
+    double radius = 0;
     // Solve and rearrange at most this many times per step (the thesis' loop: once).
     std::size_t rearrangements = 1;
     // CG iterations per solve, at most (a frame's budget; the body's options bound them too).

@@ -16,6 +16,12 @@ void add_needle_options(CLI::App& app, Options& options, std::string* deform) {
                    "elements there are of this size (the spacing of a uniform grid of them; thesis h_ref)")
         ->check(number_in(0, false, 1e300, true, "(0, 1e300]"))
         ->capture_default_str();
+    app.add_option("--radius", options.radius,
+                   "Needle radius: every node within it of the tip's path becomes a needle node and the "
+                   "refinement reaches across it (thesis Fig. 6.14: a needle as a jagged surface in the mesh); "
+                   "0: a line, the nearest node of each edge or face the tip enters (thesis 6.4)")
+        ->check(number_in(0, true, 1e300, true, "[0, 1e300]"))
+        ->capture_default_str();
     app.add_option("--friction", options.friction.shaft,
                    "Dynamic friction along the shaft, force per length (N/m; thesis Fig. 6.4)")
         ->check(number_in(0, true, 1e300, true, "[0, 1e300]"))

@@ -44,6 +44,9 @@ Outcome<Done> check_options(const Mesh& mesh, const Options& options) {
     if (!positive(options.h_ref))
         return Refusal{RefusalCode::bad_argument,
                        "needle: h_ref = " + std::to_string(options.h_ref) + " is not a positive number"};
+    if (!at_least_zero(options.radius))
+        return Refusal{RefusalCode::bad_argument,
+                       "needle: radius = " + std::to_string(options.radius) + " is not a number >= 0"};
     if (!at_least_zero(f.shaft) || !at_least_zero(f.tip) || !at_least_zero(f.tip_length))
         return Refusal{RefusalCode::bad_argument, "needle: friction forces and the tip length must be >= 0"};
     if (!(std::isfinite(f.static_ratio) && f.static_ratio >= 1))
@@ -242,17 +245,27 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
     // 2. refine around the tip's path
     auto phase = Clock::now();
     auto refined = refine_along(mesh, *m_reference_index, *m_deformed_index, old.tip, needle.tip, m_options.h_ref,
-                                m_state.tip_element, m_bisection.get());
+                                m_state.tip_element, m_bisection.get(), {m_options.radius, point(to.axis)});
     if (!refined) return refined.refusal().prefixed("needle: refinement: ");
     report.bisections = refined->bisections;
     m_state.tip_element = refined->tip_element;
     report.tip_inside = refined->tip_element != invalid_id;
     report.refine_seconds = seconds_since(phase);
 
-    // 3. intercept the nodes of the edges (faces) the tip crossed
+    // 3. intercept the nodes of the edges (faces) the tip crossed, and with a radius those the
+    // needle's cross-section passed over
     phase = Clock::now();
     if (old.tip != needle.tip) {
-        for (const VertexId v : intercepted_nodes(mesh, *m_deformed_index, old.tip, needle.tip)) {
+        std::vector<VertexId> entered = intercepted_nodes(mesh, *m_deformed_index, old.tip, needle.tip);
+        if (m_options.radius > 0) {
+            const std::vector<VertexId> within =
+                nodes_within_radius(mesh, *m_deformed_index, old.tip, needle.tip, point(to.axis), m_options.radius);
+            const std::size_t crossed = entered.size();
+            entered.insert(entered.end(), within.begin(), within.end());
+            std::inplace_merge(entered.begin(), entered.begin() + static_cast<std::ptrdiff_t>(crossed), entered.end());
+            entered.erase(std::unique(entered.begin(), entered.end()), entered.end());
+        }
+        for (const VertexId v : entered) {
             if (std::any_of(nodes.begin(), nodes.end(), [&](const NeedleNode& n) { return n.vertex == v; }))
                 continue;
             const Point x = position(v);

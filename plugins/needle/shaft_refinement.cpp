@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include <Eigen/Geometry>
 
 #include "needle_frame.hpp"
 #include "sxk/ops/refine_around.hpp"
@@ -22,11 +25,36 @@ std::optional<Point> in_reference(const Mesh& mesh, const SpatialIndex& deformed
     return reference_of(mesh, at);
 }
 
+// The offsets from a point of the path to the points of its cross-section: rings at radii up to
+// tube.radius, at most h / 2 apart, of points at most h / 2 apart (in the plane: two per radius).
+std::vector<Eigen::Vector3d> cross_section(bool planar, const Tube& tube, double h) {
+    std::vector<Eigen::Vector3d> out;
+    if (!(tube.radius > 0)) return out;
+    const Eigen::Vector3d axis = vec(tube.axis).normalized();
+    const Eigen::Vector3d u = planar ? Eigen::Vector3d(-axis.y(), axis.x(), 0).normalized() : axis.unitOrthogonal();
+    const Eigen::Vector3d w = axis.cross(u);
+    const auto rings = static_cast<std::size_t>(std::ceil(tube.radius / (0.5 * h)));
+    for (std::size_t ring = 1; ring <= rings; ++ring) {
+        const double rho = tube.radius * static_cast<double>(ring) / static_cast<double>(rings);
+        if (planar) {
+            out.push_back(rho * u);
+            out.push_back(-rho * u);
+            continue;
+        }
+        const auto around = std::max<std::size_t>(6, static_cast<std::size_t>(std::ceil(2 * M_PI * rho / (0.5 * h))));
+        for (std::size_t k = 0; k < around; ++k) {
+            const double angle = 2 * M_PI * static_cast<double>(k) / static_cast<double>(around);
+            out.push_back(rho * (std::cos(angle) * u + std::sin(angle) * w));
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, const SpatialIndex& deformed,
                                  const Point& from, const Point& to, double h, ElementId hint,
-                                 TetBisection* bisection) {
+                                 TetBisection* bisection, const Tube& tube) {
     Refinement result;
     const Eigen::Vector3d a = vec(from), path = vec(to) - vec(from);
     const double distance = path.norm();
@@ -57,23 +85,28 @@ Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, cons
     const std::size_t pieces = static_cast<std::size_t>(std::ceil(inside / (0.5 * h)));
     const bool planar = mesh.topological_dimension() == 2;
     const double limit = bisection_edge_limit(mesh, h);
+    const std::vector<Eigen::Vector3d> across = cross_section(planar, tube, h);
     for (std::size_t k = 0; k <= pieces; ++k) {
         const double t =
             pieces == 0 ? 1.0 : first + (last - first) * static_cast<double>(k) / static_cast<double>(pieces);
-        const Point x = t >= 1 ? to : point(a + t * path);
-        const std::optional<Point> at = in_reference(mesh, deformed, x, hint);
-        if (!at) continue;
-        if (planar) {
-            auto refined = refine_around(mesh, *at, limit, reference, hint);
-            if (!refined) return refined.refusal();
-            result.bisections += refined->bisections;
-            hint = refined->element;
-        } else {
-            auto refined = bisection != nullptr ? refine_around_tetrahedra(*bisection, *at, limit, reference)
-                                                : refine_around_tetrahedra(mesh, *at, limit, reference);
-            if (!refined) return refined.refusal();
-            result.bisections += *refined;
-            hint = invalid_id;  // the tetrahedra around x changed; locate from the index
+        const Point centre = t >= 1 ? to : point(a + t * path);
+        // the path's point, then its cross-section's
+        for (std::size_t j = 0; j <= across.size(); ++j) {
+            const Point x = j == 0 ? centre : point(vec(centre) + across[j - 1]);
+            const std::optional<Point> at = in_reference(mesh, deformed, x, hint);
+            if (!at) continue;
+            if (planar) {
+                auto refined = refine_around(mesh, *at, limit, reference, hint);
+                if (!refined) return refined.refusal();
+                result.bisections += refined->bisections;
+                hint = refined->element;
+            } else {
+                auto refined = bisection != nullptr ? refine_around_tetrahedra(*bisection, *at, limit, reference)
+                                                    : refine_around_tetrahedra(mesh, *at, limit, reference);
+                if (!refined) return refined.refusal();
+                result.bisections += *refined;
+                hint = invalid_id;  // the tetrahedra around x changed; locate from the index
+            }
         }
     }
     const Location tip = deformed.locate(to, hint);

@@ -41,10 +41,18 @@ struct Refinement {
 // refine_around_tetrahedra with `bisection`'s rule (Maubach's newest-vertex bisection on Kuhn
 // meshes, AMP's on others; without a state, longest-edge bisection), located through `reference`.
 // Points outside the mesh are skipped. One call is not a transaction by itself: the session's step is.
+// A needle with a radius (`tube`) refines its cross-section too: around each point of the path,
+// rings of points up to the radius across the needle's axis, at most h / 2 apart (in the plane,
+// the two points at each distance), so that the elements the needle's surface passes through are
+// of size h (thesis Fig. 6.14's refinement around a 1 mm needle).
 // Refuses (bad_argument) a path whose length is not a finite double, and one more than 500,000 h
 // long inside the mesh.
+struct Tube {
+    double radius = 0;     // 0: a line, the path's points only
+    Point axis{1, 0, 0};   // the needle's direction (unit), across which the rings lie
+};
 Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, const SpatialIndex& deformed,
                                  const Point& from, const Point& to, double h, ElementId hint,
-                                 TetBisection* bisection = nullptr);
+                                 TetBisection* bisection = nullptr, const Tube& tube = {});
 
 }  // namespace sxk::needle

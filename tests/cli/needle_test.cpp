@@ -107,6 +107,13 @@ TEST(SxkNeedle, GoesIntoAKuhnCubeAndSaysWhenItHasNoBody) {
     EXPECT_TRUE(json["geometry_only"]);
     EXPECT_GT(json["steps"].back()["needle_nodes"].get<int>(), 15);
     EXPECT_GT(json["elements_after"].get<int>(), 3072);
+    // a needle of radius 3 mm holds the nodes it passes over, not only those of the faces it enters
+    const ProcessResult thick =
+        sxk({"needle", cube.string(), path, out.string(), "--h-ref", "0.003", "--radius", "0.003", "--json"});
+    ASSERT_EQ(thick.exit_code, 0) << thick.err;
+    const auto wide = nlohmann::json::parse(thick.out);
+    EXPECT_GT(wide["steps"].back()["needle_nodes"].get<int>(), 2 * json["steps"].back()["needle_nodes"].get<int>());
+    EXPECT_GT(wide["elements_after"].get<int>(), json["elements_after"].get<int>());
 }
 
 TEST(SxkNeedle, BadPathsAreRefusedWithTheirLine) {
@@ -136,6 +143,9 @@ TEST(SxkNeedle, BadPathsAreRefusedWithTheirLine) {
     const ProcessResult option = f.insert(slab_path, {"--h-ref", "0"});
     EXPECT_EQ(option.exit_code, 2);
     EXPECT_NE(option.err.find("--h-ref: '0' is not in (0, 1e300]"), std::string::npos) << option.err;
+    const ProcessResult radius = f.insert(slab_path, {"--radius", "-1"});
+    EXPECT_EQ(radius.exit_code, 2);
+    EXPECT_NE(radius.err.find("--radius: '-1' is not in [0, 1e300]"), std::string::npos) << radius.err;
     const ProcessResult body = f.insert(slab_path, {"--deform", "--fix x>7"});
     EXPECT_EQ(body.exit_code, 2);
     EXPECT_NE(body.err.find("sxk: needle: --deform: deform: --fix 'x>7' selects no vertex"), std::string::npos)

@@ -315,6 +315,62 @@ TEST(Needle, InsertsIntoAKuhnCubeKeepingThreeShapesOfTetrahedra) {
     test::expect_same_state(run.mesh, run.before);
 }
 
+// Thesis Fig. 6.14's needle of 1 mm radius, here 2 mm in a Kuhn cube refined to h6: every node
+// within the radius of the inserted shaft is a needle node, and only those and the nodes of the
+// faces the tip entered; the refinement reaches across the radius; the body follows, the mesh
+// stays valid and in Maubach's classes, and undoing gives the cube back.
+TEST(Needle, ANeedleWithARadiusHoldsEveryNodeItsCrossSectionPassedOver) {
+    const double radius = 0.002, y = 0.051, z = 0.049, end = 0.05;
+    Options line;
+    line.h_ref = 0.1 / 64;
+    Options thick = line;
+    thick.radius = radius;
+    Insertion thin_run(cube(), {}, line), geometry(cube(), {}, thick), body(cube(), cube_body, thick);
+    std::size_t thin_bisections = 0, thick_bisections = 0;
+    for (double x = -0.01; x <= end + 1e-12; x += 0.001) {
+        auto thin = thin_run.session->move(along_x(x, y, z));
+        ASSERT_TRUE(thin.ok()) << thin.reason();
+        thin_bisections += thin->bisections;
+        auto step = geometry.session->move(along_x(x, y, z));
+        ASSERT_TRUE(step.ok()) << step.reason();
+        thick_bisections += step->bisections;
+        auto solved = body.session->move(along_x(x, y, z));
+        ASSERT_TRUE(solved.ok()) << solved.reason();
+        ASSERT_TRUE(body.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok()) << "x = " << x;
+        expect_nodes_on_needle(body);
+    }
+    ASSERT_TRUE(geometry.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok());
+    // geometry only, nothing moves: the vertices within the radius of the shaft, up to the tip
+    std::set<VertexId> within, held;
+    for (const ElementId t : elements(geometry.mesh))
+        for (const VertexId v : geometry.mesh.simplex(t).vertices()) {
+            const Point& p = geometry.mesh.deformed(v);
+            if (p[0] <= end && std::hypot(p[1] - y, p[2] - z) <= radius) within.insert(v);
+        }
+    for (const NeedleNode& node : geometry.session->nodes()) {
+        held.insert(node.vertex);
+        const double off = std::hypot(node.perp[1], node.perp[2]);
+        // beyond the radius only the nearest node of a face the tip entered: within an edge of h6
+        EXPECT_LE(off, std::max(radius, std::sqrt(3.0) * line.h_ref)) << "node " << node.vertex;
+    }
+    for (const VertexId v : within) EXPECT_TRUE(held.count(v)) << "vertex " << v << " is within the radius";
+    EXPECT_GT(within.size(), 3 * thin_run.session->nodes().size());
+    EXPECT_GT(thick_bisections, 2 * thin_bisections);
+    std::set<test::ShapeSignature> shapes;
+    for (const ElementId t : elements(body.mesh)) shapes.insert(test::shape_signature(body.mesh, t));
+    EXPECT_LE(shapes.size(), 3u);
+    EXPECT_GT(body.session->last_step().axial_force, 0);
+    std::printf("radius %.3f: %zu needle nodes (%zu within it), %zu bisections; a line: %zu nodes, %zu bisections\n",
+                radius, held.size(), within.size(), thick_bisections, thin_run.session->nodes().size(),
+                thin_bisections);
+    ASSERT_TRUE(body.session->cancel().ok());
+    test::expect_same_state(body.mesh, body.before);
+    Options bad = thick;
+    bad.radius = -1;
+    Mesh square = slab();
+    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: radius = -1.000000 is not a number >= 0");
+}
+
 TEST(Needle, WithoutABodyRefinesAndTracksNodesButMovesNothing) {
     Insertion run(slab(), {});
     EXPECT_TRUE(run.session->geometry_only());
@@ -413,8 +469,9 @@ TEST(Needle, TheToolFactorysNeedleSolvesWithTheElasticityPlugin) {
         << refused.reason();
 }
 
-// Seeded random needle paths into slabs and cubes: every step valid (no inverted or flat element
-// in either position set), nodes on the needle, and undoing everything gives the start back.
+// Seeded random needle paths into slabs and cubes, lines and needles with a radius: every step
+// valid (no inverted or flat element in either position set), nodes on the needle, and undoing
+// everything gives the start back.
 TEST(Needle, RandomNeedlePathsNeverBreakTheMesh) {
     const char* replay = std::getenv("SXK_SEED");
     const unsigned seed = replay ? static_cast<unsigned>(std::atol(replay)) : 20261205u;
@@ -433,6 +490,7 @@ TEST(Needle, RandomNeedlePathsNeverBreakTheMesh) {
             options.local_vertices = 20 + static_cast<std::size_t>(300 * unit(random));
             if (unit(random) < 0.5) options.far_vertices = 20 + static_cast<std::size_t>(300 * unit(random));
         }
+        if (unit(random) < 0.3) options.radius = options.h_ref * 2 * unit(random);
         Insertion run(solid ? cube() : slab(), solid ? cube_body : slab_body, options);
         // a wandering needle: enters from the left, turns, advances and withdraws at random
         Eigen::Vector3d tip(-0.01, 0.02 + 0.06 * unit(random), solid ? 0.02 + 0.06 * unit(random) : 0.0);
