@@ -15,6 +15,7 @@ nlohmann::ordered_json to_json(const Options& options) {
     json["tip_friction"] = options.friction.tip;
     json["tip_length"] = options.friction.tip_length;
     json["static_ratio"] = options.friction.static_ratio;
+    json["radius"] = options.radius;
     json["relocate"] = options.relocate;
     json["rearrangements"] = options.rearrangements;
     json["iterations"] = options.iterations;

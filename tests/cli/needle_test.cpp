@@ -112,6 +112,7 @@ TEST(SxkNeedle, GoesIntoAKuhnCubeAndSaysWhenItHasNoBody) {
         sxk({"needle", cube.string(), path, out.string(), "--h-ref", "0.003", "--radius", "0.003", "--json"});
     ASSERT_EQ(thick.exit_code, 0) << thick.err;
     const auto wide = nlohmann::json::parse(thick.out);
+    EXPECT_EQ(wide["options"]["radius"].get<double>(), 0.003);
     EXPECT_GT(wide["steps"].back()["needle_nodes"].get<int>(), 2 * json["steps"].back()["needle_nodes"].get<int>());
     EXPECT_GT(wide["elements_after"].get<int>(), json["elements_after"].get<int>());
 }
