@@ -92,6 +92,7 @@ struct Options {
     // within the radius of the tip's path becomes a needle node too, keeping its offset from the
     // axis, and the refinement reaches across the radius (shaft_refinement.hpp). Friction is still
     // shared along the axis (friction.hpp): the nodes at one cross-section split its stretch.
+    // With `relocate`, a node outside the radius goes onto the needle's surface, one inside stays.
     double radius = 0;
     // Solve and rearrange at most this many times per step (the thesis' loop: once).
     std::size_t rearrangements = 1;

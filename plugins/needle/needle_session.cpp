@@ -278,9 +278,14 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
                 if (held.refusal().code == RefusalCode::bad_argument) continue;
                 return held.refusal().prefixed("needle: ");
             }
-            if (m_options.relocate && node.perp != Point{0, 0, 0}) {
-                if (relocate(v, node.perp)) {
-                    node.perp = {0, 0, 0};
+            // onto the needle: the axis, or with a radius its surface (a node inside stays)
+            const Eigen::Vector3d perp = vec(node.perp);
+            const double off = perp.norm();
+            const Eigen::Vector3d shift =
+                off > m_options.radius ? Eigen::Vector3d((1 - m_options.radius / off) * perp) : Eigen::Vector3d::Zero();
+            if (m_options.relocate && shift != Eigen::Vector3d::Zero()) {
+                if (relocate(v, point(shift))) {
+                    node.perp = point(perp - shift);
                     ++report.relocated;
                 } else {
                     ++report.not_relocated;

@@ -95,14 +95,19 @@ Outcome<Refinement> refine_along(Mesh& mesh, const SpatialIndex& reference, cons
             const Point x = j == 0 ? centre : point(vec(centre) + across[j - 1]);
             const std::optional<Point> at = in_reference(mesh, deformed, x, hint);
             if (!at) continue;
+            // a point on the boundary in the deformed positions can map a rounding error outside the
+            // reference mesh (a barycentric coordinate of -1e-17): nothing to refine there
+            // (not_found), its neighbours are sampled
             if (planar) {
                 auto refined = refine_around(mesh, *at, limit, reference, hint);
+                if (!refined && refined.refusal().code == RefusalCode::not_found) continue;
                 if (!refined) return refined.refusal();
                 result.bisections += refined->bisections;
                 hint = refined->element;
             } else {
                 auto refined = bisection != nullptr ? refine_around_tetrahedra(*bisection, *at, limit, reference)
                                                     : refine_around_tetrahedra(mesh, *at, limit, reference);
+                if (!refined && refined.refusal().code == RefusalCode::not_found) continue;
                 if (!refined) return refined.refusal();
                 result.bisections += *refined;
                 hint = invalid_id;  // the tetrahedra around x changed; locate from the index

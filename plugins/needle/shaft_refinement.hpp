@@ -40,7 +40,8 @@ struct Refinement {
 // material) and refined around there to size h: refine_around (triangles), or
 // refine_around_tetrahedra with `bisection`'s rule (Maubach's newest-vertex bisection on Kuhn
 // meshes, AMP's on others; without a state, longest-edge bisection), located through `reference`.
-// Points outside the mesh are skipped. One call is not a transaction by itself: the session's step is.
+// Points outside the mesh are skipped, in the deformed positions or, by rounding at the boundary, in
+// the reference ones. One call is not a transaction by itself: the session's step is.
 // A needle with a radius (`tube`) refines its cross-section too: around each point of the path,
 // rings of points up to the radius across the needle's axis, at most h / 2 apart (in the plane,
 // the two points at each distance), so that the elements the needle's surface passes through are

@@ -365,6 +365,31 @@ TEST(Needle, ANeedleWithARadiusHoldsEveryNodeItsCrossSectionPassedOver) {
                 thin_bisections);
     ASSERT_TRUE(body.session->cancel().ok());
     test::expect_same_state(body.mesh, body.before);
+    // relocating with a radius moves the nodes outside it onto its surface, and only those (a
+    // radius of a third of h6: the nodes of the faces the tip enters are mostly outside it)
+    Options onto = thick;
+    onto.radius = line.h_ref / 3;
+    onto.relocate = true;
+    Insertion moved(cube(), {}, onto);
+    std::size_t relocated = 0, refused = 0;
+    for (double x = -0.01; x <= end + 1e-12; x += 0.001) {
+        auto step = moved.session->move(along_x(x, y, z));
+        ASSERT_TRUE(step.ok()) << step.reason();
+        relocated += step->relocated;
+        refused += step->not_relocated;
+    }
+    ASSERT_TRUE(moved.mesh.validate({.orientation = true, .flat_is_invalid = true}).ok());
+    std::size_t outside = 0, on_surface = 0;
+    for (const NeedleNode& node : moved.session->nodes()) {
+        const Point& p = moved.mesh.deformed(node.vertex);
+        const double off = std::hypot(p[1] - y, p[2] - z);
+        EXPECT_NEAR(off, std::hypot(node.perp[1], node.perp[2]), 1e-15) << "node " << node.vertex;
+        outside += off > onto.radius * (1 + 1e-12);
+        on_surface += std::abs(off - onto.radius) <= 1e-12 * onto.radius;
+    }
+    EXPECT_GT(relocated, 0u);
+    EXPECT_EQ(outside, refused);
+    EXPECT_GE(on_surface, relocated - refused);
     Options bad = thick;
     bad.radius = -1;
     Mesh square = slab();
