@@ -187,6 +187,16 @@ void tables62_63() {
     }
 }
 
+// The elasticity plug-in's simulation of `mesh` with `sxk deform`'s words; exits on a refusal.
+std::unique_ptr<elasticity::Simulation> body_of(Mesh& mesh, const std::vector<std::string>& words) {
+    auto made = elasticity::simulate(mesh, words);
+    if (!made) {
+        std::fprintf(stderr, "needle_thesis: %s\n", made.reason().c_str());
+        std::exit(1);
+    }
+    return std::move(*made);
+}
+
 // An automated insertion (§6.8.4) into the slab along y = 0.05 at `speed` h_ref per update, then
 // cycled in place until no grip changes and no node slips.
 struct Inserted {
@@ -201,12 +211,7 @@ Inserted insert(int k_start, int k_ref, double speed, const std::vector<std::str
     Inserted result;
     Mesh& mesh = result.solution.mesh;
     mesh = slab(k_start);
-    auto made = elasticity::simulate(mesh, body);
-    if (!made) {
-        std::fprintf(stderr, "needle_thesis: %s\n", made.reason().c_str());
-        std::exit(1);
-    }
-    std::unique_ptr<elasticity::Simulation> simulation = std::move(*made);
+    std::unique_ptr<elasticity::Simulation> simulation = body_of(mesh, body);
     needle::Options options;
     options.h_ref = h(k_ref);
     options.friction.shaft *= friction_scale;
@@ -383,12 +388,7 @@ void fig614() {
                          "  radius    tetrahedra  vertices  needle nodes  CG iterations  CPU s  axial force (N)\n");
     for (const double radius : {0.0, 0.001}) {
         Mesh cube = *make_kuhn_cube(8, 0.0125);
-        auto made = elasticity::simulate(cube, words);
-        if (!made) {
-            std::fprintf(stderr, "needle_thesis: %s\n", made.reason().c_str());
-            std::exit(1);
-        }
-        std::unique_ptr<elasticity::Simulation> simulation = std::move(*made);
+        std::unique_ptr<elasticity::Simulation> simulation = body_of(cube, words);
         needle::Options options;
         options.h_ref = h(7);
         options.radius = radius;
