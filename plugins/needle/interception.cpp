@@ -51,6 +51,12 @@ void edge_crossing(const Mesh& mesh, VertexId a, VertexId b, const Point& p, con
     out.push_back(nearer(a, b, sa / (sa - sb)));
 }
 
+// The point of the segment from `from` along `path` nearest x (`from` for a segment of no length).
+Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& from, const Eigen::Vector3d& path, const Eigen::Vector3d& x) {
+    const double length2 = path.squaredNorm();
+    return from + (length2 > 0 ? std::clamp((x - from).dot(path) / length2, 0.0, 1.0) : 0.0) * path;
+}
+
 // Face abc of a tetrahedral mesh against the path pq.
 void face_crossing(const Mesh& mesh, const std::array<VertexId, 3>& face, const Point& p, const Point& q,
                    std::vector<VertexId>& out) {
@@ -66,10 +72,7 @@ void face_crossing(const Mesh& mesh, const std::array<VertexId, 3>& face, const 
         crossing = from + std::clamp(normal.dot(a - from) / across, 0.0, 1.0) * path;
     } else {
         // the path lies in the face's plane: its point nearest the face's centre
-        const Eigen::Vector3d centre = (a + b + c) / 3;
-        const double length2 = path.squaredNorm();
-        const double t = length2 > 0 ? std::clamp((centre - from).dot(path) / length2, 0.0, 1.0) : 0.0;
-        crossing = from + t * path;
+        crossing = nearest_on_segment(from, path, (a + b + c) / 3);
     }
     VertexId best = invalid_id;
     double best_distance = 0;
@@ -118,13 +121,11 @@ std::vector<VertexId> nodes_within_radius(const Mesh& mesh, const SpatialIndex& 
         high[k] = std::max(from[k], to[k]) + radius;
     }
     const Eigen::Vector3d a = vec(from), path = vec(to) - a, tip = vec(to), direction = vec(axis);
-    const double length2 = path.squaredNorm();
     for (const ElementId t : deformed.elements_with_vertex_in_box(low, high))
         for (const VertexId v : mesh.simplex(t).vertices()) {
             const Eigen::Vector3d x = vec(mesh.deformed(v));
             if ((x - tip).dot(direction) > 0) continue;  // ahead of the tip
-            const double s = length2 > 0 ? std::clamp((x - a).dot(path) / length2, 0.0, 1.0) : 0.0;
-            if ((x - (a + s * path)).norm() <= radius) out.push_back(v);
+            if ((x - nearest_on_segment(a, path, x)).norm() <= radius) out.push_back(v);
         }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
