@@ -35,6 +35,7 @@ Mesh::Mesh(const Mesh& other)
       m_element_count(other.m_element_count),
       m_boundary(other.m_boundary),
       m_face_labels(other.m_face_labels),
+      m_label_names(other.m_label_names),
       m_attributes(other.m_attributes),
       m_element_attributes(other.m_element_attributes) {}
 

@@ -54,10 +54,10 @@
 
 namespace sxk {
 
-enum class Format { medit, gmsh, tetgen, off, obj, vtu };
+enum class Format { medit, gmsh, tetgen, off, obj, vtu, vtk, stl, ply };
 
 SXK_API std::string_view to_string(Format format);
-// By extension: .mesh .msh .node .ele .off .obj .vtu; nullopt otherwise.
+// By extension: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply; nullopt otherwise.
 SXK_API std::optional<Format> format_from_extension(const std::filesystem::path& path);
 
 // A reader's complaint. what() is "FILE:LINE: reason" (LINE is 0 when the problem is not tied to
@@ -150,8 +150,19 @@ SXK_API std::string read_text_file(const std::filesystem::path& path,
 SXK_API std::string read_text_stream(std::istream& in, const std::string& name,
                                      std::size_t limit = max_input_bytes);
 
+// How a writer encodes its numbers, for the formats that have a choice.
+enum class Encoding {
+    standard,  // each format's usual: .vtu binary, appended and zlib-compressed; .msh and legacy
+               // .vtk ASCII; .stl and .ply binary
+    ascii,     // text (.vtu: every array inline as ASCII)
+    binary,    // .msh binary (file type 1); .vtu appended raw, uncompressed; legacy .vtk
+               // binary (big-endian); .stl and .ply binary (little-endian)
+};
+SXK_API std::string_view to_string(Encoding encoding);
+
 struct WriteOptions {
     int gmsh_version = 41;                      // 22 or 41
+    Encoding encoding = Encoding::standard;
     Positions positions = Positions::deformed;  // which coordinates go into the file
     bool quality_cell_data = true;              // .vtu: aspect ratio etc. per element
     // Refuse (OutputError, nothing written) a mesh that does not pass Mesh::validate with the

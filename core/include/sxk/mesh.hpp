@@ -37,6 +37,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -440,6 +441,16 @@ public:
     bool erase_face_label(const Simplex& face);
     FaceLabels& face_labels() { return m_face_labels; }
     const FaceLabels& face_labels() const { return m_face_labels; }
+    // Names of labels, as files carry them (Gmsh $PhysicalNames: dimension d for element labels,
+    // d-1 for face labels). Metadata for writers: no edit reads or changes them, so they are
+    // neither journaled nor watched; copies and renumberings keep them.
+    struct LabelNames {
+        std::map<int, std::string> elements;
+        std::map<int, std::string> faces;
+        bool empty() const { return elements.empty() && faces.empty(); }
+    };
+    LabelNames& label_names() { return m_label_names; }
+    const LabelNames& label_names() const { return m_label_names; }
 
     // ---- revisions ----------------------------------------------------------------------------
     // Changes with every observed change of the mesh (edits, vertex additions and removals,
@@ -575,6 +586,7 @@ private:
     std::size_t m_element_count = 0;
     detail::BoundaryMap m_boundary;
     FaceLabels m_face_labels;
+    LabelNames m_label_names;
     std::vector<detail::AttributeColumn> m_attributes;          // vertex attributes
     std::vector<detail::AttributeColumn> m_element_attributes;  // sized to the element pool
     std::vector<Watcher*> m_watchers;

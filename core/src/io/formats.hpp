@@ -1,8 +1,12 @@
 // The per-format readers and writers behind read_mesh/write_mesh (io.cpp dispatches).
 //
-// Readers get the whole file as text that already passed check_text and is not blank; they
-// throw InputError. Writers return the file's content (the caller writes it in one go) and throw
-// OutputError when the format cannot hold the mesh.
+// Readers of text formats (Medit, OFF, OBJ, TetGen) get the whole file as text that already
+// passed check_text and is not blank. Readers of formats that may hold binary data (Gmsh, VTU,
+// legacy VTK, STL, PLY) get the file's bytes as they are, not blank, a UTF-8 byte order mark
+// already dropped: they check their text parts themselves (check_text) and bound every binary
+// read by the bytes there are. All throw InputError. Writers return the file's content (the
+// caller writes it in one go; binary content is bytes in the string) and throw OutputError when
+// the format cannot hold the mesh.
 #pragma once
 
 #include <string>
@@ -22,6 +26,14 @@ Mesh read_gmsh(std::string_view text, const std::string& name, const ReadOptions
 Mesh read_off(std::string_view text, const std::string& name, const ReadOptions& options,
               ReadReport* report);
 Mesh read_obj(std::string_view text, const std::string& name, const ReadOptions& options,
+              ReadReport* report);
+Mesh read_vtu(std::string_view bytes, const std::string& name, const ReadOptions& options,
+              ReadReport* report);
+Mesh read_vtk(std::string_view bytes, const std::string& name, const ReadOptions& options,
+              ReadReport* report);
+Mesh read_stl(std::string_view bytes, const std::string& name, const ReadOptions& options,
+              ReadReport* report);
+Mesh read_ply(std::string_view bytes, const std::string& name, const ReadOptions& options,
               ReadReport* report);
 // read_obj's parsing alone: the vertices and triangles as listed, none of build_mesh's checks.
 struct RawMesh;
@@ -51,6 +63,9 @@ std::string write_gmsh(const Mesh& mesh, const WriteOptions& options);
 std::string write_off(const Mesh& mesh, const WriteOptions& options);
 std::string write_obj(const Mesh& mesh, const WriteOptions& options);
 std::string write_vtu(const Mesh& mesh, const WriteOptions& options);
+std::string write_vtk(const Mesh& mesh, const WriteOptions& options);
+std::string write_stl(const Mesh& mesh, const WriteOptions& options);
+std::string write_ply(const Mesh& mesh, const WriteOptions& options);
 struct TetgenFiles {
     std::string node, ele, face;  // face: .face for tetrahedra, .edge for triangles
 };

@@ -447,7 +447,7 @@ private:
 
 Mesh read_gmsh(std::string_view text, const std::string& name, const ReadOptions& options,
                ReadReport* report) {
-    Reader reader(text, name);
+    Reader reader(check_text(text, name), name);
     return build_mesh(reader.read(), name, options, report);
 }
 

@@ -32,6 +32,24 @@ std::string_view to_string(Format format) {
             return "obj";
         case Format::vtu:
             return "vtu";
+        case Format::vtk:
+            return "vtk";
+        case Format::stl:
+            return "stl";
+        case Format::ply:
+            return "ply";
+    }
+    return "unknown";
+}
+
+std::string_view to_string(Encoding encoding) {
+    switch (encoding) {
+        case Encoding::standard:
+            return "standard";
+        case Encoding::ascii:
+            return "ascii";
+        case Encoding::binary:
+            return "binary";
     }
     return "unknown";
 }
@@ -52,6 +70,12 @@ std::optional<Format> format_from_extension(const std::filesystem::path& path) {
         return Format::obj;
     if (extension == ".vtu")
         return Format::vtu;
+    if (extension == ".vtk")
+        return Format::vtk;
+    if (extension == ".stl")
+        return Format::stl;
+    if (extension == ".ply")
+        return Format::ply;
     return std::nullopt;
 }
 
@@ -63,7 +87,7 @@ bool blank(std::string_view text) {
     });
 }
 
-// Every reader starts the same way: refuse binary data, then an empty file.
+// Every text reader starts the same way: refuse binary data, then an empty file.
 std::string_view checked(std::string_view data, const std::string& name) {
     const std::string_view text = io::check_text(data, name);
     if (blank(text))
@@ -71,24 +95,39 @@ std::string_view checked(std::string_view data, const std::string& name) {
     return text;
 }
 
-Mesh read_text(std::string_view text, Format format, const std::string& name,
+// The formats that may hold binary data get their bytes unchecked (formats.hpp); an empty file
+// and a byte order mark are the same for all.
+std::string_view bytes_of(std::string_view data, const std::string& name) {
+    if (data.substr(0, 3) == "\xEF\xBB\xBF")
+        data.remove_prefix(3);
+    if (blank(data))
+        throw InputError(name, 0, "empty file");
+    return data;
+}
+
+Mesh read_data(std::string_view data, Format format, const std::string& name,
                const ReadOptions& options, ReadReport* report) {
     switch (format) {
         case Format::medit:
-            return io::read_medit(text, name, options, report);
-        case Format::gmsh:
-            return io::read_gmsh(text, name, options, report);
+            return io::read_medit(checked(data, name), name, options, report);
         case Format::off:
-            return io::read_off(text, name, options, report);
+            return io::read_off(checked(data, name), name, options, report);
         case Format::obj:
-            return io::read_obj(text, name, options, report);
-        case Format::tetgen:
-            throw InputError(name, 0,
-                             "TetGen meshes need a .node and an .ele stream (read_tetgen)");
+            return io::read_obj(checked(data, name), name, options, report);
+        case Format::gmsh:
+            return io::read_gmsh(bytes_of(data, name), name, options, report);
         case Format::vtu:
+            return io::read_vtu(bytes_of(data, name), name, options, report);
+        case Format::vtk:
+            return io::read_vtk(bytes_of(data, name), name, options, report);
+        case Format::stl:
+            return io::read_stl(bytes_of(data, name), name, options, report);
+        case Format::ply:
+            return io::read_ply(bytes_of(data, name), name, options, report);
+        case Format::tetgen:
             break;
     }
-    throw InputError(name, 0, ".vtu files are written, not read");
+    throw InputError(name, 0, "TetGen meshes need a .node and an .ele stream (read_tetgen)");
 }
 
 }  // namespace
@@ -132,13 +171,13 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, Re
         return io::build_mesh(raw, ele.string(), options, report);
     }
     const detail::TextBuffer data = io::load_file(path);
-    return read_text(checked(data, name), *format, name, options, report);
+    return read_data(data, *format, name, options, report);
 }
 
 Mesh read_mesh(std::istream& in, Format format, const std::string& name, const ReadOptions& options,
                ReadReport* report) {
     const detail::TextBuffer data = io::load_stream(in, name);
-    return read_text(checked(data, name), format, name, options, report);
+    return read_data(data, format, name, options, report);
 }
 
 Mesh read_tetgen(std::istream& node, const std::string& node_name, std::istream& ele,
@@ -198,6 +237,15 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
             return;
         case Format::vtu:
             write_file_atomically(path, io::write_vtu(mesh, options));
+            return;
+        case Format::vtk:
+            write_file_atomically(path, io::write_vtk(mesh, options));
+            return;
+        case Format::stl:
+            write_file_atomically(path, io::write_stl(mesh, options));
+            return;
+        case Format::ply:
+            write_file_atomically(path, io::write_ply(mesh, options));
             return;
         case Format::tetgen: {
             const io::TetgenFiles files = io::write_tetgen(mesh, options);

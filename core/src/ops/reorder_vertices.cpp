@@ -100,6 +100,7 @@ Mesh renumbered(const Mesh& mesh, std::span<const VertexId> new_of_old) {
         const Simplex key = mapped(face);
         result.face_labels()[Simplex(+1, key.vertices())] = label;
     }
+    result.label_names() = mesh.label_names();
     return result;
 }
 

@@ -1,0 +1,10 @@
+// Placeholder while the reader is written (issue 47); replaced in this session.
+#include "formats.hpp"
+
+namespace sxk::io {
+
+Mesh read_vtu(std::string_view, const std::string& name, const ReadOptions&, ReadReport*) {
+    throw InputError(name, 0, "this format cannot be read yet");
+}
+
+}  // namespace sxk::io
