@@ -71,8 +71,24 @@ TEST(SxkConvert, UnknownOutputExtensionIsAUsageError) {
     const ProcessResult run = sxk({"convert", mesh.string(), out.string()});
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err, "sxk: " + out.string() +
-                           ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n");
+                           ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply)\n");
     EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(SxkConvert, EncodingChoosesBinaryGmshAndIsRefusedForTextFormats) {
+    ScratchFolder folder;
+    const fs::path mesh = folder / "two.mesh", out = folder / "two.msh";
+    write_file(mesh, two_tetrahedra_mesh);
+    ASSERT_EQ(sxk({"convert", mesh.string(), out.string(), "--encoding", "binary"}).exit_code, 0);
+    EXPECT_EQ(slurp(out).rfind("$MeshFormat\n4.1 1 8\n", 0), 0u);
+    EXPECT_EQ(info(out)["elements"], 2);
+    const ProcessResult text = sxk({"convert", mesh.string(), (folder / "b.mesh").string(), "--encoding", "binary"});
+    EXPECT_EQ(text.exit_code, 2);
+    EXPECT_EQ(text.err, "sxk: convert: --encoding binary: medit files are text only (binary: .msh .vtu .vtk .stl .ply)\n");
+    EXPECT_FALSE(fs::exists(folder / "b.mesh"));
+    const ProcessResult unknown = sxk({"convert", mesh.string(), out.string(), "--encoding", "zip"});
+    EXPECT_EQ(unknown.exit_code, 2);
+    EXPECT_EQ(unknown.err.rfind("sxk: --encoding: ", 0), 0u) << unknown.err;
 }
 
 TEST(SxkConvert, WritesVtuAndSurfaces) {

@@ -28,6 +28,23 @@ TEST(SxkInfo, TwoTetrahedraAsText) {
     EXPECT_EQ(run.err, "");
 }
 
+// A box Gmsh meshed, its volume in group 7 "bone" and two sides in group 3 "sides"
+// (tests/data/io/gmsh_made/make.py), saved in binary 4.1.
+TEST(SxkInfo, NamesTheLabelsAFileNames) {
+    const std::string box = std::string(SXK_TEST_DATA_DIR) + "/io/gmsh_made/box41_binary.msh";
+    const ProcessResult text = sxk({"info", box});
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("element labels: 7\nface labels: 3\nelement label names: 7 \"bone\"\n"
+                            "face label names: 3 \"sides\"\n"),
+              std::string::npos)
+        << text.out;
+    const ProcessResult json = sxk({"info", box, "--json"});
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    const auto parsed = nlohmann::json::parse(json.out);
+    EXPECT_EQ(parsed["element_label_names"], nlohmann::json({{"7", "bone"}}));
+    EXPECT_EQ(parsed["face_label_names"], nlohmann::json({{"3", "sides"}}));
+}
+
 TEST(SxkInfo, JsonIsOneObject) {
     ScratchFolder folder;
     const fs::path mesh = folder / "two.mesh";

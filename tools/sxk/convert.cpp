@@ -1,5 +1,5 @@
-// sxk convert IN OUT [--reorient] [--reorder] [--gmsh-version 22|41]: the formats follow the
-// extensions; --reorder renumbers the vertices by reverse Cuthill-McKee and orders the elements by
+// sxk convert IN OUT [--reorient] [--reorder] [--gmsh-version 22|41] [--encoding E]: the formats
+// follow the extensions; --reorder renumbers the vertices by reverse Cuthill-McKee and orders the elements by
 // their lowest vertex before writing.
 #include <memory>
 
@@ -16,12 +16,23 @@ struct ConvertOptions {
     bool reorient = false;
     bool reorder = false;
     int gmsh_version = 41;
+    std::string encoding = "standard";
 };
 
 int run_convert(Context& context, const ConvertOptions& options) {
     // refuse an unknown output format before spending time on the input
     if (!format_from_extension(options.output)) {
-        context.err << "sxk: " << options.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        context.err << "sxk: " << options.output << ":0: unknown output format (known: " << known_mesh_extensions()
+                    << ")\n";
+        return exit_usage;
+    }
+    // a format with one encoding would silently ignore the request
+    const Format format = *format_from_extension(options.output);
+    const bool has_encodings = format == Format::gmsh || format == Format::vtu || format == Format::vtk ||
+                               format == Format::stl || format == Format::ply;
+    if (options.encoding == "binary" && !has_encodings) {
+        context.err << "sxk: convert: --encoding binary: " << to_string(format)
+                    << " files are text only (binary: .msh .vtu .vtk .stl .ply)\n";
         return exit_usage;
     }
     ReadOptions read_options;
@@ -39,6 +50,7 @@ int run_convert(Context& context, const ConvertOptions& options) {
 
     WriteOptions write_options;
     write_options.gmsh_version = options.gmsh_version;
+    write_options.encoding = *encoding_from_string(options.encoding);  // checked by CLI11
     if (!save_mesh(context, *mesh, options.output, write_options)) return exit_refused;
     context.out << options.input << " -> " << options.output << ": " << mesh->vertex_count() << " vertices, "
                 << element_count_text(*mesh);
@@ -54,7 +66,7 @@ int run_convert(Context& context, const ConvertOptions& options) {
 void add_convert_command(CLI::App& app, Context& context) {
     auto options = std::make_shared<ConvertOptions>();
     CLI::App* command = app.add_subcommand(
-        "convert", "Convert between formats by extension: .mesh .msh .node/.ele .off .obj .vtu (write only)");
+        "convert", "Convert between formats by extension: " + std::string(known_mesh_extensions()));
     command->add_option("IN", options->input, "Input mesh file")->required();
     command->add_option("OUT", options->output, "Output mesh file")->required();
     command->add_flag("--reorient", options->reorient, "Flip inverted elements instead of refusing the input");
@@ -62,6 +74,12 @@ void add_convert_command(CLI::App& app, Context& context) {
                       "Renumber vertices by reverse Cuthill-McKee (smaller bandwidth), elements by their lowest vertex");
     command->add_option("--gmsh-version", options->gmsh_version, "Gmsh ASCII format version of a .msh output")
         ->check(CLI::IsMember({22, 41}))
+        ->capture_default_str();
+    command
+        ->add_option("--encoding", options->encoding,
+                     "standard: each format's usual (.vtu zlib-compressed binary, .msh and .vtk ASCII, .stl and "
+                     ".ply binary); ascii; binary (.msh file type 1, .vtu raw appended, .vtk big-endian)")
+        ->check(CLI::IsMember({"standard", "ascii", "binary"}))
         ->capture_default_str();
     command->callback([&context, options] { context.exit_code = run_convert(context, *options); });
 }

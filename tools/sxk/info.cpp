@@ -1,6 +1,7 @@
 // sxk info MESH [--json]: counts (vertices, elements, boundary faces, face-connected
 // components), dimensions and the labels present.
 #include <memory>
+#include <map>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +44,14 @@ int run_info(Context& context, const InfoOptions& options) {
         json["ambient_dimension"] = mesh->ambient_dimension();
         json["element_labels"] = element_labels;
         json["face_labels"] = face_labels;
+        // names of labels, as files carry them (Gmsh $PhysicalNames): {"7": "bone"}
+        auto names = [](const std::map<int, std::string>& given) {
+            nlohmann::ordered_json object = nlohmann::ordered_json::object();
+            for (const auto& [label, name] : given) object[std::to_string(label)] = name;
+            return object;
+        };
+        json["element_label_names"] = names(mesh->label_names().elements);
+        json["face_label_names"] = names(mesh->label_names().faces);
         context.out << json.dump(2) << '\n';
         return exit_success;
     }
@@ -60,6 +69,18 @@ int run_info(Context& context, const InfoOptions& options) {
                 << "ambient dimension: " << mesh->ambient_dimension() << '\n'
                 << "element labels: " << list(element_labels) << '\n'
                 << "face labels: " << list(face_labels) << '\n';
+    auto named = [&](const char* what, const std::map<int, std::string>& given) {
+        if (given.empty()) return;
+        context.out << what;
+        const char* separator = " ";
+        for (const auto& [label, name] : given) {
+            context.out << separator << label << " \"" << name << '"';
+            separator = ", ";
+        }
+        context.out << '\n';
+    };
+    named("element label names:", mesh->label_names().elements);
+    named("face label names:", mesh->label_names().faces);
     return exit_success;
 }
 

@@ -59,6 +59,8 @@ enum class Format { medit, gmsh, tetgen, off, obj, vtu, vtk, stl, ply };
 SXK_API std::string_view to_string(Format format);
 // By extension: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply; nullopt otherwise.
 SXK_API std::optional<Format> format_from_extension(const std::filesystem::path& path);
+// Those extensions as one line, for messages and help texts: ".mesh .msh .node .ele ...".
+SXK_API std::string_view known_mesh_extensions();
 
 // A reader's complaint. what() is "FILE:LINE: reason" (LINE is 0 when the problem is not tied to
 // a line, e.g. a missing file).
@@ -159,6 +161,8 @@ enum class Encoding {
                // binary (big-endian); .stl and .ply binary (little-endian)
 };
 SXK_API std::string_view to_string(Encoding encoding);
+// "standard", "ascii", "binary"; nullopt otherwise.
+SXK_API std::optional<Encoding> encoding_from_string(std::string_view name);
 
 struct WriteOptions {
     int gmsh_version = 41;                      // 22 or 41

@@ -1,4 +1,5 @@
-// Gmsh .msh, ASCII versions 2.2 and 4.1.
+// Gmsh .msh versions 2.2 and 4.1: the ASCII reader and the writer of both encodings (the binary
+// reader is gmsh_binary.cpp, which this one hands a file whose header says file type 1).
 //
 //   $MeshFormat / 2.2 0 8 / $EndMeshFormat
 //   $Nodes / N / "tag x y z" ... / $EndNodes
@@ -13,23 +14,30 @@
 //   $EndElements
 //
 // Labels are physical tags: an element's label is its first physical tag (2.2: the first tag
-// of the element; 4.1: the first physical tag of its entity), 0 when it has none. Elements one
-// dimension below the mesh (triangles of a tetrahedral mesh, lines of a triangle mesh) become
-// labelled faces; points and lower elements are checked and dropped. Node tags may be any
+// of the element; 4.1: the first physical tag of its entity), 0 when it has none; a group named
+// `label N` stands for label N, and other names are the mesh's label names (gmsh_common.hpp).
+// Elements one dimension below the mesh (triangles of a tetrahedral mesh, lines of a triangle mesh)
+// become labelled faces; points and lower elements are checked and dropped. Node tags may be any
 // positive numbers, in any order. Gmsh always stores x y z: a triangle mesh whose z are all 0 is
 // planar (ambient dimension 2).
 //
 // Sections that carry no connectivity ($Comments, $NodeData, ...) are skipped; an unknown section
 // is an error, so a misspelt $Elemnts does not go unnoticed. $PhysicalNames is read for its count
-// and entries (dimension 0..3, tag, quoted name), which are checked, and then dropped.
+// and entries (dimension 0..3, tag, quoted name), which are checked.
+//
+// The writer puts every element and labelled face in a physical group (gmsh_common.hpp says
+// why and how labels become groups), and with WriteOptions::encoding == Encoding::binary writes
+// Gmsh's binary layout (gmsh_binary.cpp describes it).
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstring>
 #include <span>
 #include <unordered_map>
 
 #include "../fresh_array.hpp"
 #include "formats.hpp"
+#include "gmsh_common.hpp"
 #include "raw_mesh.hpp"
 #include "text.hpp"
 #include "writing.hpp"
@@ -38,73 +46,77 @@ namespace sxk::io {
 
 namespace {
 
-constexpr std::array<std::string_view, 10> skipped_sections{
-    "$Comments",         "$NodeData",           "$ElementData",
-    "$ElementNodeData",  "$Periodic",           "$GhostElements",
-    "$Parametrizations", "$InterpolationScheme", "$PartitionedEntities",
-    "$NodeGroups"};
+constexpr std::array<std::string_view, 10> skipped_sections{"$Comments",
+                                                            "$NodeData",
+                                                            "$ElementData",
+                                                            "$ElementNodeData",
+                                                            "$Periodic",
+                                                            "$GhostElements",
+                                                            "$Parametrizations",
+                                                            "$InterpolationScheme",
+                                                            "$PartitionedEntities",
+                                                            "$NodeGroups"};
 
-// Vertices per element for the types a simplicial mesh can hold; 0 for the others.
-int type_size(std::int64_t type) {
-    switch (type) {
-        case 15:
-            return 1;  // point
-        case 1:
-            return 2;  // line
-        case 2:
-            return 3;  // triangle
-        case 4:
-            return 4;  // tetrahedron
-        default:
-            return 0;
-    }
-}
+using gmsh::NodeMap;
+using gmsh::PhysicalName;
+using gmsh::type_size;
 
 [[noreturn]] void unsupported_type(const Cursor& in, std::int64_t type) {
-    in.fail("element type " + std::to_string(type) +
-            " is not supported (simplexes only: 15 point, 1 line, 2 triangle, 4 tetrahedron)");
+    in.fail(gmsh::unsupported_type(type));
 }
 
-// Node tags -> vertex ids. Tags are usually 1..N, so a vector does; sparse tags go to a map.
-class NodeMap {
-public:
-    void build(std::span<const std::int64_t> tags, std::span<const std::size_t> lines,
-               const Cursor& in) {
-        std::int64_t largest = 0;
-        for (std::int64_t tag : tags)
-            largest = std::max(largest, tag);
-        m_dense = largest <= 2 * static_cast<std::int64_t>(tags.size()) + 1024;
-        if (m_dense)
-            m_vector.assign(static_cast<std::size_t>(largest) + 1, invalid_id);
-        else
-            m_map.reserve(tags.size());
-        for (std::size_t i = 0; i < tags.size(); ++i) {
-            bool fresh = true;
-            if (m_dense) {
-                VertexId& slot = m_vector[static_cast<std::size_t>(tags[i])];
-                fresh = slot == invalid_id;
-                slot = static_cast<VertexId>(i);
-            } else {
-                fresh = m_map.emplace(tags[i], static_cast<VertexId>(i)).second;
-            }
-            if (!fresh)
-                in.fail_at(lines[i], "node " + std::to_string(tags[i]) + " is defined twice");
-        }
-    }
-    VertexId find(std::int64_t tag) const {
-        if (m_dense)
-            return tag > 0 && tag < static_cast<std::int64_t>(m_vector.size())
-                       ? m_vector[static_cast<std::size_t>(tag)]
-                       : invalid_id;
-        const auto at = m_map.find(tag);
-        return at == m_map.end() ? invalid_id : at->second;
-    }
+}  // namespace
 
-private:
-    bool m_dense = true;
-    std::vector<VertexId> m_vector;
-    std::unordered_map<std::int64_t, VertexId> m_map;
-};
+// "$PhysicalNames / count / dimension tag "name" (one per line) / $EndPhysicalNames", one
+// entry per line because a quoted name may hold blanks; counted like every other count
+// (docs/formats.md). The names become labels or label names (gmsh_common.hpp).
+std::vector<PhysicalName> gmsh::read_physical_names(Cursor& in) {
+    std::vector<PhysicalName> names;
+    if (!in.next_line())
+        in.fail("truncated file: expected number of physical names");
+    const std::int64_t count = in.to_integer(in.need_in_line("number of physical names"),
+                                             "number of physical names", 0, INT64_MAX);
+    if (!in.line_done())
+        in.fail("unexpected " + quote(in.next_in_line()) + " after the number of physical names");
+    for (std::int64_t i = 0; i < count; ++i) {
+        if (!in.next_line())
+            in.fail("truncated file: expected $EndPhysicalNames");
+        const std::string_view first = in.need_in_line("physical dimension");
+        if (first[0] == '$')
+            in.fail("section $PhysicalNames declares " + std::to_string(count) + " names but has " +
+                    std::to_string(i));
+        PhysicalName group;
+        group.dimension = static_cast<int>(in.to_integer(first, "physical dimension", 0, 3));
+        group.tag =
+            in.to_integer(in.need_in_line("physical tag"), "physical tag", INT64_MIN, INT64_MAX);
+        // "name", possibly several tokens: from a token starting with a quote to one ending
+        // with one; the name is the text between, blanks as they stand in the file
+        std::string_view word = in.need_in_line("physical name");
+        if (word[0] != '"')
+            in.fail("expected a quoted physical name, found " + quote(word));
+        const char* begin = word.data() + 1;
+        word.remove_prefix(1);
+        while (word.empty() || word.back() != '"') {
+            word = in.next_in_line();
+            if (word.empty())
+                in.fail("physical name without its closing '\"'");
+        }
+        group.name.assign(begin, word.data() + word.size() - 1);
+        names.push_back(std::move(group));
+        if (!in.line_done())
+            in.fail("unexpected " + quote(in.next_in_line()) + " after the physical name");
+    }
+    const std::string_view token = in.need("$EndPhysicalNames");
+    if (token != "$EndPhysicalNames") {
+        if (token[0] == '$')
+            in.fail("expected $EndPhysicalNames, found " + quote(token));
+        in.fail("section $PhysicalNames has more than the " + std::to_string(count) +
+                " names it declares");
+    }
+    return names;
+}
+
+namespace {
 
 class Reader {
 public:
@@ -127,8 +139,6 @@ public:
                       " (2.2 and 4.1 are supported)");
         }
         const std::string_view file_type = m_in.need("file type");
-        if (file_type == "1")
-            m_in.fail("binary Gmsh files are not supported");
         if (file_type != "0")
             m_in.fail("expected file type 0 (ASCII), found " + quote(file_type));
         m_in.to_integer(m_in.need("data size"), "data size", 1, 16);
@@ -148,7 +158,8 @@ public:
                 m_have_elements = true;
                 m_version == 2 ? read_elements_2() : read_elements_4();
             } else if (section == "$PhysicalNames") {
-                read_physical_names();
+                const std::vector<PhysicalName> names = gmsh::read_physical_names(m_in);
+                m_names.insert(m_names.end(), names.begin(), names.end());
             } else if (section == "$Entities" && m_version == 4) {
                 if (m_have_entities)
                     m_in.fail("section $Entities appears twice");
@@ -169,8 +180,11 @@ public:
             m_in.fail("missing $Nodes section");
         if (!m_have_elements)
             m_in.fail("missing $Elements section");
+        gmsh::labels_from_groups(m_raw, m_names);
         return m_raw;
     }
+
+    const std::vector<PhysicalName>& names() const { return m_names; }
 
 private:
     void expect(const char* keyword) {
@@ -218,43 +232,6 @@ private:
             m_raw.point_numbers.push_back(tag);
     }
 
-    // "$PhysicalNames / count / dimension tag "name" (one per line) / $EndPhysicalNames". The
-    // names label nothing the kernel keeps, but the count is checked like every other count
-    // (docs/formats.md): one entry per line because a quoted name may hold blanks.
-    void read_physical_names() {
-        m_section = "$PhysicalNames";
-        if (!m_in.next_line())
-            m_in.fail("truncated file: expected number of physical names");
-        const std::int64_t count =
-            m_in.to_integer(m_in.need_in_line("number of physical names"), "number of physical names", 0,
-                            INT64_MAX);
-        if (!m_in.line_done())
-            m_in.fail("unexpected " + quote(m_in.next_in_line()) + " after the number of physical names");
-        for (std::int64_t i = 0; i < count; ++i) {
-            if (!m_in.next_line())
-                m_in.fail("truncated file: expected $EndPhysicalNames");
-            const std::string_view first = m_in.need_in_line("physical dimension");
-            if (first[0] == '$')
-                m_in.fail("section $PhysicalNames declares " + std::to_string(count) + " names but has " +
-                          std::to_string(i));
-            m_in.to_integer(first, "physical dimension", 0, 3);
-            m_in.to_integer(m_in.need_in_line("physical tag"), "physical tag", INT64_MIN, INT64_MAX);
-            // "name", possibly several tokens: from a token starting with a quote to one ending with one
-            std::string_view word = m_in.need_in_line("physical name");
-            if (word[0] != '"')
-                m_in.fail("expected a quoted physical name, found " + quote(word));
-            word.remove_prefix(1);
-            while (word.empty() || word.back() != '"') {
-                word = m_in.next_in_line();
-                if (word.empty())
-                    m_in.fail("physical name without its closing '\"'");
-            }
-            if (!m_in.line_done())
-                m_in.fail("unexpected " + quote(m_in.next_in_line()) + " after the physical name");
-        }
-        end_section("$EndPhysicalNames", "names", count);
-    }
-
     void read_nodes_2() {
         m_section = "$Nodes";
         const std::int64_t count = integer("number of nodes", 0, invalid_id - 1);
@@ -268,7 +245,14 @@ private:
             add_node(m_in.to_integer(token, "node tag", 1, INT64_MAX));
         }
         end_section("$EndNodes", "nodes", count);
-        m_nodes.build(m_raw.point_numbers, m_raw.point_lines, m_in);
+        build_node_map();
+    }
+
+    void build_node_map() {
+        if (const auto repeated = m_nodes.build(m_raw.point_numbers))
+            m_in.fail_at(
+                m_raw.point_lines[*repeated],
+                "node " + std::to_string(m_raw.point_numbers[*repeated]) + " is defined twice");
     }
 
     void read_nodes_4() {
@@ -304,7 +288,7 @@ private:
             m_in.fail("section $Nodes declares " + std::to_string(count) +
                       " nodes but its blocks hold " + std::to_string(m_raw.points.size()));
         end_section("$EndNodes", "nodes", count);
-        m_nodes.build(m_raw.point_numbers, m_raw.point_lines, m_in);
+        build_node_map();
     }
 
     // Reads `size` node tags of an element and files it by size.
@@ -441,65 +425,197 @@ private:
     const char* m_section = "";
     NodeMap m_nodes;
     std::unordered_map<std::pair<int, std::int64_t>, int, EntityHash> m_entities;
+    std::vector<PhysicalName> m_names;
 };
 
 }  // namespace
 
 Mesh read_gmsh(std::string_view text, const std::string& name, const ReadOptions& options,
                ReadReport* report) {
+    if (gmsh::announces_binary(text))
+        return gmsh::read_binary(text, name, options, report);
     Reader reader(check_text(text, name), name);
-    return build_mesh(reader.read(), name, options, report);
+    Mesh mesh = build_mesh(reader.read(), name, options, report);
+    gmsh::keep_label_names(mesh, reader.names());
+    return mesh;
 }
 
-std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
-    if (options.gmsh_version != 22 && options.gmsh_version != 41)
-        throw OutputError("Gmsh version must be 22 or 41, not " +
-                          std::to_string(options.gmsh_version));
-    const std::span<const Point> positions = chosen_positions(mesh, options);
-    const int d = mesh.topological_dimension();
-    const auto faces = sorted_face_labels(mesh);
-    std::string out;
-    out.reserve(mesh.vertex_count() * 64 + mesh.element_count() * 48);
+namespace {
 
-    if (options.gmsh_version == 22) {
-        out += "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n";
-        append_number(out, mesh.vertex_count());
-        out += '\n';
-        for (std::size_t v = 0; v < positions.size(); ++v) {
-            append_number(out, v + 1);
-            out += ' ';
-            append_xyz(out, positions[v]);
-            out += '\n';
+// Where the writer's numbers go: text tokens separated by blanks, one record a line, or the
+// binary layout of Gmsh's file type 1 (little-endian, as this machine writes it; the reader
+// tells by the 1 after the header). Gmsh's binary sections keep their keywords and, in 2.2,
+// their count lines as text: the writer switches with line().
+class Sink {
+public:
+    Sink(std::string& out, bool binary) : m_out(out), m_binary(binary) {}
+    bool binary() const { return m_binary; }
+    // an int (Gmsh's `int`: 4 bytes in binary)
+    void int32(std::int64_t value) {
+        if (m_binary) {
+            if (value < INT32_MIN || value > INT32_MAX)
+                throw OutputError("a binary Gmsh file holds numbers up to 2147483647, not " +
+                                  std::to_string(value));
+            put(static_cast<std::int32_t>(value));
+        } else {
+            token();
+            append_number(m_out, value);
         }
-        out += "$EndNodes\n$Elements\n";
-        append_number(out, faces.size() + mesh.element_count());
-        out += '\n';
-        std::size_t tag = 0;
-        // "tag type 2 physical elementary nodes": the label is both tags, so Gmsh shows it
-        // whichever it colours by
-        auto element = [&](const Simplex& s, int label) {
-            append_number(out, ++tag);
-            out += s.count() == 4 ? " 4 2 " : s.count() == 3 ? " 2 2 " : " 1 2 ";
-            append_number(out, label);
-            out += ' ';
-            append_number(out, label);
-            const auto v = oriented_vertices(s);
-            for (int j = 0; j < s.count(); ++j) {
-                out += ' ';
-                append_number(out, v[static_cast<std::size_t>(j)] + 1);
-            }
-            out += '\n';
-        };
-        for (const auto& [face, label] : faces)
-            element(face, label);
-        for (ElementId t : elements(mesh))
-            element(mesh.simplex(t), mesh.label(t));
-        out += "$EndElements\n";
-        return out;
+    }
+    // a count or a 4.1 tag (Gmsh's `size_t`: 8 bytes in binary)
+    void size(std::size_t value) {
+        if (m_binary) {
+            put(static_cast<std::uint64_t>(value));
+        } else {
+            token();
+            append_number(m_out, value);
+        }
+    }
+    void real(double value) {
+        if (m_binary) {
+            put(value);
+        } else {
+            token();
+            append_number(m_out, value);
+        }
+    }
+    void point(const Point& p) {
+        real(p[0]);
+        real(p[1]);
+        real(p[2]);
+    }
+    // ends a record: a new line in text, nothing in binary
+    void end() {
+        if (!m_binary)
+            m_out += '\n';
+        m_fresh = true;
+    }
+    // a line of text in either encoding (keywords, 2.2's counts); binary data before it get the
+    // newline Gmsh writes after them
+    void line(std::string_view text) {
+        if (m_binary && m_data)
+            m_out += '\n';
+        m_data = false;
+        m_out += text;
+        m_out += '\n';
+        m_fresh = true;
+    }
+    // a count on a line of its own in both encodings (2.2 binary keeps them as text)
+    void count_line(std::size_t value) {
+        append_number(m_out, value);
+        m_out += '\n';
+        m_fresh = true;
     }
 
-    // 4.1: entities carry the physical tags, so elements and faces are grouped by label, one
-    // entity per distinct label (stable sorts keep the mesh's order within a group)
+private:
+    void token() {
+        if (!m_fresh)
+            m_out += ' ';
+        m_fresh = false;
+    }
+    template <class T>
+    void put(T value) {
+        char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        m_out.append(bytes, sizeof(T));
+        m_data = true;
+    }
+    std::string& m_out;
+    bool m_binary;
+    bool m_fresh = true;  // no token on the current line yet
+    bool m_data = false;  // binary data since the last line of text
+};
+
+void write_header(Sink& out, const char* version, const gmsh::PhysicalGroups& groups) {
+    out.line("$MeshFormat");
+    if (out.binary()) {
+        // "VERSION 1 8", then the int 1 in the writer's byte order, then a newline
+        out.line(std::string(version) + " 1 8");
+        out.int32(1);
+    } else {
+        out.line(std::string(version) + " 0 8");
+    }
+    out.line("$EndMeshFormat");
+    if (groups.names().empty())
+        return;
+    // text in both encodings
+    out.line("$PhysicalNames");
+    out.count_line(groups.names().size());
+    for (const gmsh::PhysicalName& group : groups.names())
+        out.line(std::to_string(group.dimension) + ' ' + std::to_string(group.tag) + " \"" +
+                 group.name + '"');
+    out.line("$EndPhysicalNames");
+}
+
+int gmsh_type(int vertices) {
+    return vertices == 4 ? 4 : vertices == 3 ? 2 : 1;
+}
+
+std::string write_gmsh_22(const Mesh& mesh, std::span<const Point> positions, bool binary,
+                          const gmsh::PhysicalGroups& groups,
+                          const std::vector<std::pair<Simplex, int>>& faces) {
+    std::string out;
+    out.reserve(mesh.vertex_count() * (binary ? 32 : 64) +
+                mesh.element_count() * (binary ? 28 : 48));
+    Sink sink(out, binary);
+    write_header(sink, "2.2", groups);
+    sink.line("$Nodes");
+    sink.count_line(mesh.vertex_count());
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        sink.int32(static_cast<std::int64_t>(v + 1));
+        sink.point(positions[v]);
+        sink.end();
+    }
+    sink.line("$EndNodes");
+    sink.line("$Elements");
+    sink.count_line(faces.size() + mesh.element_count());
+    std::size_t tag = 0;
+    // "tag type 2 physical elementary nodes": the group is both tags (an elementary tag of 0
+    // is no entity to Gmsh), so Gmsh shows it whichever it colours by. Binary groups elements
+    // of one type under a header "type count 2".
+    auto element = [&](const Simplex& s, int group) {
+        sink.int32(static_cast<std::int64_t>(++tag));
+        if (!binary) {
+            sink.int32(gmsh_type(s.count()));
+            sink.int32(2);
+        }
+        sink.int32(group);
+        sink.int32(group);
+        const auto v = oriented_vertices(s);
+        for (int j = 0; j < s.count(); ++j)
+            sink.int32(static_cast<std::int64_t>(v[static_cast<std::size_t>(j)]) + 1);
+        sink.end();
+    };
+    auto block_header = [&](int vertices, std::size_t count) {
+        if (binary && count > 0) {
+            sink.int32(gmsh_type(vertices));
+            sink.int32(static_cast<std::int64_t>(count));
+            sink.int32(2);
+        }
+    };
+    const int k = mesh.element_vertex_count();
+    block_header(k - 1, faces.size());
+    for (const auto& [face, label] : faces)
+        element(face, groups.face_tag(label));
+    block_header(k, mesh.element_count());
+    for (ElementId t : elements(mesh))
+        element(mesh.simplex(t), groups.element_tag(mesh.label(t)));
+    sink.line("$EndElements");
+    return out;
+}
+
+std::string write_gmsh_41(const Mesh& mesh, std::span<const Point> positions, bool binary,
+                          const gmsh::PhysicalGroups& groups,
+                          const std::vector<std::pair<Simplex, int>>& faces) {
+    const int d = mesh.topological_dimension();
+    std::string out;
+    out.reserve(mesh.vertex_count() * (binary ? 32 : 64) +
+                mesh.element_count() * (binary ? 40 : 48));
+    Sink sink(out, binary);
+    write_header(sink, "4.1", groups);
+
+    // entities carry the physical tags, so elements and faces are grouped by label, one entity
+    // per distinct label (stable sorts keep the mesh's order within a group)
     std::vector<std::pair<int, ElementId>> by_label;
     by_label.reserve(mesh.element_count());
     for (ElementId t : elements(mesh))
@@ -531,91 +647,103 @@ std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
             low[c] = v == 0 ? positions[v][c] : std::min(low[c], positions[v][c]);
             high[c] = v == 0 ? positions[v][c] : std::max(high[c], positions[v][c]);
         }
-    // entity tags 1.. for the d-dimensional entities (at least one: the nodes live on it), and
-    // 1.. for the (d-1)-dimensional ones
-    const std::size_t entity_count = std::max<std::size_t>(volumes.size(), 1);
-    out += "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 ";
+    // entity tags 1.. for the d-dimensional entities (one per label; the nodes live on the
+    // first), and 1.. for the (d-1)-dimensional ones
+    sink.line("$Entities");
     std::array<std::size_t, 4> counts{0, 0, 0, 0};
-    counts[static_cast<std::size_t>(d)] = entity_count;
+    counts[static_cast<std::size_t>(d)] = volumes.size();
     counts[static_cast<std::size_t>(d - 1)] = surfaces.size();
-    out += std::to_string(counts[1]) + ' ' + std::to_string(counts[2]) + ' ' +
-           std::to_string(counts[3]) + '\n';
-    auto entity = [&](std::size_t tag, int label) {
-        append_number(out, tag);
-        out += ' ';
-        append_xyz(out, low);
-        out += ' ';
-        append_xyz(out, high);
-        if (label != 0) {
-            out += " 1 ";
-            append_number(out, label);
-        } else {
-            out += " 0";
-        }
-        out += " 0\n";
+    for (std::size_t count : counts)
+        sink.size(count);
+    sink.end();
+    auto entity = [&](std::size_t tag, int group) {
+        sink.int32(static_cast<std::int64_t>(tag));
+        sink.point(low);
+        sink.point(high);
+        sink.size(1);  // one physical tag
+        sink.int32(group);
+        sink.size(0);  // no bounding entities
+        sink.end();
     };
     // entities are listed by dimension: the faces' before the elements'
     for (std::size_t i = 0; i < surfaces.size(); ++i)
-        entity(i + 1, faces_by_label[surfaces[i].first].second);
-    for (std::size_t i = 0; i < entity_count; ++i)
-        entity(i + 1, volumes.empty() ? 0 : by_label[volumes[i].first].first);
-    out += "$EndEntities\n$Nodes\n1 ";
-    append_number(out, mesh.vertex_count());
-    out += mesh.vertex_count() ? " 1 " : " 0 ";
-    append_number(out, mesh.vertex_count());
-    out += '\n';
-    append_number(out, d);
-    out += " 1 0 ";
-    append_number(out, mesh.vertex_count());
-    out += '\n';
-    for (std::size_t v = 0; v < positions.size(); ++v) {
-        append_number(out, v + 1);
-        out += '\n';
+        entity(i + 1, groups.face_tag(faces_by_label[surfaces[i].first].second));
+    for (std::size_t i = 0; i < volumes.size(); ++i)
+        entity(i + 1, groups.element_tag(by_label[volumes[i].first].first));
+    sink.line("$EndEntities");
+
+    sink.line("$Nodes");
+    const std::size_t n = mesh.vertex_count();
+    sink.size(1);
+    sink.size(n);
+    sink.size(n ? 1 : 0);
+    sink.size(n);
+    sink.end();
+    sink.int32(d);
+    sink.int32(1);
+    sink.int32(0);
+    sink.size(n);
+    sink.end();
+    for (std::size_t v = 0; v < n; ++v) {
+        sink.size(v + 1);
+        sink.end();
     }
     for (const Point& p : positions) {
-        append_xyz(out, p);
-        out += '\n';
+        sink.point(p);
+        sink.end();
     }
-    out += "$EndNodes\n$Elements\n";
+    sink.line("$EndNodes");
+
+    sink.line("$Elements");
     const std::size_t total = faces.size() + mesh.element_count();
-    append_number(out, surfaces.size() + volumes.size());
-    out += ' ';
-    append_number(out, total);
-    out += total ? " 1 " : " 0 ";
-    append_number(out, total);
-    out += '\n';
+    sink.size(surfaces.size() + volumes.size());
+    sink.size(total);
+    sink.size(total ? 1 : 0);
+    sink.size(total);
+    sink.end();
     std::size_t tag = 0;
-    auto block = [&](int dimension, std::size_t entity_tag, const char* type, std::size_t size) {
-        append_number(out, dimension);
-        out += ' ';
-        append_number(out, entity_tag);
-        out += type;
-        append_number(out, size);
-        out += '\n';
+    auto block = [&](int dimension, std::size_t entity_tag, int vertices, std::size_t size) {
+        sink.int32(dimension);
+        sink.int32(static_cast<std::int64_t>(entity_tag));
+        sink.int32(gmsh_type(vertices));
+        sink.size(size);
+        sink.end();
     };
     auto simplex_line = [&](const Simplex& s) {
-        append_number(out, ++tag);
+        sink.size(++tag);
         const auto v = oriented_vertices(s);
-        for (int j = 0; j < s.count(); ++j) {
-            out += ' ';
-            append_number(out, v[static_cast<std::size_t>(j)] + 1);
-        }
-        out += '\n';
+        for (int j = 0; j < s.count(); ++j)
+            sink.size(static_cast<std::size_t>(v[static_cast<std::size_t>(j)]) + 1);
+        sink.end();
     };
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
         const auto [begin, end] = surfaces[i];
-        block(d - 1, i + 1, d == 3 ? " 2 " : " 1 ", end - begin);
+        block(d - 1, i + 1, d, end - begin);
         for (std::size_t f = begin; f < end; ++f)
             simplex_line(faces_by_label[f].first);
     }
     for (std::size_t i = 0; i < volumes.size(); ++i) {
         const auto [begin, end] = volumes[i];
-        block(d, i + 1, d == 3 ? " 4 " : " 2 ", end - begin);
+        block(d, i + 1, d + 1, end - begin);
         for (std::size_t e = begin; e < end; ++e)
             simplex_line(mesh.simplex(by_label[e].second));
     }
-    out += "$EndElements\n";
+    sink.line("$EndElements");
     return out;
+}
+
+}  // namespace
+
+std::string write_gmsh(const Mesh& mesh, const WriteOptions& options) {
+    if (options.gmsh_version != 22 && options.gmsh_version != 41)
+        throw OutputError("Gmsh version must be 22 or 41, not " +
+                          std::to_string(options.gmsh_version));
+    const bool binary = options.encoding == Encoding::binary;
+    const gmsh::PhysicalGroups groups(mesh);
+    const auto faces = sorted_face_labels(mesh);
+    const std::span<const Point> positions = chosen_positions(mesh, options);
+    return options.gmsh_version == 22 ? write_gmsh_22(mesh, positions, binary, groups, faces)
+                                      : write_gmsh_41(mesh, positions, binary, groups, faces);
 }
 
 }  // namespace sxk::io

@@ -54,6 +54,17 @@ std::string_view to_string(Encoding encoding) {
     return "unknown";
 }
 
+std::string_view known_mesh_extensions() {
+    return ".mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply";
+}
+
+std::optional<Encoding> encoding_from_string(std::string_view name) {
+    for (const Encoding encoding : {Encoding::standard, Encoding::ascii, Encoding::binary})
+        if (to_string(encoding) == name)
+            return encoding;
+    return std::nullopt;
+}
+
 std::optional<Format> format_from_extension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
