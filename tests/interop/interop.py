@@ -38,7 +38,12 @@ OUR_OUTPUTS = [
     ("ours41_binary.msh", ["--gmsh-version", "41", "--encoding", "binary"]),
     ("ours22.msh", ["--gmsh-version", "22"]),
     ("ours22_binary.msh", ["--gmsh-version", "22", "--encoding", "binary"]),
+    ("ours.stl", ["--encoding", "binary"]),  # surfaces: a tetrahedral mesh's boundary
+    ("ours_ascii.stl", ["--encoding", "ascii"]),
+    ("ours.ply", ["--encoding", "binary"]),
+    ("ours_ascii.ply", ["--encoding", "ascii"]),
 ]
+SURFACES = ("ours.stl", "ours_ascii.stl", "ours.ply", "ours_ascii.ply")
 
 
 def sxk(*args, check=True):
@@ -172,6 +177,16 @@ class MeshioReadsOurs(Expectations):
                 # label 0 is no physical tag to Gmsh: the smallest free tag, named for the label
                 self.assertEqual(mesh.field_data["label 0"].tolist(), [1, 3])
 
+    def test_stl_and_ply_surfaces_in_both_encodings(self):
+        boundary = info(path("reference.mesh"))["boundary_faces"]
+        for name in SURFACES:
+            with self.subTest(name):
+                mesh = meshio.read(path(name))
+                self.assertEqual(sum(len(b.data) for b in mesh.cells if b.type == "triangle"), boundary)
+                # meshio reads STL per triangle corner; welded, the points are sxk's vertices
+                points = np.unique(mesh.points, axis=0)
+                self.assertEqual(len(points), info(path(name))["vertices"])
+
 
 # ---- ours, read by VTK ------------------------------------------------------------------------
 
@@ -211,6 +226,15 @@ class VtkReadsOurs(unittest.TestCase):
         for name in ("ours.vtk", "ours_binary.vtk"):
             with self.subTest(name):
                 self.check(vtk_read(vtk.vtkUnstructuredGridReader(), name))
+
+    def test_stl_and_ply_readers_both_encodings(self):
+        boundary = info(path("reference.mesh"))["boundary_faces"]
+        for name in SURFACES:
+            with self.subTest(name):
+                reader = vtk.vtkSTLReader() if name.endswith(".stl") else vtk.vtkPLYReader()
+                surface = vtk_read(reader, name)
+                self.assertEqual(surface.GetNumberOfPolys(), boundary)
+                self.assertEqual(surface.GetNumberOfPoints(), info(path(name))["vertices"])
 
     def test_a_cut_shows_its_faces_and_two_pieces(self):
         # the snap cutter through the whole 8-cell cube: cut faces labelled 9999, two pieces
