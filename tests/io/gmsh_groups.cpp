@@ -68,10 +68,12 @@ TEST(GmshGroups, Version22WritesAGroupAndAnEntityOfAtLeastOne) {
     const auto path = scratch_dir() / "zero22.msh";
     write_mesh(mesh, path, options);
     const std::string text = file_text(path);
-    // the face labelled -4 is element 1 ("1 2 2 1 1 ..."), the tetrahedron labelled 0 element 3
+    // faces by vertices: {0,1,2} labelled 5 is element 1, {0,1,3} labelled -4 (group 1) element
+    // 2; the tetrahedron labelled 0 (group 1) is element 3
     const std::size_t elements = text.find("$Elements\n4\n");
     ASSERT_NE(elements, std::string::npos) << text;
-    EXPECT_NE(text.find("\n1 2 2 1 1 ", elements), std::string::npos) << text;
+    EXPECT_NE(text.find("\n1 2 2 5 5 ", elements), std::string::npos) << text;
+    EXPECT_NE(text.find("\n2 2 2 1 1 ", elements), std::string::npos) << text;
     EXPECT_NE(text.find("\n3 4 2 1 1 ", elements), std::string::npos) << text;
     EXPECT_EQ(text.find(" 2 0 0 ", elements), std::string::npos) << text;
     expect_same_mesh(mesh, read_mesh(path));
