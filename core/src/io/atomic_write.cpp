@@ -4,12 +4,15 @@
 #include "sxk/atomic_write.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
+#include <climits>
 #include <cstring>
 #include <string>
 #include <system_error>
@@ -26,14 +29,96 @@ namespace {
     fail(path, std::strerror(error));
 }
 
+// The longest file name the target's folder takes (NAME_MAX where the file system does not say).
+std::size_t name_limit(const std::filesystem::path& target) {
+    const std::filesystem::path folder =
+        target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+    const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+    return limit > 0 ? static_cast<std::size_t>(limit) : std::size_t{NAME_MAX};
+}
+
+// ".NAME.sxk-PID-N.KIND": the pid and the counter make it unique, and a file name that would
+// not fit `limit` with them (a legal 245-byte name gets ~20 more) is shortened: only the copied
+// NAME loses bytes, cut before a UTF-8 sequence rather than inside one, so that the pid and the
+// counter stay readable for remove_stale_leftovers.
+std::string temporary_name(const std::string& name, long pid, unsigned long counter,
+                           std::string_view kind, std::size_t limit) {
+    const std::string tail =
+        ".sxk-" + std::to_string(pid) + "-" + std::to_string(counter) + std::string(kind);
+    std::size_t keep = name.size();
+    const std::size_t room = limit > tail.size() + 2 ? limit - tail.size() - 1 : 1;
+    if (keep > room) {
+        keep = room;
+        while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80)
+            --keep;
+    }
+    return "." + name.substr(0, keep) + tail;
+}
+
 // Names unique within this process (the counter) and across processes (the pid); O_EXCL
 // settles any remaining clash, the caller simply takes the next number.
 std::filesystem::path temporary_beside(const std::filesystem::path& target, const char* kind) {
     static std::atomic<unsigned long> counter{0};
-    const std::string name = "." + target.filename().string() + ".sxk-" +
-                             std::to_string(static_cast<long>(::getpid())) + "-" +
-                             std::to_string(counter.fetch_add(1)) + kind;
-    return target.parent_path() / name;
+    return target.parent_path() / temporary_name(target.filename().string(),
+                                                 static_cast<long>(::getpid()),
+                                                 counter.fetch_add(1), kind, name_limit(target));
+}
+
+// The pid and counter of `text` ("PID-N"), both plain decimal numbers, or false.
+bool parse_pid_and_counter(std::string_view text, long& pid, unsigned long& counter) {
+    const std::size_t dash = text.find('-');
+    if (dash == std::string_view::npos)
+        return false;
+    const std::string_view pid_text = text.substr(0, dash), counter_text = text.substr(dash + 1);
+    const auto [pid_end, pid_error] =
+        std::from_chars(pid_text.data(), pid_text.data() + pid_text.size(), pid);
+    const auto [counter_end, counter_error] = std::from_chars(
+        counter_text.data(), counter_text.data() + counter_text.size(), counter);
+    return !pid_text.empty() && pid_error == std::errc() &&
+           pid_end == pid_text.data() + pid_text.size() && !counter_text.empty() &&
+           counter_error == std::errc() &&
+           counter_end == counter_text.data() + counter_text.size() && pid > 0;
+}
+
+// What a writer killed between creating its temporaries and renaming them (kill -9, a crash)
+// left beside `target`: ".NAME.sxk-PID-N.tmp" and, of a set, the backups ".NAME.sxk-PID-N.old".
+// Only names this writer would make for `target` are considered, and only those whose PID is no
+// running process (kill(PID, 0) says ESRCH): a live writer's files, or a file of a process we
+// cannot judge (EPERM: it runs), stay. A pid reused since keeps its leftovers until a later
+// write. Called after a successful write: the target is then complete, and the backups of an
+// interrupted set (its only copy of the old files) are no longer needed.
+void remove_stale_leftovers(const std::filesystem::path& target) {
+    const std::filesystem::path folder =
+        target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+    const std::string name = target.filename().string();
+    const std::size_t limit = name_limit(target);
+    std::error_code error;
+    std::vector<std::filesystem::path> stale;
+    for (std::filesystem::directory_iterator entry(folder, error), end; !error && entry != end;
+         entry.increment(error)) {
+        const std::string found = entry->path().filename().string();
+        if (found.size() < 10 || found[0] != '.')
+            continue;
+        const std::string_view kind = std::string_view(found).substr(found.size() - 4);
+        if (kind != ".tmp" && kind != ".old")
+            continue;
+        const std::size_t marker = found.rfind(".sxk-");
+        if (marker == std::string::npos)
+            continue;
+        long pid = 0;
+        unsigned long counter = 0;
+        if (!parse_pid_and_counter(std::string_view(found).substr(
+                                       marker + 5, found.size() - 4 - (marker + 5)),
+                                   pid, counter))
+            continue;
+        if (temporary_name(name, pid, counter, kind, limit) != found ||
+            pid == static_cast<long>(::getpid()))
+            continue;
+        if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+            stale.push_back(entry->path());
+    }
+    for (const std::filesystem::path& path : stale)
+        ::unlink(path.c_str());
 }
 
 // What a write aims at: the file a symbolic link names, checked to be a regular file or absent.
@@ -204,6 +289,8 @@ void write_files_atomically(std::span<const FileContent> files) {
     }
     for (const Pending& file : pending)
         sync_folder(file.target);
+    for (const Pending& file : pending)
+        remove_stale_leftovers(file.target);
 }
 
 }  // namespace sxk

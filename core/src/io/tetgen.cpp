@@ -10,9 +10,21 @@
 // (TetGen's region attribute) is the element label; .face (.edge) markers are face labels, kept
 // only when the header says markers are present. A 2-dimensional .node file makes a planar
 // mesh. Second-order elements (6 or 10 nodes) are refused.
+//
+// The writer ends each file of a set with the same stamp, "# written by simplexkit, set ID"
+// (ID: 16 hex digits of a hash of the set's three texts). Its files replace their targets one
+// rename after another (sxk/atomic_write.hpp, write_files_atomically), so a writer killed between
+// the renames leaves files of two writes side by side; the reader refuses stamped files whose
+// stamps differ, naming both. Files without a stamp (TetGen's own) are read as they are.
+#include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <tbb/parallel_invoke.h>
 
@@ -195,6 +207,78 @@ void read_faces(const TetgenText& text, std::int64_t base, std::size_t vertex_co
     no_more_records(in, "faces", face_count);
 }
 
+constexpr std::string_view set_stamp_prefix = "# written by simplexkit, set ";
+
+// The stamp line of a file the writer wrote (its last line that is not blank): where it starts in
+// `text`, and the set id it names; an empty id when the file has no stamp.
+struct SetStamp {
+    std::size_t offset = 0;
+    std::string_view id;
+};
+
+SetStamp set_stamp(std::string_view text) {
+    const std::size_t last = text.find_last_not_of(" \t\r\n");
+    if (last == std::string_view::npos)
+        return {};
+    const std::size_t newline = text.rfind('\n', last);
+    const std::size_t begin = newline == std::string_view::npos ? 0 : newline + 1;
+    const std::string_view line = text.substr(begin, last + 1 - begin);
+    if (line.substr(0, set_stamp_prefix.size()) != set_stamp_prefix)
+        return {};
+    return {begin, line.substr(set_stamp_prefix.size())};
+}
+
+// The files of one set carry one stamp: a file stamped by another write than the files before it
+// (in the order .node, .ele, .face) is refused at its stamp line, naming the file it differs from.
+void check_one_set(const TetgenText& text) {
+    struct Stamped {
+        std::string_view text;
+        const std::string* name;
+        SetStamp stamp;
+    };
+    std::vector<Stamped> stamped;
+    auto add = [&](std::string_view file, const std::string& name) {
+        if (const SetStamp stamp = set_stamp(file); !stamp.id.empty())
+            stamped.push_back({file, &name, stamp});
+    };
+    add(text.node, text.node_name);
+    add(text.ele, text.ele_name);
+    if (text.face)
+        add(*text.face, text.face_name);
+    for (std::size_t i = 1; i < stamped.size(); ++i) {
+        const Stamped& first = stamped.front();
+        const Stamped& other = stamped[i];
+        if (other.stamp.id == first.stamp.id)
+            continue;
+        const std::size_t line = 1 + static_cast<std::size_t>(std::count(
+                                         other.text.begin(),
+                                         other.text.begin() + static_cast<std::ptrdiff_t>(other.stamp.offset),
+                                         '\n'));
+        throw InputError(*other.name, line,
+                         "set " + std::string(other.stamp.id) + ", but " + *first.name + " is of set " +
+                             std::string(first.stamp.id) +
+                             ": the files come from two writes (one was interrupted between "
+                             "replacing them); write the set again");
+    }
+}
+
+// The set id of a write: 64-bit FNV-1a over the three texts, so that a set written again from
+// the same mesh is byte for byte the same files, and two writes of different meshes differ.
+std::string set_id(const TetgenFiles& files) {
+    std::uint64_t hash = 14695981039346656037ull;
+    for (const std::string* part : {&files.node, &files.ele, &files.face}) {
+        for (const char c : *part) {
+            hash ^= static_cast<unsigned char>(c);
+            hash *= 1099511628211ull;
+        }
+        hash ^= 0xff;  // a separator: moving text from one file to the next changes the id
+        hash *= 1099511628211ull;
+    }
+    char id[17];
+    std::snprintf(id, sizeof id, "%016llx", static_cast<unsigned long long>(hash));
+    return id;
+}
+
 }  // namespace
 
 bool tetgen_announces_tetrahedra(std::string_view ele, const std::string& ele_name) {
@@ -206,6 +290,7 @@ bool tetgen_announces_tetrahedra(std::string_view ele, const std::string& ele_na
 }
 
 RawMesh parse_tetgen_text(const TetgenText& text) {
+    check_one_set(text);
     RawMesh raw;
     raw.vertex_file = text.node_name;
     raw.triangles.file = raw.tetrahedra.file = text.ele_name;
@@ -284,7 +369,6 @@ TetgenFiles write_tetgen(const Mesh& mesh, const WriteOptions& options) {
         }
         node += '\n';
     }
-    node += "# written by simplexkit\n";
 
     bool labelled = false;
     for (ElementId t : elements(mesh))
@@ -309,7 +393,6 @@ TetgenFiles write_tetgen(const Mesh& mesh, const WriteOptions& options) {
         }
         ele += '\n';
     }
-    ele += "# written by simplexkit\n";
 
     // the labelled faces with their markers; without labels the plain boundary, so the file
     // still is what TetGen users expect (and reads back as no labels)
@@ -341,7 +424,9 @@ TetgenFiles write_tetgen(const Mesh& mesh, const WriteOptions& options) {
             face += '\n';
         }
     }
-    face += "# written by simplexkit\n";
+    const std::string stamp = std::string(set_stamp_prefix) + set_id(files) + "\n";
+    for (std::string* part : {&files.node, &files.ele, &files.face})
+        *part += stamp;
     return files;
 }
 
