@@ -1,0 +1,64 @@
+// Numbers stored as bytes, for the readers and writers of binary formats (STL, PLY): loading a
+// value of either byte order from a file's bytes, and appending one in little-endian order to a
+// writer's content (formats.hpp: binary content is bytes in the string).
+//
+// Loading does not check bounds: a reader checks that the bytes are there (ByteCursor::has)
+// before it loads, so that its message can say which record ran out.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+namespace sxk::io {
+
+// The T stored at `bytes` in little-endian order, or big-endian when `big_endian`.
+template <class T>
+T load_number(const char* bytes, bool big_endian = false) {
+    static_assert(std::is_arithmetic_v<T>);
+    std::array<char, sizeof(T)> copy;
+    std::memcpy(copy.data(), bytes, sizeof(T));
+    if (big_endian != (std::endian::native == std::endian::big))
+        std::reverse(copy.begin(), copy.end());
+    T value;
+    std::memcpy(&value, copy.data(), sizeof(T));
+    return value;
+}
+
+// Appends `value` to `out` in little-endian order.
+template <class T>
+void append_little_endian(std::string& out, T value) {
+    static_assert(std::is_arithmetic_v<T>);
+    std::array<char, sizeof(T)> copy;
+    std::memcpy(copy.data(), &value, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big)
+        std::reverse(copy.begin(), copy.end());
+    out.append(copy.data(), sizeof(T));
+}
+
+// A position in a file's bytes that knows how many are left.
+class ByteCursor {
+public:
+    explicit ByteCursor(std::string_view bytes) : m_bytes(bytes) {}
+    std::size_t offset() const { return m_offset; }
+    std::size_t left() const { return m_bytes.size() - m_offset; }
+    bool has(std::size_t n) const { return n <= left(); }
+    // The next n bytes (the caller checked has(n)), consumed.
+    const char* take(std::size_t n) {
+        const char* at = m_bytes.data() + m_offset;
+        m_offset += n;
+        return at;
+    }
+    std::string_view rest() const { return m_bytes.substr(m_offset); }
+
+private:
+    std::string_view m_bytes;
+    std::size_t m_offset = 0;
+};
+
+}  // namespace sxk::io
