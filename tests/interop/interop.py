@@ -315,7 +315,10 @@ class SxkReadsMeshio(Expectations):
         cell_data = {"label": ref.cell_data["medit:ref"], "gmsh:physical": ref.cell_data["medit:ref"],
                      "gmsh:geometrical": ref.cell_data["medit:ref"]}
         if name.endswith(".msh"):
-            mesh = meshio.Mesh(ref.points, ref.cells, cell_data={k: cell_data[k] for k in ("gmsh:physical", "gmsh:geometrical")})
+            # meshio's 4.1 writer needs each node's entity when there are several cell types
+            dim_tags = np.tile([3, 1], (len(ref.points), 1))
+            mesh = meshio.Mesh(ref.points, ref.cells, point_data={"gmsh:dim_tags": dim_tags},
+                               cell_data={k: cell_data[k] for k in ("gmsh:physical", "gmsh:geometrical")})
         else:
             mesh = meshio.Mesh(ref.points, ref.cells, cell_data={"label": cell_data["label"]})
         meshio.write(path(name), mesh, **options)
@@ -334,11 +337,44 @@ class SxkReadsMeshio(Expectations):
                 self.assertSameMesh(self.round_trip("meshio.vtk", binary=binary), labels_from("medit:ref"))
 
     def test_gmsh_every_version_and_encoding(self):
-        for fmt in ("gmsh22", "gmsh"):
-            for binary in (False, True):
-                with self.subTest(fmt=fmt, binary=binary):
-                    self.assertSameMesh(self.round_trip(f"meshio_{fmt}.msh", file_format=fmt, binary=binary),
-                                        labels_from("medit:ref"))
+        for binary in (False, True):
+            with self.subTest(fmt="gmsh22", binary=binary):
+                self.assertSameMesh(self.round_trip("meshio_gmsh22.msh", file_format="gmsh22", binary=binary),
+                                    labels_from("medit:ref"))
+
+    def test_gmsh41_of_tetrahedra(self):
+        # meshio 5's 4.1 writer gives each entity the physical tag of its cells when they share one
+        ref = reference()
+        tets = ref.get_cells_type("tetra")
+        for binary in (False, True):
+            with self.subTest(binary=binary):
+                mesh = meshio.Mesh(ref.points, [("tetra", tets)], point_data={"gmsh:dim_tags": np.tile([3, 1], (len(ref.points), 1))},
+                                   cell_data={"gmsh:physical": [np.full(len(tets), 4)],
+                                              "gmsh:geometrical": [np.ones(len(tets), dtype=int)]})
+                meshio.write(path("meshio41.msh"), mesh, file_format="gmsh", binary=binary)
+                counts = info(path("meshio41.msh"))
+                self.assertEqual(counts["elements"], len(tets))
+                self.assertEqual(counts["vertices"], len(ref.points))
+                self.assertEqual(counts["element_labels"], [4])
+
+    def test_gmsh41_with_entities_it_does_not_list_is_refused_as_gmsh_refuses_it(self):
+        # with triangles and tetrahedra, meshio 5 puts elements on entities its $Entities does
+        # not list; Gmsh 4.8 says "Unknown entity 7 of dimension 2", sxk the same
+        ref = reference()
+        mesh = meshio.Mesh(ref.points, ref.cells, point_data={"gmsh:dim_tags": np.tile([3, 1], (len(ref.points), 1))},
+                           cell_data={"gmsh:physical": ref.cell_data["medit:ref"],
+                                      "gmsh:geometrical": ref.cell_data["medit:ref"]})
+        meshio.write(path("meshio41_mixed.msh"), mesh, file_format="gmsh", binary=False)
+        run = sxk("info", path("meshio41_mixed.msh"), check=False)
+        self.assertEqual(run.returncode, 2)
+        self.assertIn("unknown entity (dimension 2, tag 7)", run.stderr)
+        gmsh.initialize()
+        gmsh.option.setNumber("General.Terminal", 0)
+        try:
+            with self.assertRaisesRegex(Exception, "Unknown entity 7 of dimension 2"):
+                gmsh.open(path("meshio41_mixed.msh"))
+        finally:
+            gmsh.finalize()
 
 
 class SxkReadsVtk(Expectations):
