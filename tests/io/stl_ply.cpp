@@ -690,6 +690,9 @@ TEST(PlyMalformed, AsciiData) {
                    Format::ply, "14: more data than the header declares");
     expect_refused(triangle_ply("ascii", "0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n"), Format::ply,
                    "13: element 1 has a repeated vertex");
+    expect_refused("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\n"
+                   "end_header\n3 0 1 2\n",
+                   Format::ply, "6: vertex index 0 out of range (there are no vertices)");
 }
 
 TEST(PlyMalformed, BinaryData) {

@@ -448,9 +448,10 @@ public:
         for (std::size_t i = 0; i < m_indices.size(); ++i) {
             const std::int64_t index = m_indices[i];
             if (index < 0 || index >= count) {
-                const std::string reason = "vertex index " + std::to_string(index) +
-                                           " out of range (0.." + std::to_string(count - 1) +
-                                           ")";
+                const std::string reason =
+                    "vertex index " + std::to_string(index) + " out of range " +
+                    (count == 0 ? std::string("(there are no vertices)")
+                                : "(0.." + std::to_string(count - 1) + ")");
                 const std::size_t line = cells.lines[i / 3];
                 fail(line, line == 0 ? "face " + std::to_string(i / 3 + 1) + ": " + reason
                                      : reason);
