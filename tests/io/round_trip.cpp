@@ -207,44 +207,7 @@ TEST(RoundTrip, StreamsReadWhatFilesHold) {
     EXPECT_TRUE(read.validate().ok());
 }
 
-TEST(RoundTrip, VtuHoldsPointsCellsAndQuality) {
-    const Mesh mesh = two_tetrahedra();
-    const auto path = scratch_dir() / "two.vtu";
-    write_mesh(mesh, path);
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string vtu = text.str();
-    EXPECT_NE(vtu.find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
-    EXPECT_NE(vtu.find("NumberOfPoints=\"5\" NumberOfCells=\"2\""), std::string::npos);
-    for (const char* name : {"\"connectivity\"", "\"offsets\"", "\"types\"", "\"label\"",
-                             "\"aspect_ratio\"", "\"radius_ratio\"", "\"min_angle\""})
-        EXPECT_NE(vtu.find(name), std::string::npos) << name;
-    // cells in positive orientation: A as 0 1 2 3, B = <0,2,1,4> = -<0,1,2,4> as 1 0 2 4
-    EXPECT_NE(vtu.find("          0 1 2 3\n          1 0 2 4\n"), std::string::npos);
-    EXPECT_NE(vtu.find("          10\n          10\n"), std::string::npos);
-    EXPECT_NE(vtu.find("          4\n          8\n"), std::string::npos);
-    EXPECT_EQ(vtu.substr(vtu.size() - 11), "</VTKFile>\n");
-
-    WriteOptions plain;
-    plain.quality_cell_data = false;
-    write_mesh(mesh, path, plain);
-    std::ifstream again(path);
-    std::stringstream text2;
-    text2 << again.rdbuf();
-    EXPECT_EQ(text2.str().find("aspect_ratio"), std::string::npos);
-    EXPECT_NE(text2.str().find("\"label\""), std::string::npos);
-}
-
-TEST(RoundTrip, VtuIsWriteOnly) {
-    std::istringstream in("<VTKFile/>");
-    try {
-        (void)read_mesh(in, Format::vtu, "x.vtu");
-        FAIL() << "read a .vtu";
-    } catch (const InputError& error) {
-        EXPECT_STREQ(error.what(), "x.vtu:0: .vtu files are written, not read");
-    }
-}
+// .vtu and .vtk: tests/io/vtk_formats.cpp
 
 TEST(RoundTrip, WriterRefusals) {
     const Mesh mesh = two_tetrahedra();

@@ -1,137 +1,165 @@
-// VTK XML UnstructuredGrid (.vtu), ASCII, write only: for looking at meshes in ParaView.
+// VTK XML UnstructuredGrid (.vtu) writer: for looking at meshes in ParaView, and read back by
+// vtu_read.cpp.
 //
-// Points are written in 3D (z = 0 for planar meshes), cells as VTK_TRIANGLE (5) or VTK_TETRA
-// (10) in positive orientation (VTK's tetra convention is ours: the fourth point lies on the
-// side the right-handed normal of the first three points points to, det[b-a, c-a, d-a] > 0).
-// Per-cell data, so ParaView can colour by label and quality:
-//   label          the element label
-//   aspect_ratio   thesis §3.2.3 aspect ratio (quality.hpp)
-//   radius_ratio   d * inradius / circumradius
-//   min_angle      smallest dihedral angle (tetrahedra) or angle (triangles), in degrees: the
-//                  unit people read thresholds in
-#include <algorithm>
+// Encodings (WriteOptions::encoding): standard writes every array into one appended block of raw
+// bytes, zlib-compressed as vtkZLibDataCompressor does (header_type UInt64); binary the same
+// uncompressed; ascii every array inline as text, numbers in shortest round-trip form. Byte order
+// is little-endian on every machine.
+//
+// Points are written in 3D (z = 0 for planar meshes). Cells: the elements as VTK_TETRA (10) or
+// VTK_TRIANGLE (5) in positive orientation (VTK's tetra convention is ours: the fourth point
+// lies on the side the right-handed normal of the first three points points to,
+// det[b-a, c-a, d-a] > 0), then every labelled face (Mesh::face_labels(): boundary faces
+// outward, cut faces included) as VTK_TRIANGLE, or VTK_LINE (3) for a triangle mesh, so that
+// the cut shows in ParaView. Cell data (vtk_arrays.hpp Grid):
+//   label          element label, or the face's label
+//   piece          face-connected component of the element (sxk/components.hpp); a face has
+//                  that of an element it belongs to
+//   aspect_ratio   thesis §3.2.3 aspect ratio (quality.hpp)      } with quality_cell_data;
+//   radius_ratio   d * inradius / circumradius                   } NaN for faces
+//   min_angle_deg  smallest dihedral angle (tetrahedra) or angle (triangles), in degrees
+// Point data `displacement` (deformed - reference) when any vertex moved. The active scalars
+// are those that show something (Grid::active_scalars).
+#include <bit>
+#include <cstring>
 
 #include "formats.hpp"
-#include "sxk/quality.hpp"
 #include "text.hpp"
-#include "writing.hpp"
+#include "vtk_arrays.hpp"
 
 namespace sxk::io {
 
 namespace {
 
-void open_array(std::string& out, const char* type, const char* name, int components = 1) {
-    out += "        <DataArray type=\"";
-    out += type;
-    out += "\" Name=\"";
-    out += name;
-    out += '"';
-    if (components != 1) {
-        out += " NumberOfComponents=\"";
-        append_number(out, components);
-        out += '"';
-    }
-    out += " format=\"ascii\">\n";
-}
+struct Writer {
+    Encoding encoding;
+    std::span<const std::int64_t> cell_ends;  // per_line == 0: one cell per line
+    std::string out;
+    std::string appended;  // the bytes after AppendedData's '_'
 
-void close_array(std::string& out) {
-    out += "        </DataArray>\n";
-}
+    // Writes a DataArray element and its values (inline text, or into the appended block).
+    template <typename T>
+    void array(const char* indent, std::string_view type, std::string_view name,
+               std::span<const T> values, int components, std::size_t per_line) {
+        out += indent;
+        out += "<DataArray type=\"";
+        out += type;
+        out += "\" Name=\"";
+        out += name;
+        out += '"';
+        if (components != 1) {
+            out += " NumberOfComponents=\"";
+            append_number(out, components);
+            out += '"';
+        }
+        if (encoding == Encoding::ascii) {
+            out += " format=\"ascii\">\n";
+            std::size_t cell = 0;
+            const auto line_ends_at = [&](std::size_t i) {
+                if (per_line != 0)
+                    return i % per_line == per_line - 1;
+                if (static_cast<std::int64_t>(i) + 1 != cell_ends[cell])
+                    return false;
+                ++cell;
+                return true;
+            };
+            bool line_start = true;
+            for (std::size_t i = 0; i < values.size(); ++i) {
+                if (line_start) {
+                    out += indent;
+                    out += "  ";
+                } else {
+                    out += ' ';
+                }
+                if constexpr (std::is_floating_point_v<T>)
+                    append_number(out, static_cast<double>(values[i]));
+                else
+                    append_number(out, static_cast<std::int64_t>(values[i]));
+                line_start = line_ends_at(i) || i + 1 == values.size();
+                if (line_start)
+                    out += '\n';
+            }
+            out += indent;
+            out += "</DataArray>\n";
+            return;
+        }
+        out += " format=\"appended\" offset=\"";
+        append_number(out, appended.size());
+        out += "\"/>\n";
+        std::string bytes;
+        if constexpr (std::endian::native == std::endian::little) {
+            bytes.assign(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+        } else {
+            bytes.reserve(values.size() * sizeof(T));
+            for (const T& value : values)
+                vtk::append_binary<T>(bytes, value, false);
+        }
+        const std::span<const unsigned char> data(
+            reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+        if (encoding == Encoding::binary) {
+            vtk::append_binary<std::uint64_t>(appended, bytes.size(), false);
+            appended += bytes;
+        } else {
+            vtk::append_zlib_blocks(appended, data);
+        }
+    }
+};
 
 }  // namespace
 
 std::string write_vtu(const Mesh& mesh, const WriteOptions& options) {
-    const std::span<const Point> positions = chosen_positions(mesh, options);
-    const int k = mesh.element_vertex_count();
-    std::string out;
-    out.reserve(mesh.vertex_count() * 64 + mesh.element_count() * 96);
+    const vtk::Grid grid = vtk::grid_of(mesh, options);
+    Writer w{options.encoding, grid.offsets, {}, {}};
+    std::string& out = w.out;
+    out.reserve(options.encoding == Encoding::ascii
+                    ? mesh.vertex_count() * 64 + grid.cell_count() * 96
+                    : 4096);
     out +=
         "<?xml version=\"1.0\"?>\n"
         "<!-- written by simplexkit -->\n"
-        "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-        "  <UnstructuredGrid>\n"
-        "    <Piece NumberOfPoints=\"";
-    append_number(out, mesh.vertex_count());
+        "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\"";
+    if (options.encoding == Encoding::standard)
+        out += " compressor=\"vtkZLibDataCompressor\"";
+    out += ">\n  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"";
+    append_number(out, grid.points.size());
     out += "\" NumberOfCells=\"";
-    append_number(out, mesh.element_count());
-    out += "\">\n      <Points>\n";
-    open_array(out, "Float64", "Points", 3);
-    for (const Point& p : positions) {
-        out += "          ";
-        append_xyz(out, p);
-        out += '\n';
+    append_number(out, grid.cell_count());
+    out += "\">\n";
+    const char* indent = "        ";
+    if (!grid.displacement.empty()) {
+        out += "      <PointData Vectors=\"displacement\">\n";
+        w.array<double>(indent, "Float64", "displacement", grid.displacement, 3, 3);
+        out += "      </PointData>\n";
     }
-    close_array(out);
+    out += "      <CellData Scalars=\"";
+    out += grid.active_scalars;
+    out += "\">\n";
+    w.array<std::int32_t>(indent, "Int32", "label", grid.label, 1, 1);
+    w.array<std::int32_t>(indent, "Int32", "piece", grid.piece, 1, 1);
+    if (grid.quality) {
+        // degenerate elements and faces give NaN; VTK's and meshio's ASCII parsers read "nan"
+        w.array<double>(indent, "Float64", "aspect_ratio", grid.aspect_ratio, 1, 1);
+        w.array<double>(indent, "Float64", "radius_ratio", grid.radius_ratio, 1, 1);
+        w.array<double>(indent, "Float64", "min_angle_deg", grid.min_angle_deg, 1, 1);
+    }
+    out += "      </CellData>\n      <Points>\n";
+    // a Point is three doubles without padding: the positions are one array of coordinates
+    static_assert(sizeof(Point) == 3 * sizeof(double));
+    const std::span<const double> coordinates(reinterpret_cast<const double*>(grid.points.data()),
+                                              3 * grid.points.size());
+    w.array<double>(indent, "Float64", "Points", coordinates, 3, 3);
     out += "      </Points>\n      <Cells>\n";
-    open_array(out, "Int64", "connectivity");
-    for (ElementId t : elements(mesh)) {
-        const auto v = oriented_vertices(mesh.simplex(t));
-        out += "          ";
-        for (int j = 0; j < k; ++j) {
-            if (j)
-                out += ' ';
-            append_number(out, v[static_cast<std::size_t>(j)]);
-        }
-        out += '\n';
+    w.array<std::int64_t>(indent, "Int64", "connectivity", grid.connectivity, 1, 0);
+    w.array<std::int64_t>(indent, "Int64", "offsets", grid.offsets, 1, 1);
+    w.array<std::uint8_t>(indent, "UInt8", "types", grid.types, 1, 1);
+    out += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
+    if (options.encoding != Encoding::ascii) {
+        out += "  <AppendedData encoding=\"raw\">\n   _";
+        out += w.appended;
+        out += "\n  </AppendedData>\n";
     }
-    close_array(out);
-    open_array(out, "Int64", "offsets");
-    for (std::size_t i = 1; i <= mesh.element_count(); ++i) {
-        out += "          ";
-        append_number(out, i * static_cast<std::size_t>(k));
-        out += '\n';
-    }
-    close_array(out);
-    open_array(out, "UInt8", "types");
-    const char* type = k == 4 ? "          10\n" : "          5\n";
-    for (std::size_t i = 0; i < mesh.element_count(); ++i)
-        out += type;
-    close_array(out);
-    out += "      </Cells>\n      <CellData Scalars=\"label\">\n";
-    open_array(out, "Int32", "label");
-    for (ElementId t : elements(mesh)) {
-        out += "          ";
-        append_number(out, mesh.label(t));
-        out += '\n';
-    }
-    close_array(out);
-    if (options.quality_cell_data) {
-        const std::size_t n = mesh.element_count();
-        std::vector<double> aspect(n), radius(n), angle(n);
-        std::size_t i = 0;
-        std::vector<Point> points(static_cast<std::size_t>(k));
-        for (ElementId t : elements(mesh)) {
-            const Simplex& s = mesh.simplex(t);
-            for (int j = 0; j < k; ++j)
-                points[static_cast<std::size_t>(j)] = positions[s.vertex(j)];
-            aspect[i] = aspect_ratio(points);
-            radius[i] = radius_ratio(points);
-            double smallest = 0;
-            if (k == 4) {
-                const auto angles = dihedral_angles(points);
-                smallest = *std::min_element(angles.begin(), angles.end());
-            } else {
-                const auto angles = triangle_angles(points);
-                smallest = *std::min_element(angles.begin(), angles.end());
-            }
-            angle[i] = smallest * 180.0 / pi;
-            ++i;
-        }
-        auto array = [&](const char* name, const std::vector<double>& values) {
-            open_array(out, "Float64", name);
-            for (double value : values) {
-                out += "          ";
-                // degenerate elements can give nan; VTK's ASCII parser reads "nan"
-                append_number(out, value);
-                out += '\n';
-            }
-            close_array(out);
-        };
-        array("aspect_ratio", aspect);
-        array("radius_ratio", radius);
-        array("min_angle", angle);
-    }
-    out += "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    out += "</VTKFile>\n";
     return out;
 }
 
