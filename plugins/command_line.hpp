@@ -246,20 +246,38 @@ inline bool save_mesh_for_command(const Mesh& mesh, const std::string& file, std
 
 // ---- tool commands ----------------------------------------------------------------------------
 // `--undo N|all` of the commands that replay a recorded path through a tool session (`cut snap`,
-// `cut delaunay`): after the replay, the last N steps are undone through the session, so that
-// with `all` OUT is IN as the writer writes it.
+// `cut delaunay`, `needle`): after the replay, the last N steps are undone through the session, so
+// that with `all` OUT is IN as the writer writes it.
+
+// What `--undo` asks for: every step, or a count.
+struct UndoRequest {
+    bool all = false;
+    std::size_t count = 0;
+};
+
+// `all`, or N written as decimal digits only; nullopt for anything else. One reading for the
+// option's check and for undo_steps: the check once took any whole-valued number ("20e-1",
+// "1e3") and undo_steps then read the leading digits with std::stoull, undoing 20 steps for
+// "20e-1" and 1 for "1e3" (issue 47).
+inline std::optional<UndoRequest> parse_undo(std::string_view text) {
+    if (text == "all") return UndoRequest{true, 0};
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+    std::size_t count = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), count);
+    if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;  // beyond size_t
+    return UndoRequest{false, count};
+}
+
+inline std::string not_an_undo_count(std::string_view text) {
+    return "'" + std::string(text) + "' is neither a whole number >= 0 nor 'all'";
+}
+
 inline void add_undo_option(CLI::App& app, std::string& undo) {
     app.add_option("--undo", undo,
-                   "After the replay, undo the last N steps (N or 'all': OUT is then IN as the writer writes it)")
+                   "After the replay, undo the last N steps (N in decimal digits, or 'all': OUT is then IN as the "
+                   "writer writes it)")
         ->check(CLI::Validator(
-            [](std::string& text) {
-                if (text == "all") return std::string();
-                const auto n = parse_finite_number(text);
-                if (!n || *n < 0 || *n != static_cast<double>(static_cast<long long>(*n)))
-                    return "'" + text + "' is neither a whole number >= 0 nor 'all'";
-                return std::string();
-            },
-            "N|all"));
+            [](std::string& text) { return parse_undo(text) ? std::string() : not_an_undo_count(text); }, "N|all"));
 }
 
 // Whitespace-separated words: an option that carries another command's options in one word
@@ -290,8 +308,13 @@ inline std::optional<Refusal> parse_tool_words(CLI::App& app, std::span<const st
 inline std::variant<std::size_t, int> undo_steps(ToolSession& session, const std::string& undo,
                                                  const std::string& name, std::ostream& err) {
     if (undo.empty()) return std::size_t{0};
+    const std::optional<UndoRequest> request = parse_undo(undo);
+    if (!request) {  // add_undo_option's check refuses it first; a caller without it gets the same words
+        err << "sxk: " << name << ": --undo: " << not_an_undo_count(undo) << '\n';
+        return 2;
+    }
     const std::size_t kept = session.steps();
-    const std::size_t count = undo == "all" ? kept : static_cast<std::size_t>(std::stoull(undo));
+    const std::size_t count = request->all ? kept : request->count;
     if (count > kept) {
         err << "sxk: " << name << ": --undo " << undo << ": only " << kept << " steps were taken\n";
         return 2;

@@ -1,11 +1,13 @@
 // A body from `sxk deform`'s options (body_setup.hpp).
 #include "body_setup.hpp"
 
+#include <cstdint>
 #include <string_view>
 #include <utility>
 
 #include "command_line.hpp"
 #include "load_shares.hpp"
+#include "sxk/components.hpp"
 
 namespace sxk::elasticity {
 
@@ -58,7 +60,7 @@ void add_body_options(CLI::App& app, BodySetup& setup) {
         ->check(number_in(0, true, 1, false, "[0, 1)"))
         ->capture_default_str();
     app.add_option("--max-iterations", setup.max_iterations, "Most CG iterations before giving up")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->check(whole_number_in(1, 100000000))
         ->capture_default_str();
     app.add_option("--stop", setup.stop,
                    "What --tol is relative to: reactions (the loads and the reactions that hold the fixed "
@@ -127,6 +129,36 @@ std::optional<std::vector<Selected>> parse_all(const std::string& option,
         all.push_back(std::move(*s));
     }
     return all;
+}
+
+// A face-connected component (sxk/components.hpp) with a load on some vertex and no vertex held.
+struct FreePart {
+    std::size_t component = 0;  // numbered as connected_components numbers them
+    std::size_t elements = 0;
+};
+
+// The first such component, if any. Such a part has no equilibrium: CG chases it off to infinity
+// (issue 47 saw |r| = 2.3e18 on a free body among fixed ones) instead of naming it. O(n), once
+// at set-up: the whole-mesh scan a static solve affords, and a tool's session pays before its
+// first step (the snap cutter holds the pieces it cuts loose itself, thesis §3.3).
+std::optional<FreePart> loaded_free_part(const Mesh& mesh, const ElasticBody& body) {
+    const Components components = connected_components(mesh);
+    if (components.count < 2) return std::nullopt;  // "nothing holds the body" is parse_body_setup's
+    std::vector<char> held(components.count, 0), pushed(components.count, 0);
+    std::vector<std::size_t> size(components.count, 0);
+    for (const ElementId t : elements(mesh)) {
+        const std::uint32_t c = components.element_component[t];
+        ++size[c];
+        for (const VertexId v : mesh.simplex(t).vertices()) {
+            if (v >= body.vertex_count()) continue;
+            held[c] |= body.freedom(v) != Freedom::free;
+            const Vector3 f = body.force(v);
+            pushed[c] |= f[0] != 0 || f[1] != 0 || f[2] != 0;
+        }
+    }
+    for (std::size_t c = 0; c < components.count; ++c)
+        if (pushed[c] && !held[c]) return FreePart{c, size[c]};
+    return std::nullopt;
 }
 
 }  // namespace
@@ -221,6 +253,14 @@ std::optional<BuiltBody> build_body(const Mesh& mesh, const std::string& name, c
     for (VertexId v = 0; v < result.body->vertex_count(); ++v) {
         const Vector3 f = result.body->force(v);
         result.loaded += f[0] != 0 || f[1] != 0 || f[2] != 0;
+    }
+    if (const std::optional<FreePart> free = loaded_free_part(mesh, *result.body)) {
+        err << "sxk: deform: component " << free->component << " of " << name << " (" << free->elements
+            << (free->elements == 1 ? " element" : " elements")
+            << ", as `sxk components` numbers them) is loaded and nothing holds it (no --fix or --displace selects "
+               "a vertex of it), so it can move freely and the problem is singular; fix at least three "
+               "non-collinear vertices of every connected part\n";
+        return std::nullopt;
     }
     return result;
 }

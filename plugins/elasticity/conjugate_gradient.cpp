@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "solve.hpp"
 
@@ -49,7 +50,28 @@ Outcome<Done> prepare_solve(ElasticBody& body) {
             "elasticity: no vertex is constrained, so the body can move freely and its stiffness "
             "matrix is "
             "singular; fix at least three non-collinear vertices of every connected part"};
-    return body.refresh();
+    if (auto fresh = body.refresh(); !fresh)
+        return fresh;
+    return check_loads(body.forces().norm());
+}
+
+Outcome<Done> check_loads(double norm) {
+    if (std::isfinite(norm))
+        return Done{};
+    return Refusal{RefusalCode::bad_argument,
+                   "elasticity: the loads are too large: their norm overflows a double, so no residual can be "
+                   "measured against them; scale the loads, or the units, down"};
+}
+
+Outcome<Done> check_finite(const SolveReport& report) {
+    if (std::isfinite(report.residual) && std::isfinite(report.threshold))
+        return Done{};
+    std::ostringstream why;
+    why << "elasticity: the residual is not finite after " << report.iterations << " iterations (|r| = "
+        << report.residual << ", needed " << report.threshold
+        << "): the loads or the prescribed displacements are too large for double precision; scale them, or the "
+           "units, down";
+    return Refusal{RefusalCode::bad_argument, why.str()};
 }
 
 }  // namespace detail
@@ -99,7 +121,7 @@ namespace detail {
 
 bool Relaxation::finish_run(std::chrono::steady_clock::time_point start) {
     m_report.residual = std::sqrt(m_rr);
-    m_report.converged = m_report.residual <= m_report.threshold;
+    m_report.converged = reached(m_report.residual, m_report.threshold);
     m_report.seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return m_report.converged;

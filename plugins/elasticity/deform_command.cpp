@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -94,14 +95,57 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const bool planar = built->planar;
     const Model model = built->model;
     const std::size_t loaded = built->loaded;
+    // --json: one object whatever the verdict (docs/cli.md "sxk deform"): the setup, then the
+    // solve's figures when it ran, `converged`, and `refusal` when the solve was refused
+    auto json_of = [&](const SolveReport* solved, const Refusal* refusal) {
+        nlohmann::ordered_json json;
+        json["file"] = o.input;
+        json["output"] = o.output;
+        json["material"] = {{"model", o.body.material}, {"young", o.body.young}, {"poisson", o.body.poisson}};
+        if (planar)
+            json["thickness"] = body->thickness();
+        json["share"] = o.body.share;
+        json["elements"] = mesh->element_count();
+        json["fixed"] = body->constrained_count();
+        json["loaded"] = loaded;
+        json["tolerance"] = o.body.tolerance;
+        if (solved) {
+            json["iterations"] = solved->iterations;
+            json["evaluations"] = solved->evaluations;
+        }
+        json["converged"] = solved != nullptr && solved->converged;
+        if (solved) {
+            json["residual"] = solved->residual;
+            json["threshold"] = solved->threshold;
+            json["energy"] = solved->energy;
+            json["seconds"] = solved->seconds;
+        }
+        if (refusal)
+            json["refusal"] = {{"code", to_string(refusal->code)}, {"reason", refusal->reason}};
+        return json;
+    };
+    // exit 1, nothing written: `why` on stderr, and the JSON object on stdout with --json
+    auto refuse = [&](const std::string& why, const SolveReport* solved, const Refusal* refusal) {
+        err << "sxk: " << o.input << ":0: " << why << "; nothing written\n";
+        if (o.json) {
+            nlohmann::ordered_json json = json_of(solved, refusal);
+            if (solved)
+                json["history"] = solved->history;
+            out << json.dump(2) << '\n';
+        }
+        return 1;
+    };
     const auto report =
         solve(*body, {.tolerance = o.body.tolerance,
                       .max_iterations = o.body.max_iterations,
                       .stop = o.body.stop == "external" ? StopCriterion::external_force : StopCriterion::with_reactions,
                       .rounding = o.body.rounding});
     if (!report) {
-        err << "sxk: " << o.input << ":0: " << report.reason() << '\n';
-        return 2;
+        // a refused solve is a refused operation (exit 1, docs/cli.md): loads whose norm
+        // overflows, a residual that is not finite, displacements that invert an element even
+        // in the linear answer
+        const Refusal refusal = report.refusal();
+        return refuse(refusal.reason, nullptr, &refusal);
     }
     if (!o.plot.empty()) {
         // drawn before the verdict: a solve that did not converge is the one worth looking at
@@ -127,15 +171,14 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         }
     }
     if (!report->converged) {
-        err << "sxk: " << o.input << ":0: " << (model == Model::linear ? "CG" : "nonlinear CG")
-            << " did not converge in " << report->iterations
-            << " iterations (|r| = " << report->residual << ", needed " << report->threshold
-            << "); nothing written\n";
-        return 1;
+        std::ostringstream why;
+        why << (model == Model::linear ? "CG" : "nonlinear CG") << " did not converge in " << report->iterations
+            << " iterations (|r| = " << report->residual << ", needed " << report->threshold << ")";
+        return refuse(why.str(), &*report, nullptr);
     }
     if (auto written = body->write_deformed(*mesh); !written) {
-        err << "sxk: " << o.input << ":0: " << written.reason() << "; nothing written\n";
-        return 1;
+        const Refusal refusal = written.refusal();
+        return refuse(refusal.reason, &*report, &refusal);
     }
     if (!save_mesh_for_command(*mesh, o.output, err))
         return 1;
@@ -150,24 +193,7 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         }
     }
     if (o.json) {
-        nlohmann::ordered_json json;
-        json["file"] = o.input;
-        json["output"] = o.output;
-        json["material"] = {{"model", o.body.material}, {"young", o.body.young}, {"poisson", o.body.poisson}};
-        if (planar)
-            json["thickness"] = body->thickness();
-        json["share"] = o.body.share;
-        json["elements"] = mesh->element_count();
-        json["fixed"] = body->constrained_count();
-        json["loaded"] = loaded;
-        json["tolerance"] = o.body.tolerance;
-        json["iterations"] = report->iterations;
-        json["evaluations"] = report->evaluations;
-        json["converged"] = report->converged;
-        json["residual"] = report->residual;
-        json["threshold"] = report->threshold;
-        json["energy"] = report->energy;
-        json["seconds"] = report->seconds;
+        nlohmann::ordered_json json = json_of(&*report, nullptr);
         const Vector3 u = body->displacement(largest);
         json["largest_displacement"] = {
             {"vertex", largest}, {"length", largest_norm}, {"vector", {u[0], u[1], u[2]}}};

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -36,6 +37,7 @@ struct RelaxReport {
     bool converged = false;      // the residual reached the stop criterion (eq. 6.9)
     double residual = 0, threshold = 0;
     bool shown = false;  // the deformed positions were written (not when they would invert an element)
+    std::optional<Refusal> not_shown = std::nullopt;  // when not shown: why (ElasticBody::write_deformed's refusal)
     double seconds = 0;
     // relax_near: the vertices solved for, and the elements around them (0, 0: the whole body)
     std::size_t region_vertices = 0, region_elements = 0;
@@ -114,8 +116,8 @@ public:
 
 struct ElasticityService {
     static constexpr std::string_view service_id = "sxk.elasticity";
-    static constexpr std::uint32_t service_version = 4;  // 2: vertices a tool holds; 3: relax_near, relax_far;
-                                                          // 4: follow_far_field
+    static constexpr std::uint32_t service_version = 5;  // 2: vertices a tool holds; 3: relax_near, relax_far;
+                                                          // 4: follow_far_field; 5: RelaxReport::not_shown
 
     // A simulation of `mesh` (which must stay where it is while the simulation lives) set up from
     // `sxk deform`'s options; refuses bad options and empty selections with `sxk deform`'s

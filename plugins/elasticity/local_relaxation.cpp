@@ -205,6 +205,8 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
         f.segment<3>(3 * static_cast<Eigen::Index>(i)) = body.forces().segment<3>(at);
     }
     const double external = f.head(region).norm();
+    if (auto loads = detail::check_loads(external); !loads)  // as prepare_solve refuses the whole body's
+        return loads.refusal();
     // r = P(f - K u) over the region, and the threshold of eq. 6.9 with its reactions
     auto residual = [&] {
         multiply(u, ku);
@@ -234,7 +236,9 @@ Outcome<LocalSolveReport> LocalRelaxation::solve(ElasticBody& body, std::span<co
                                                allowed, residual, precondition))
         solve.history.push_back(std::sqrt(rr));
     solve.residual = std::sqrt(rr);
-    solve.converged = solve.residual <= solve.threshold;
+    solve.converged = detail::reached(solve.residual, solve.threshold);
+    if (auto finite = detail::check_finite(solve); !finite)
+        return finite.refusal();  // the body keeps its displacements: these are not a solution
     auto body_u = body.displacements();
     for (std::size_t i = 0; i < m_region; ++i)
         body_u.segment<3>(3 * static_cast<Eigen::Index>(m_vertices[i])) =

@@ -50,7 +50,9 @@ public:
         auto run = [&](auto relaxation) -> Outcome<Done> {
             if (!relaxation) return relaxation.refusal();
             relaxation->run(iterations);
-            result = report_of(relaxation->report());
+            const SolveReport solved = relaxation->report();
+            if (auto finite = detail::check_finite(solved); !finite) return finite;  // nothing to show
+            result = report_of(solved);
             return Done{};
         };
         ElasticBody& body = *m_built.body;
@@ -58,7 +60,7 @@ public:
                                                                  : run(NonlinearRelaxation::start(body, options));
         if (!ran) return ran.refusal().prefixed("relax: ");
         m_total += result.iterations;
-        result.shown = body.write_deformed(m_mesh).ok();
+        show(result, body.write_deformed(m_mesh));
         result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
@@ -183,6 +185,11 @@ private:
         options.max_iterations = std::min(iterations, m_options.max_iterations);
         return options;
     }
+    // Whether write_deformed showed the solution, and why not.
+    static void show(RelaxReport& report, const Outcome<Done>& written) {
+        report.shown = written.ok();
+        if (!written) report.not_shown = written.refusal();
+    }
     // What a relax call reports of a solve (its time and what it wrote: the caller's).
     static RelaxReport report_of(const SolveReport& solve) {
         RelaxReport report;
@@ -204,7 +211,7 @@ private:
         result.region_vertices = local->region_vertices;
         result.region_elements = local->elements;
         m_total += result.iterations;
-        result.shown = body.write_deformed(m_mesh, solver.region()).ok();
+        show(result, body.write_deformed(m_mesh, solver.region()));
         // the rim held the region: remember where it is out of balance, for relax_far
         if (m_follow_far_field) {
             if (Outcome<Done> kept = remember_rim(solver.rim(), max_vertices); !kept) return kept.refusal();

@@ -55,10 +55,26 @@ struct SolveReport {
 // from the body's current displacements (a warm start; constrained vertices keep their
 // prescribed values). A body without any constrained vertex is refused (bad_argument): its
 // stiffness matrix is singular. Not converging within max_iterations is not a refusal: the
-// report says converged = false and the body holds the last iterate.
+// report says converged = false and the body holds the last iterate. Loads whose norm overflows,
+// and a residual or threshold that is not finite at the end, are refused (bad_argument:
+// detail::check_loads, detail::check_finite).
 Outcome<SolveReport> solve_linear_cg(ElasticBody& body, const SolveOptions& options = {});
 
 namespace detail {
+// Whether |r| = `residual` meets `threshold`: both finite and |r| <= threshold. A comparison of
+// infinities (inf <= inf) or with NaN proves nothing about the solution.
+inline bool reached(double residual, double threshold) {
+    return std::isfinite(residual) && std::isfinite(threshold) && residual <= threshold;
+}
+// The loads' norm `norm` (the whole body's, or a local solve's region's) is finite: prepare_solve's
+// last check, refused as it says.
+Outcome<Done> check_loads(double norm);
+// A solve's arithmetic stayed finite: the report's residual and threshold are finite numbers.
+// Otherwise the loads or the prescribed displacements were too large for doubles (K u or the
+// reactions overflowed), and the displacements are not a solution: refused (bad_argument) with
+// the iterations and both numbers.
+Outcome<Done> check_finite(const SolveReport& report);
+
 // What the linear and the nonlinear relaxation share: the body, the options, the report so far,
 // and when they are done.
 class Relaxation {
@@ -95,6 +111,8 @@ Outcome<SolveReport> solve_with(ElasticBody& body, const SolveOptions& options) 
         return relaxation.refusal();
     relaxation->run(options.max_iterations);
     SolveReport report = relaxation->report();
+    if (auto finite = check_finite(report); !finite)
+        return finite.refusal();
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
@@ -203,7 +221,10 @@ bool cg_iteration(Unknowns&& u, Eigen::VectorXd& r, Eigen::VectorXd& d, Eigen::V
 }
 
 // What both solvers check first: some vertex is constrained (else bad_argument: K is singular),
-// and the body is in step with its mesh (ElasticBody::refresh).
+// the body is in step with its mesh (ElasticBody::refresh), and the loads have a finite norm
+// (else bad_argument: a load of 1e200 shared by 81 vertices is finite at every vertex, but |f|
+// overflows, the stop threshold is inf, and "|r| <= threshold" held at once with |r| = inf:
+// issue 47 saw "CG: 0 iterations, |r| inf <= inf" and the input written back unchanged).
 Outcome<Done> prepare_solve(ElasticBody& body);
 // The stop threshold of `options` in the current state, the elastic forces (K u) being `ku` (the
 // reactions are computed only for the criterion that uses them).

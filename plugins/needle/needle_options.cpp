@@ -44,22 +44,22 @@ void add_needle_options(CLI::App& app, Options& options, std::string* deform) {
     app.add_option("--rearrangements", options.rearrangements,
                    "Solves per step: after each, the nodes' stick/slip grips are rearranged, and a change "
                    "is solved again, at most this many times (the thesis' loop: 1)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}))
+        ->check(whole_number_in(1, 1000000))
         ->capture_default_str();
     app.add_option("--iterations", options.iterations, "CG iterations per solve, at most (a frame's budget)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->check(whole_number_in(1, 100000000))
         ->capture_default_str();
     app.add_option("--local", options.local_vertices,
                    "Solve only around the needle, at most this many vertices (its nodes and their neighbours "
                    "ring by ring), the rest of the body held: a step costs the same on any mesh size, the far "
                    "field lags (0: the whole body every step, as the thesis)")
-        ->check(CLI::Range(std::size_t{0}, std::size_t{100000000}))
+        ->check(whole_number_in(0, 100000000))
         ->capture_default_str();
     app.add_option("--far", options.far_vertices,
                    "With --local: after each step's solve, one more block of at most this many vertices where "
                    "the far field is most out of balance, so that it follows the needle over the steps (0: it "
                    "waits for --settle)")
-        ->check(CLI::Range(std::size_t{0}, std::size_t{100000000}))
+        ->check(whole_number_in(0, 100000000))
         ->capture_default_str();
 }
 

@@ -45,6 +45,7 @@ nlohmann::ordered_json to_json(const CutStepReport& r) {
         relax["pieces_held"] = r.pieces_held;
         relax["region_vertices"] = r.relax_region_vertices;
         relax["far_vertices"] = r.relax_far_vertices;
+        if (!r.relax_not_shown.empty()) relax["not_shown"] = r.relax_not_shown;
         if (!r.relax_refusal.empty()) relax["refusal"] = r.relax_refusal;
         json["relax"] = relax;
     }
@@ -118,11 +119,22 @@ nlohmann::ordered_json to_json(const ReplayRecord& record) {
         json["steps"].push_back(step);
     }
     const Totals t = totals_of(record);
-    if (record.deformed)
-        json["initial_relax"] = {{"iterations", record.initial_relax.iterations},
-                                 {"converged", record.initial_relax.converged},
-                                 {"residual", record.initial_relax.residual},
-                                 {"seconds", record.initial_relax.seconds}};
+    if (record.deformed) {
+        nlohmann::ordered_json initial;
+        if (record.initial_solved) {
+            initial["iterations"] = record.initial_relax.iterations;
+            initial["converged"] = record.initial_relax.converged;
+            initial["residual"] = record.initial_relax.residual;
+            initial["shown"] = record.initial_relax.shown;
+            initial["seconds"] = record.initial_relax.seconds;
+        } else {
+            initial["converged"] = false;
+        }
+        if (record.initial_refusal)
+            initial["refusal"] = {{"code", to_string(record.initial_refusal->code)},
+                                  {"reason", record.initial_refusal->reason}};
+        json["initial_relax"] = initial;
+    }
     nlohmann::ordered_json summary;
     summary["steps"] = record.steps.size();
     summary["undone"] = record.undone;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <ostream>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct ReplayRecord {
     std::vector<ReplayStep> steps;
     bool deformed = false;                    // --deform: a simulation ran
     elasticity::RelaxReport initial_relax;    // its solve before the first step
+    bool initial_solved = false;              // initial_relax holds the solve's figures (not refused)
+    // why the cut did not start: the solve before it was refused, or its shape could not be shown
+    // (the JSON's initial_relax.refusal; the command then exits 1 and writes nothing)
+    std::optional<Refusal> initial_refusal;
     std::size_t undone = 0;
     std::size_t elements_before = 0, elements_after = 0;
     std::size_t vertices_before = 0, vertices_after = 0;  // vertices in some element

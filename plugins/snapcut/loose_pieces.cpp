@@ -15,7 +15,12 @@ namespace {
 // cut's rim: the two sides of a cut that separates nothing meet there at once, and the race below
 // runs only when the seeds are in several groups (on the 1.2M femur the searches' meeting around
 // the rim cost 0.28 ms per step, docs/performance.md "snapcut").
-std::vector<std::vector<ElementId>> seed_groups(const Mesh& mesh, std::span<const ElementId> seeds) {
+struct SeedGroups {
+    std::vector<std::vector<ElementId>> groups;
+    std::unordered_map<VertexId, std::uint32_t> group_of_vertex;  // a vertex of some seed -> its group
+};
+
+SeedGroups seed_groups(const Mesh& mesh, std::span<const ElementId> seeds) {
     std::vector<ElementId> elements(seeds.begin(), seeds.end());
     std::sort(elements.begin(), elements.end());
     elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
@@ -32,19 +37,47 @@ std::vector<std::vector<ElementId>> seed_groups(const Mesh& mesh, std::span<cons
             const auto [found, fresh] = first_with.emplace(v, i);
             if (!fresh) parent[root(found->second)] = root(i);
         }
-    std::vector<std::vector<ElementId>> groups;
-    std::unordered_map<std::uint32_t, std::size_t> group_of;  // root -> its group
+    SeedGroups result;
+    std::unordered_map<std::uint32_t, std::uint32_t> group_of;  // root -> its group
     for (std::uint32_t i = 0; i < elements.size(); ++i) {
-        const auto [found, fresh] = group_of.emplace(root(i), groups.size());
-        if (fresh) groups.emplace_back();
-        groups[found->second].push_back(elements[i]);
+        const auto [found, fresh] = group_of.emplace(root(i), static_cast<std::uint32_t>(result.groups.size()));
+        if (fresh) result.groups.emplace_back();
+        result.groups[found->second].push_back(elements[i]);
     }
-    return groups;
+    for (const auto& [v, seed] : first_with) result.group_of_vertex.emplace(v, group_of.at(root(seed)));
+    return result;
+}
+
+// The groups' bodies, as a union-find forest over the n groups and one more (n) whose roots name
+// the bodies: groups joined by a pair of cut nodes (an original and its copy, whose
+// stars were one before the dissection) lie on one body as it was before the step. Groups that
+// no pair reaches (a degeneracy collapse may have removed both ends' elements from the seeds)
+// are put together in one body, the rule before bodies were told apart.
+std::vector<std::uint32_t> bodies_of(const SeedGroups& seeds, std::span<const std::pair<VertexId, VertexId>> cut_pairs) {
+    const std::size_t n = seeds.groups.size();
+    std::vector<std::uint32_t> parent(n + 1);  // n: the body of the groups no pair reaches
+    for (std::uint32_t i = 0; i <= n; ++i) parent[i] = i;
+    auto root = [&](std::uint32_t s) {
+        while (parent[s] != s) s = parent[s] = parent[parent[s]];
+        return s;
+    };
+    std::vector<char> reached(n, 0);
+    for (const auto& [original, copy] : cut_pairs) {
+        const auto a = seeds.group_of_vertex.find(original), b = seeds.group_of_vertex.find(copy);
+        if (a == seeds.group_of_vertex.end() || b == seeds.group_of_vertex.end()) continue;
+        reached[a->second] = reached[b->second] = 1;
+        parent[root(a->second)] = root(b->second);
+    }
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (!reached[i]) parent[root(i)] = root(static_cast<std::uint32_t>(n));
+    for (std::uint32_t i = 0; i <= n; ++i) parent[i] = root(i);
+    return parent;
 }
 
 }  // namespace
 
-LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds) {
+LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds,
+                              std::span<const std::pair<VertexId, VertexId>> cut_pairs) {
     struct Search {
         std::deque<ElementId> queue;
         std::vector<ElementId> members;
@@ -57,24 +90,39 @@ LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds
         while (parent[s] != s) s = parent[s] = parent[parent[s]];
         return s;
     };
-    for (const std::vector<ElementId>& group : seed_groups(mesh, seeds)) {
+    const SeedGroups groups = seed_groups(mesh, seeds);
+    for (const std::vector<ElementId>& group : groups.groups) {
         const auto s = static_cast<std::uint32_t>(searches.size());
         for (const ElementId t : group) owner.emplace(t, s);
         searches.push_back({{group.begin(), group.end()}, group, true});
         parent.push_back(s);
     }
+    // Each search belongs to a body as it was before the step (bodies_of), and races only the
+    // searches of its body: with two bodies cut in one step, the last search left on each is
+    // that body's, not loose (the race over all searches once removed three of the four halves).
+    // body_parent joins bodies whose searches meet; running counts each body's running searches.
+    std::vector<std::uint32_t> body_parent = bodies_of(groups, cut_pairs);
+    std::vector<std::size_t> running_in(body_parent.size(), 0);
+    auto body_root = [&](std::uint32_t b) {
+        while (body_parent[b] != b) b = body_parent[b] = body_parent[body_parent[b]];
+        return b;
+    };
+    for (std::uint32_t s = 0; s < searches.size(); ++s) ++running_in[body_root(s)];
+    std::size_t racing = 0;  // searches in bodies with more than one running
+    for (std::uint32_t s = 0; s < searches.size(); ++s) racing += running_in[body_root(s)] > 1;
     LoosePieces result;
-    std::size_t running = searches.size();
     const int faces = mesh.element_vertex_count();
-    while (running > 1) {
-        for (std::uint32_t s = 0; s < searches.size() && running > 1; ++s) {
-            if (parent[s] != s || !searches[s].running) continue;
-            if (searches[s].queue.empty()) {  // a whole component, and not the last one: loose
+    while (racing > 0) {
+        racing = 0;
+        for (std::uint32_t s = 0; s < searches.size(); ++s) {
+            if (parent[s] != s || !searches[s].running || running_in[body_root(s)] < 2) continue;
+            ++racing;
+            if (searches[s].queue.empty()) {  // a whole component, and not its body's last one: loose
                 std::vector<ElementId> piece = std::move(searches[s].members);
                 std::sort(piece.begin(), piece.end());
                 result.pieces.push_back(std::move(piece));
                 searches[s].running = false;
-                --running;
+                --running_in[body_root(s)];
                 continue;
             }
             std::uint32_t me = s;
@@ -91,7 +139,7 @@ LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds
                 }
                 const std::uint32_t other = root(found->second);
                 if (other == me) continue;
-                // the two searches met: one component; the smaller joins the larger
+                // the two searches met: one component, so one body; the smaller joins the larger
                 std::uint32_t big = me, small = other;
                 if (searches[big].members.size() < searches[small].members.size()) std::swap(big, small);
                 parent[small] = big;
@@ -100,7 +148,12 @@ LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds
                 into.queue.insert(into.queue.end(), from.queue.begin(), from.queue.end());
                 into.members.insert(into.members.end(), from.members.begin(), from.members.end());
                 from = Search{{}, {}, false};
-                --running;
+                const std::uint32_t kept = body_root(big), joined = body_root(small);
+                if (kept != joined) {  // (a body that met another was one with it before the step)
+                    body_parent[joined] = kept;
+                    running_in[kept] += running_in[joined];
+                }
+                --running_in[kept];
                 me = big;
             }
         }

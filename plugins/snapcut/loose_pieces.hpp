@@ -7,7 +7,9 @@
 // search runs. Otherwise one breadth-first search per group runs through face neighbours, the
 // searches taking one element each in turn. Two searches that meet are one; a search that runs
 // out of elements before meeting the others has found a whole component: a loose piece. When a
-// single search is left it is the body the pieces came off, and it stops. So the work is about
+// single search is left it is the body the pieces came off, and it stops. The searches race per
+// body as it was before the step (the two sides of a cut node and its copy were one body): on a
+// mesh of several bodies each body keeps its last search. So the work is about
 // the seeds' number when nothing comes loose, and the loose pieces' size times the number of
 // searches when something may have.
 //
@@ -18,6 +20,7 @@
 #pragma once
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "face_selection.hpp"
@@ -29,9 +32,13 @@ struct LoosePieces {
     std::vector<std::vector<ElementId>> pieces;  // each sorted; in the order they were found
 };
 
-// The components of the seeds' elements that are not the last one standing (dead ids skipped).
-// With the seeds all in one component there is no loose piece.
-LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds);
+// The components of the seeds' elements that are not the last one standing on their body (dead
+// ids skipped). `cut_pairs` are the step's dissections' (original, copy) nodes: the seeds around
+// the two ends of a pair were one body before the step, so each body keeps its largest part (the
+// last search left on it) and only the others are loose; two bodies cut in one step each keep
+// one part. With the seeds all in one component there is no loose piece.
+LoosePieces find_loose_pieces(const Mesh& mesh, std::span<const ElementId> seeds,
+                              std::span<const std::pair<VertexId, VertexId>> cut_pairs);
 
 // Crumbs (keep_crumbs_attached.cpp). Where the incision's surface folds around a tetrahedron or
 // two at its rim (tetrahedra whose faces were selected from different sides, or that a later

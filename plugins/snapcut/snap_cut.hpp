@@ -172,6 +172,7 @@ struct CutStepReport {
     bool relax_converged = false, relax_shown = false;
     double relax_residual = 0;
     std::string relax_refusal;  // why it could not relax (the cut stands)
+    std::string relax_not_shown;  // why its shape was not written (relax_shown false; the cut stands)
     std::size_t elements = 0, vertices = 0;  // the mesh's after the step (vertices: in some element)
     // seconds per phase, and in all
     double seconds_select = 0, seconds_snap = 0, seconds_dissect = 0, seconds_degeneracy = 0,
@@ -277,6 +278,8 @@ private:
     CutStepReport m_last;
     std::vector<std::vector<ElementId>> m_loose;  // the step's loose pieces (kept ones)
     std::vector<ElementId> m_seeds;                // the step's elements on both sides of its cut faces
+    // the step's dissections' (original, copy) nodes: which seeds were one body (find_loose_pieces)
+    std::vector<std::pair<VertexId, VertexId>> m_cut_pairs;
 };
 
 }  // namespace sxk::snapcut

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <utility>
 
 #include "blade_track.hpp"
 #include "degeneracy_service.hpp"
@@ -123,6 +124,7 @@ void SnapCutSession::relax(StepReport& report) {
             m_last.relax_converged = relaxed->converged;
             m_last.relax_residual = relaxed->residual;
             m_last.relax_shown = relaxed->shown;
+            if (relaxed->not_shown) m_last.relax_not_shown = relaxed->not_shown->reason;
             m_last.relax_region_vertices = relaxed->region_vertices;
         } else {
             m_last.relax_refusal = relaxed.reason();
@@ -277,6 +279,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
                 m_track->forget();
                 m_marks.restore(undo.marks);
                 m_seeds.clear();
+                m_cut_pairs.clear();
                 m_last.seconds = seconds_since(start);
                 return done.refusal();
             }
@@ -473,6 +476,7 @@ Outcome<Done> SnapCutSession::cut_round(std::uint32_t sweep_index, std::span<con
     const std::size_t opened = dissected->opened.size() / 2;
     m_last.faces_dissected += opened;
     m_marks.carry_to_copies(mesh, dissected->new_vertices);
+    m_cut_pairs.insert(m_cut_pairs.end(), dissected->new_vertices.begin(), dissected->new_vertices.end());
     for (const auto& [original, copy] : dissected->new_vertices) {
         touched.push_back(original);
         touched.push_back(copy);
@@ -569,7 +573,8 @@ Outcome<Done> SnapCutSession::settle_loose_pieces() {
         const std::span<const ElementId> edited = elements_edited_in_step();
         seeds.insert(seeds.end(), edited.begin(), edited.end());
     }
-    LoosePieces pieces = find_loose_pieces(mesh, seeds);
+    const std::vector<std::pair<VertexId, VertexId>> cut_pairs = std::exchange(m_cut_pairs, {});
+    LoosePieces pieces = find_loose_pieces(mesh, seeds, cut_pairs);
     for (auto& piece : pieces.pieces) {
         // a crumb the dissection could not keep attached, or a layer of flat elements along the
         // cut (its corners on the cut, and faces selected from both sides) is cut free, as the

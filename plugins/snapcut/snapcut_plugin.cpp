@@ -53,6 +53,38 @@ struct CommandOptions {
     ReadOptions reading;
 };
 
+// The command's JSON object: the files and options, then the record (docs/cli.md "sxk cut snap").
+void print_json(std::ostream& out, const CommandOptions& options, const CutServices& services,
+                const ReplayRecord& record) {
+    nlohmann::ordered_json json;
+    json["file"] = options.input;
+    json["path"] = options.path;
+    json["output"] = options.output;
+    if (!options.frames.empty()) json["frames"] = options.frames;
+    json["options"] = to_json(options.cut, services.degeneracy != nullptr);
+    const nlohmann::ordered_json body = to_json(record);  // named: items() is a view
+    for (const auto& [key, value] : body.items()) json[key] = value;
+    out << json.dump(2) << '\n';
+}
+
+// The steps whose relaxation was refused or could not be shown (the mesh kept the shape before
+// it): said on stderr in text and JSON mode alike, the first by its step and reason, as the
+// JSON's steps[].relax says (`shown`, `refusal`).
+void warn_unshown_relaxations(std::ostream& err, const ReplayRecord& record) {
+    std::size_t count = 0;
+    std::string first;
+    for (std::size_t i = 0; i < record.steps.size(); ++i) {
+        const CutStepReport& step = record.steps[i].report;
+        if (!step.relaxed || (step.relax_refusal.empty() && step.relax_shown)) continue;
+        if (count++ == 0)
+            first = "step " + std::to_string(i + 1) + ": " +
+                    (step.relax_refusal.empty() ? step.relax_not_shown : "not relaxed: " + step.relax_refusal);
+    }
+    if (count == 0) return;
+    err << "sxk: warning: --deform: " << count << (count == 1 ? " step's" : " steps'")
+        << " relaxation not shown, the mesh keeping the shape before it (" << first << ")\n";
+}
+
 class CutSnapCommand final : public PluginCommand {
 public:
     std::string_view name() const override { return "cut snap"; }
@@ -90,6 +122,19 @@ public:
         app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut snap", out, err)) return *done;
+        // the relaxation's options say how a deforming body relaxes after each step: without
+        // --deform (or --far without --local) they were once ignored in silence (issue 47)
+        auto usage = [&err](const std::string& what) {
+            err << "sxk: cut snap: " << what << "\nRun 'sxk cut snap --help' for more information.\n";
+            return 2;
+        };
+        if (options.deform.empty())
+            for (const char* relaxing : {"--relax-iterations", "--local", "--far"})
+                if (app.count(relaxing) > 0)
+                    return usage(std::string(relaxing) +
+                                 ": only with --deform (it says how the deforming body relaxes after each step)");
+        if (app.count("--far") > 0 && options.cut.local_vertices == 0)
+            return usage("--far: only with --local N > 0 (it relaxes the far field that a local relaxation leaves)");
 
         if (!format_from_extension(options.output)) {
             err << "sxk: " << options.output
@@ -132,6 +177,7 @@ public:
             err << "sxk: warning: the degeneracy plug-in is not loaded: flat elements stay\n";
         ReplayRecord record;
         std::unique_ptr<elasticity::Simulation> simulation;
+        std::vector<Point> unloaded;  // with --deform: IN's deformed positions, before the first solve
         if (!options.deform.empty()) {
             auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
                                           : Outcome<elasticity::ElasticityService*>(
@@ -146,14 +192,27 @@ public:
                 return 2;
             }
             simulation = std::move(*made);
-            // the loaded shape before the first cut
-            auto settled = simulation->relax(std::numeric_limits<std::size_t>::max());
-            if (!settled) {
-                err << "sxk: cut snap: --deform: " << settled.reason() << '\n';
-                return 2;
-            }
-            record.initial_relax = *settled;
             record.deformed = true;
+            unloaded.assign(mesh->deformed_positions().begin(), mesh->deformed_positions().end());
+            // the loaded shape before the first cut; a cut of any other shape is not what was
+            // asked for, so a solve that is refused (loads whose norm overflows, a residual that
+            // is not finite) or whose shape cannot be shown (it would invert an element: issue
+            // 47 saw the undeformed body cut in silence) ends the command as `sxk deform` ends:
+            // exit 1, nothing written, the JSON object with initial_relax's refusal
+            auto settled = simulation->relax(std::numeric_limits<std::size_t>::max());
+            if (settled) {
+                record.initial_relax = *settled;
+                record.initial_solved = true;
+                if (!settled->shown && settled->not_shown)
+                    record.initial_refusal = *settled->not_shown;
+            } else {
+                record.initial_refusal = settled.refusal();
+            }
+            if (record.initial_refusal) {
+                err << "sxk: cut snap: --deform: " << record.initial_refusal->reason << "; nothing cut or written\n";
+                if (options.json) print_json(out, options, services, record);
+                return 1;
+            }
             if (!settled->converged)
                 err << "sxk: warning: --deform: CG did not converge before the cut (|r| = " << settled->residual
                     << ", needed " << settled->threshold << ")\n";
@@ -195,22 +254,25 @@ public:
         if (const int* code = std::get_if<int>(&undone)) return *code;
         record.undone = std::get<std::size_t>(undone);
         (*session)->end();
+        if (simulation && record.undone > 0 && record.undone == record.steps.size()) {
+            // every step undone: the loaded shape goes too, which the solve before the first
+            // step wrote outside any step (issue 47: `--undo all` with --deform was not IN)
+            std::vector<VertexId> all(unloaded.size());
+            for (VertexId v = 0; v < all.size(); ++v) all[v] = v;
+            if (auto back = mesh->move_vertices(all, unloaded, PositionSet::deformed); !back) {
+                err << "sxk: cut snap: --undo: " << back.reason() << '\n';
+                return 1;
+            }
+        }
         record.elements_after = mesh->element_count();
         record.vertices_after = mesh->vertices_in_elements();
 
         WriteOptions writing;
         writing.drop_unused_vertices = true;  // collapses leave vertices in no element
         if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
+        warn_unshown_relaxations(err, record);
         if (options.json) {
-            nlohmann::ordered_json json;
-            json["file"] = options.input;
-            json["path"] = options.path;
-            json["output"] = options.output;
-            if (!options.frames.empty()) json["frames"] = options.frames;
-            json["options"] = to_json(options.cut, services.degeneracy != nullptr);
-            const nlohmann::ordered_json body = to_json(record);  // named: items() is a view
-            for (const auto& [key, value] : body.items()) json[key] = value;
-            out << json.dump(2) << '\n';
+            print_json(out, options, services, record);
         } else {
             print_replay(out, record);
             out << options.input << " -> " << options.output << '\n';

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "run_sxk.hpp"
+#include "two_bodies.hpp"
+#include "sxk/io.hpp"
 
 namespace sxk::test {
 namespace {
@@ -257,6 +259,180 @@ TEST(SxkCutSnap, ADeformingBodyRelaxedOnlyAroundEachStep) {
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_EQ(bad.err, "sxk: cut snap: --local: '-3' is not a whole number in 0..100000000\n"
                        "Run 'sxk cut snap --help' for more information.\n");
+}
+
+// --undo takes decimal digits or 'all', read once: "20e-1" passed the check as a whole-valued
+// number and std::stoull then undid 20 steps; "1e3" undid 1 (issue 47).
+TEST(SxkCutSnap, UndoTakesDecimalDigitsOnly) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    for (const std::string undo : {"20e-1", "1e3", "2.0", "+2", "0x2", "-0", "18446744073709551616"}) {
+        const ProcessResult run = f.cut(path, {"--undo", undo});
+        EXPECT_EQ(run.exit_code, 2) << undo;
+        EXPECT_EQ(run.err, "sxk: cut snap: --undo: '" + undo +
+                               "' is neither a whole number >= 0 nor 'all'\nRun 'sxk cut snap --help' for more "
+                               "information.\n")
+            << undo;
+        EXPECT_FALSE(fs::exists(f.out)) << undo;
+    }
+    const ProcessResult two = f.cut(path, {"--undo", "02", "--json"});
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    EXPECT_EQ(nlohmann::json::parse(two.out)["summary"]["undone"], 2);
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+}
+
+// Two cubes side by side, both cut through in one step along x = 3.3 (snapped to x = 3): each
+// loses its smaller part, 3/8 of it, and keeps the larger. The race between the searches once
+// ran over both bodies at once and removed three of the four halves (issue 47).
+TEST(SxkCutSnap, RemoveLooseKeepsTheLargerPartOfEachBody) {
+    ScratchFolder folder;
+    const fs::path two = folder / "two.mesh", out = folder / "out.mesh", path = folder / "through.path";
+    write_two_cubes(two, {0, 10, 0});
+    write_file(path, "# time hx hy hz tx ty tz: one movement through both cubes\n"
+                     "0 3.3 -1 10 3.3 -1 -1\n"
+                     "1 3.3 19 10 3.3 19 -1\n");
+    const ProcessResult run = sxk({"cut", "snap", two.string(), path.string(), out.string(), "--remove-loose", "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["steps"][1]["loose_pieces"], nlohmann::json::parse("[1152, 1152]"));
+    EXPECT_EQ(json["summary"]["elements"]["after"], 2 * 1920);
+    const ProcessResult components = sxk({"components", out.string()});
+    ASSERT_EQ(components.exit_code, 0) << components.err;
+    EXPECT_EQ(components.out.substr(0, components.out.find('\n')), "components: 2");
+    EXPECT_EQ(sxk({"validate", out.string()}).exit_code, 0);
+}
+
+// Loads whose norm overflows a double: the solve before the cut is refused (it once "converged"
+// with |r| inf <= inf and the cut went on), exit 1, nothing written; the JSON says why.
+TEST(SxkCutSnap, ADeformingBodyWithLoadsTooLargeIsRefused) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const std::string too_large =
+        "relax: elasticity: the loads are too large: their norm overflows a double, so no residual can be "
+        "measured against them; scale the loads, or the units, down";
+    const ProcessResult run = f.cut(path, {"--deform", "--fix z<0.001 --force z>7.99:0,0,1e200"});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_EQ(run.err, "sxk: cut snap: --deform: " + too_large + "; nothing cut or written\n");
+    EXPECT_EQ(run.out, "");
+    EXPECT_FALSE(fs::exists(f.out));
+    const ProcessResult json_run = f.cut(path, {"--deform", "--fix z<0.001 --force z>7.99:0,0,1e200", "--json"});
+    EXPECT_EQ(json_run.exit_code, 1);
+    const auto json = nlohmann::json::parse(json_run.out);
+    EXPECT_EQ(json["initial_relax"]["converged"], false);
+    EXPECT_EQ(json["initial_relax"]["refusal"]["code"], "bad_argument");
+    EXPECT_EQ(json["initial_relax"]["refusal"]["reason"], too_large);
+    EXPECT_EQ(json["steps"].size(), 0u);
+    EXPECT_FALSE(fs::exists(f.out));
+}
+
+// A load whose linear answer inverts elements cannot be shown: the undeformed body was cut and
+// text mode said nothing (issue 47). Refused as `sxk deform` refuses it: exit 1, nothing written,
+// the JSON's initial_relax not shown, with the reason.
+TEST(SxkCutSnap, ALoadedShapeThatCannotBeShownIsRefused) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const std::string load = "--fix y<0.001 --force y>7.99:0,1e9,0 --E 1e5";
+    const ProcessResult run = f.cut(path, {"--deform", load});
+    EXPECT_EQ(run.exit_code, 1);
+    const std::string start = "sxk: cut snap: --deform: elasticity: the solution cannot be shown: element ";
+    EXPECT_EQ(run.err.substr(0, start.size()), start) << run.err;
+    const std::string end = " would be inverted in the deformed positions; nothing cut or written\n";
+    ASSERT_GT(run.err.size(), end.size());
+    EXPECT_EQ(run.err.substr(run.err.size() - end.size()), end) << run.err;
+    EXPECT_FALSE(fs::exists(f.out));
+    const ProcessResult json_run = f.cut(path, {"--deform", load, "--json"});
+    EXPECT_EQ(json_run.exit_code, 1);
+    const auto json = nlohmann::json::parse(json_run.out);
+    EXPECT_EQ(json["initial_relax"]["shown"], false);
+    EXPECT_EQ(json["initial_relax"]["refusal"]["code"], "would_invert");
+    EXPECT_EQ("sxk: cut snap: --deform: " + json["initial_relax"]["refusal"]["reason"].get<std::string>() +
+                  "; nothing cut or written\n",
+              run.err);
+}
+
+// The relaxation's options without --deform (or --far without --local) were ignored in silence.
+TEST(SxkCutSnap, RelaxationOptionsNeedADeformingBody) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const std::string hint = "Run 'sxk cut snap --help' for more information.\n";
+    const std::string why = ": only with --deform (it says how the deforming body relaxes after each step)\n";
+    for (const auto& [option, value] : std::vector<std::pair<std::string, std::string>>{
+             {"--relax-iterations", "5"}, {"--local", "100"}, {"--far", "50"}}) {
+        const ProcessResult run = f.cut(path, {option, value});
+        EXPECT_EQ(run.exit_code, 2) << option;
+        EXPECT_EQ(run.err, "sxk: cut snap: " + option + why + hint);
+        EXPECT_FALSE(fs::exists(f.out));
+    }
+    const ProcessResult far = f.cut(path, {"--deform", "--fix y<0.001", "--far", "50"});
+    EXPECT_EQ(far.exit_code, 2);
+    EXPECT_EQ(far.err, "sxk: cut snap: --far: only with --local N > 0 (it relaxes the far field that a local "
+                       "relaxation leaves)\n" + hint);
+    EXPECT_FALSE(fs::exists(f.out));
+}
+
+// With --deform the solve before the first step writes the loaded shape outside any step:
+// `--undo all` left it in OUT, which was then not IN (issue 47). Undoing every step takes it back.
+TEST(SxkCutSnap, UndoingEveryStepOfADeformingCutWritesTheInput) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    const ProcessResult run =
+        f.cut(path, {"--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--undo", "all"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("6 steps undone"), std::string::npos) << run.out;
+    const fs::path rewritten = f.folder / "rewritten.mesh";
+    ASSERT_EQ(sxk({"convert", f.cube.string(), rewritten.string()}).exit_code, 0);
+    EXPECT_EQ(slurp(f.out), slurp(rewritten));
+    // some steps undone: the body stays loaded
+    ASSERT_EQ(f.cut(path, {"--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--undo", "5"}).exit_code,
+              0);
+    EXPECT_NE(slurp(f.out), slurp(rewritten));
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+}
+
+// The degeneracy removal of a step stays around the nodes the step snapped and split: at
+// --aspect 0.41, where every element of the Kuhn cube is below the threshold, one step's removal
+// once collapsed the cube's 3072 elements to 1, and at 0.5 failed after seconds (issue 47). Each
+// step's removal reaches a ring beyond the stars of the nodes it snapped and split
+// (tests/plugins/degeneracy_snap_test.cpp checks that bound), so the cut keeps most of the cube.
+TEST(SxkCutSnap, TheDegeneracyRemovalStaysLocalAtAnyThreshold) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    for (const std::string aspect : {"0.41", "0.5"}) {
+        const ProcessResult run = f.cut(path, {"--aspect", aspect, "--json"});
+        ASSERT_EQ(run.exit_code, 0) << aspect << run.err;
+        const auto json = nlohmann::json::parse(run.out);
+        EXPECT_GT(json["summary"]["elements"]["after"].get<int>(), 2000) << aspect;
+        EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0) << aspect;
+    }
+    // at 0.41 the cube's far side, three cells and more from the blade at x = 3.3, is untouched:
+    // its 2 x 8 x 8 cells of 6 tetrahedra each
+    ASSERT_EQ(f.cut(path, {"--aspect", "0.41"}).exit_code, 0);
+    const Mesh cut = read_mesh(f.out);
+    std::size_t far = 0;
+    for (const ElementId t : elements(cut)) {
+        const auto corners = cut.simplex(t).vertices();
+        far += std::all_of(corners.begin(), corners.end(), [&](VertexId v) { return cut.reference(v)[0] >= 6; });
+    }
+    EXPECT_EQ(far, 768u);
+}
+
+// --cut-label 0 labels the cut faces 0: the kernel's face labels are optional (no label is the
+// absence of one, docs/kernel.md "Cut marks"), so 0 is a label like any other, and every writer
+// with face labels keeps it (issue 47 found the cut faces unlabelled in a Gmsh file, whose
+// writer then gave label 0 no physical group).
+TEST(SxkCutSnap, CutLabelZeroIsALabelLikeAnyOther) {
+    CutFixture f;
+    const fs::path path = f.path("plane.path", grid_plane_path);
+    for (const std::string name : {"zero.mesh", "zero.msh"}) {
+        const fs::path out = f.folder / name;
+        const ProcessResult run = sxk({"cut", "snap", f.cube.string(), path.string(), out.string(), "--cut-label", "0"});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const Mesh cut = read_mesh(out);
+        std::size_t zero = 0;
+        for (const auto& [face, label] : cut.face_labels()) zero += label == 0;
+        EXPECT_EQ(zero, 128u) << name;  // 64 faces dissected, two boundary faces each
+        EXPECT_EQ(cut.face_labels().size(), 128u) << name;
+    }
 }
 
 TEST(SxkGenerate, TheThesisCubeAndTheDelaunayCylinder) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_sxk.hpp"
+#include "two_bodies.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/io.hpp"
 
@@ -151,6 +152,11 @@ TEST(SxkDeform, UsageErrorsSayWhat) {
          "sxk: deform: --material: rubber not in {linear,neohookean}\n" + hint},
         {{"--fix", "x<0.01", "--nu", "0.5"},
          "sxk: deform: --nu: '0.5' is not in (-1, 0.5)\n" + hint},
+        // the whole numbers go through command_line.hpp's check too (CLI11's own message once)
+        {{"--fix", "x<0.01", "--max-iterations", "0"},
+         "sxk: deform: --max-iterations: '0' is not a whole number in 1..100000000\n" + hint},
+        {{"--fix", "x<0.01", "--max-iterations", "nan"},
+         "sxk: deform: --max-iterations: 'nan' is not a whole number in 1..100000000\n" + hint},
     };
     for (const Case& c : cases) {
         const ProcessResult run = f.run(c.options);
@@ -301,6 +307,77 @@ TEST(SxkDeform, ARodSagsUnderGravity) {
     EXPECT_NEAR(linear[1] - 0.03, -0.0484, 0.0005);
     EXPECT_NEAR(rubber[1] - 0.03, -0.0469, 0.0005);
     EXPECT_LT(rubber[0], linear[0] - 0.005);
+}
+
+
+// Loads whose norm overflows a double (a load of 1e200 shared by the 81 vertices of the top is
+// finite at each, |f| is not): the stop threshold was inf, and "CG: 0 iterations, |r| inf <= inf"
+// passed for converged, exit 0, the input written back unchanged (issue 47). Refused, exit 1,
+// nothing written, and --json still prints its object, converged false, with the refusal.
+TEST(SxkDeform, LoadsWhoseNormOverflowsAreRefused) {
+    ScratchFolder folder;
+    const fs::path cube = folder / "cube8.mesh", out = folder / "d.mesh";
+    ASSERT_EQ(sxk({"generate", cube.string(), "--cells", "8"}).exit_code, 0);
+    const std::string too_large =
+        "elasticity: the loads are too large: their norm overflows a double, so no residual can be measured "
+        "against them; scale the loads, or the units, down";
+    const std::vector<std::vector<std::string>> cases{
+        {"--fix", "z<0.001", "--force", "z>7.99:0,0,1e200"},
+        {"--fix", "z<0.001", "--force", "z>7.99:0,0,1e300"},
+        {"--fix", "z<0.001", "--force", "z>7.99:0,0,1e200", "--material", "neohookean"},
+        {"--fix", "z<0.001", "--gravity", "0,0,-9.8", "--density", "1e300"},
+    };
+    for (const auto& options : cases) {
+        std::vector<std::string> args{"deform", cube.string(), out.string()};
+        args.insert(args.end(), options.begin(), options.end());
+        const ProcessResult run = sxk(args);
+        EXPECT_EQ(run.exit_code, 1) << options[3];
+        EXPECT_EQ(run.err, "sxk: " + cube.string() + ":0: " + too_large + "; nothing written\n") << options[3];
+        EXPECT_EQ(run.out, "");
+        EXPECT_FALSE(fs::exists(out));
+        args.push_back("--json");
+        const ProcessResult json_run = sxk(args);
+        EXPECT_EQ(json_run.exit_code, 1);
+        const auto json = nlohmann::json::parse(json_run.out);
+        EXPECT_EQ(json["converged"], false);
+        EXPECT_FALSE(json.contains("residual"));
+        EXPECT_EQ(json["refusal"]["code"], "bad_argument");
+        EXPECT_EQ(json["refusal"]["reason"], too_large);
+        EXPECT_FALSE(fs::exists(out));
+    }
+    // displacements too large for doubles: K u overflows, the residual is not finite
+    const ProcessResult displaced = sxk({"deform", cube.string(), out.string(), "--fix", "z<0.001", "--displace",
+                                         "z>7.99:0,0,1e300", "--json"});
+    EXPECT_EQ(displaced.exit_code, 1);
+    const std::string not_finite =
+        "elasticity: the residual is not finite after 0 iterations (|r| = inf, needed inf): the loads or the "
+        "prescribed displacements are too large for double precision; scale them, or the units, down";
+    EXPECT_EQ(displaced.err, "sxk: " + cube.string() + ":0: " + not_finite + "; nothing written\n");
+    EXPECT_EQ(nlohmann::json::parse(displaced.out)["refusal"]["reason"], not_finite);
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// A component that carries a load and has no held vertex has no equilibrium: CG once chased it
+// to |r| = 2.3e18 (issue 47). It is named before any solve, as the body with nothing holding it is.
+TEST(SxkDeform, ALoadedBodyThatNothingHoldsIsNamed) {
+    ScratchFolder folder;
+    const fs::path two = folder / "two.mesh", out = folder / "d.mesh";
+    write_two_cubes(two, {20, 0, 0});
+    const ProcessResult run = sxk({"deform", two.string(), out.string(), "--fix", "x<0.001", "--force",
+                                   "z>7.99:0,0,-1"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err, "sxk: deform: component 1 of " + two.string() +
+                           " (3072 elements, as `sxk components` numbers them) is loaded and nothing holds it (no "
+                           "--fix or --displace selects a vertex of it), so it can move freely and the problem is "
+                           "singular; fix at least three non-collinear vertices of every connected part\n");
+    EXPECT_FALSE(fs::exists(out));
+    // held on both, or loaded only where held: solved
+    EXPECT_EQ(sxk({"deform", two.string(), out.string(), "--fix", "z<0.001", "--force", "z>7.99:0,0,-1"}).exit_code,
+              0);
+    EXPECT_EQ(sxk({"deform", two.string(), out.string(), "--fix", "x<0.001", "--force", "x<8.01&z>7.99:0,0,-1"})
+                  .exit_code,
+              0);
+    EXPECT_EQ(sxk({"validate", out.string()}).exit_code, 0);
 }
 
 }  // namespace

@@ -355,5 +355,51 @@ TEST(DegeneracySnappedCube, CandidatesAroundTheMovedVerticesGiveTheSameFigures) 
     expect_done(local, *by_local, 3072);
 }
 
+// A local run stays local whatever the threshold: at aspect ratio 0.41 every element of the Kuhn
+// cube counts as degenerate, and the elements the removal made went on its list one after
+// another until one step of a snap cut had collapsed the cube's 3072 elements to 1 (issue 47).
+// Its edits reach a ring beyond the candidates' corners (in_region in remove_degeneracies.cpp,
+// and a move's follow-ups): here the candidates are the star of the cube's middle vertex, as a
+// snap cut passes the stars of the nodes it moved, and every element with no corner within two
+// rings of the candidates' corners is untouched, the same simplex.
+TEST(DegeneracySnappedCube, ALocalRunEditsOnlyAroundItsCandidatesAtAnyThreshold) {
+    Mesh mesh = make_kuhn_cube(8).value();
+    const VertexId middle = 4 + 9 * 4 + 81 * 4;  // (4, 4, 4): make_kuhn_cube numbers x fastest
+    ASSERT_EQ(mesh.reference(middle), (Point{4, 4, 4}));
+    const std::vector<ElementId> candidates = elements_around(mesh, {middle});
+    std::vector<VertexId> near;  // the candidates' corners, then one ring more, then another
+    for (const ElementId t : candidates)
+        for (const VertexId v : mesh.simplex(t).vertices()) near.push_back(v);
+    for (int ring = 0; ring < 2; ++ring) {
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        for (const ElementId t : elements_around(mesh, near))
+            for (const VertexId v : mesh.simplex(t).vertices()) near.push_back(v);
+    }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    std::vector<Simplex> far;
+    for (const ElementId t : elements(mesh)) {
+        const auto corners = mesh.simplex(t).vertices();
+        if (std::none_of(corners.begin(), corners.end(),
+                         [&](VertexId v) { return std::binary_search(near.begin(), near.end(), v); }))
+            far.push_back(mesh.simplex(t));
+    }
+    ASSERT_GT(far.size(), 1500u);  // half the cube lies beyond the region
+    Options options;
+    options.aspect_ratio = 0.41;
+    const auto removed = remove_degeneracies(mesh, candidates, options);
+    ASSERT_TRUE(removed.ok()) << removed.reason();
+    print("Kuhn cube, star of the middle vertex, aspect ratio 0.41", *removed);
+    std::vector<Simplex> after;
+    for (const ElementId t : elements(mesh)) after.push_back(mesh.simplex(t));
+    std::sort(after.begin(), after.end());
+    std::size_t kept = 0;
+    for (const Simplex& s : far) kept += std::binary_search(after.begin(), after.end(), s);
+    EXPECT_EQ(kept, far.size());
+    EXPECT_GE(mesh.element_count(), far.size());
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
 }  // namespace
 }  // namespace sxk::degeneracy

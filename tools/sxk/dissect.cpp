@@ -105,6 +105,7 @@ void add_dissect_command(CLI::App& app, Context& context) {
     command->add_option("--cut-label", options->cut_label,
                         "Face label of the boundary faces the cut makes (those without a label of their own), "
                         "written by the formats with face labels and drawn as cut faces by sxk render")
+        ->check(whole_number("LABEL"))
         ->capture_default_str();
     command->add_flag("--no-cut-label", options->no_cut_label, "Leave the faces the cut makes unlabelled");
     command->callback([&context, options] { context.exit_code = run_dissect(context, *options); });
