@@ -17,10 +17,12 @@
 // read; ASCII for Encoding::standard and ascii, BINARY for Encoding::binary. The cells and cell
 // data of the .vtu writer (vtk_arrays.hpp Grid): the active array as SCALARS (VTK's legacy reader
 // reads only the first SCALARS of a section by default), every other as a FIELD array;
-// displacement as VECTORS of the point data.
+// displacement as VECTORS of the point data. In ASCII, NaN quality (faces, degenerate elements)
+// is written as -1: VTK's legacy ASCII reader cannot read "nan".
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -571,10 +573,20 @@ std::string write_vtk(const Mesh& mesh, const WriteOptions& options) {
         columns.push_back({"min_angle_deg", nullptr, &grid.min_angle_deg});
     }
     const auto write_column = [&](const Column& column) {
-        if (column.integers)
+        if (column.integers) {
             w.values<std::int32_t>(*column.integers, 1);
-        else
+        } else if (w.binary) {
             w.values<double>(*column.doubles, 1);
+        } else {
+            // VTK 9.1's legacy ASCII reader stops at "nan" (and then refuses the file): the
+            // quality of faces and of degenerate elements is written as -1, which no quality
+            // measure takes
+            std::vector<double> finite(*column.doubles);
+            for (double& value : finite)
+                if (!std::isfinite(value))
+                    value = -1;
+            w.values<double>(finite, 1);
+        }
     };
     for (const Column& column : columns)
         if (grid.active_scalars == column.name) {

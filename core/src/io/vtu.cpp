@@ -22,6 +22,7 @@
 // are those that show something (Grid::active_scalars).
 #include <bit>
 #include <cstring>
+#include <vector>
 
 #include "formats.hpp"
 #include "text.hpp"
@@ -35,7 +36,10 @@ struct Writer {
     Encoding encoding;
     std::span<const std::int64_t> cell_ends;  // per_line == 0: one cell per line
     std::string out;
-    std::string appended;  // the bytes after AppendedData's '_'
+    // Appended arrays in document order: each one's encoded block, and where in `out` its offset
+    // goes (filled in by finish()).
+    std::vector<std::string> blocks;
+    std::vector<std::size_t> offset_at;
 
     // Writes a DataArray element and its values (inline text, or into the appended block).
     template <typename T>
@@ -84,7 +88,7 @@ struct Writer {
             return;
         }
         out += " format=\"appended\" offset=\"";
-        append_number(out, appended.size());
+        offset_at.push_back(out.size());
         out += "\"/>\n";
         std::string bytes;
         if constexpr (std::endian::native == std::endian::little) {
@@ -96,12 +100,46 @@ struct Writer {
         }
         const std::span<const unsigned char> data(
             reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+        std::string& block = blocks.emplace_back();
         if (encoding == Encoding::binary) {
-            vtk::append_binary<std::uint64_t>(appended, bytes.size(), false);
-            appended += bytes;
+            vtk::append_binary<std::uint64_t>(block, bytes.size(), false);
+            block += bytes;
         } else {
-            vtk::append_zlib_blocks(appended, data);
+            vtk::append_zlib_blocks(block, data);
         }
+    }
+
+    // The offsets, and the appended block with the arrays in the reverse of the document's
+    // order. meshio 5 reads raw appended data by rewriting each array's offset in turn (in
+    // order of offset) and finding the next array as the first element in the document with
+    // the next offset: when an offset already rewritten equals one still to come, it takes the
+    // wrong array (the writer's first layout, in document order, gave it a 'radius_ratio' of 3
+    // values for 6 cells). Reversed, the array meant always comes first in the document.
+    void finish() {
+        if (blocks.empty())
+            return;
+        std::vector<std::size_t> offsets(blocks.size());
+        std::size_t at = 0;
+        for (std::size_t i = blocks.size(); i-- > 0;) {
+            offsets[i] = at;
+            at += blocks[i].size();
+        }
+        std::string text;
+        text.reserve(out.size() + 24 * blocks.size() + at + 64);
+        std::size_t copied = 0;
+        for (std::size_t i = 0; i < blocks.size(); ++i) {
+            text.append(out, copied, offset_at[i] - copied);
+            append_number(text, offsets[i]);
+            copied = offset_at[i];
+        }
+        text.append(out, copied);
+        out = std::move(text);
+        out += "  <AppendedData encoding=\"raw\">\n   _";
+        for (std::size_t i = blocks.size(); i-- > 0;) {
+            out += blocks[i];
+            std::string().swap(blocks[i]);  // the file's bytes are held once
+        }
+        out += "\n  </AppendedData>\n";
     }
 };
 
@@ -109,7 +147,7 @@ struct Writer {
 
 std::string write_vtu(const Mesh& mesh, const WriteOptions& options) {
     const vtk::Grid grid = vtk::grid_of(mesh, options);
-    Writer w{options.encoding, grid.offsets, {}, {}};
+    Writer w{options.encoding, grid.offsets, {}, {}, {}};
     std::string& out = w.out;
     out.reserve(options.encoding == Encoding::ascii
                     ? mesh.vertex_count() * 64 + grid.cell_count() * 96
@@ -154,11 +192,7 @@ std::string write_vtu(const Mesh& mesh, const WriteOptions& options) {
     w.array<std::int64_t>(indent, "Int64", "offsets", grid.offsets, 1, 1);
     w.array<std::uint8_t>(indent, "UInt8", "types", grid.types, 1, 1);
     out += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
-    if (options.encoding != Encoding::ascii) {
-        out += "  <AppendedData encoding=\"raw\">\n   _";
-        out += w.appended;
-        out += "\n  </AppendedData>\n";
-    }
+    w.finish();
     out += "</VTKFile>\n";
     return out;
 }
