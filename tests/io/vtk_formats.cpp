@@ -190,7 +190,7 @@ TEST(VtkFormats, DisplacementWhenTheMeshMoved) {
 TEST(VtkFormats, ReadsWhatVtkAndMeshioWrite) {
     for (const char* name :
          {"peer_vtk_ascii.vtu", "peer_vtk_binary_zlib.vtu", "peer_vtk_binary.vtu",
-          "peer_vtk_default.vtu", "peer_vtk_raw.vtu", "peer_vtk_raw_zlib_big.vtu",
+          "peer_vtk_default.vtu", "peer_vtk_base64_float.vtu", "peer_vtk_raw.vtu", "peer_vtk_raw_zlib_big.vtu",
           "peer_vtk_ascii.vtk", "peer_vtk_binary.vtk", "peer_vtk42_ascii.vtk",
           "peer_vtk42_binary.vtk", "peer_meshio_ascii.vtu", "peer_meshio_zlib.vtu",
           "peer_meshio_binary.vtu", "peer_meshio_ascii.vtk", "peer_meshio_binary.vtk"}) {
@@ -293,6 +293,14 @@ TEST(VtkFormats, MalformedVtu) {
     polydata.replace(polydata.find("UnstructuredGrid\" "), 16, "PolyData");
     EXPECT_EQ(error(polydata),
               "x.vtu:2: VTKFile type 'PolyData' is not read; only UnstructuredGrid");
+    EXPECT_EQ(error(triangle_vtu("format=\"ascii\">0 0 0 1 0 0 0 1 0", "5",
+                                 " compressor=\"vtkLZ4DataCompressor\"")),
+              "x.vtu:2: compressor 'vtkLZ4DataCompressor' is not supported (only "
+              "vtkZLibDataCompressor)");
+    // a compression header whose blocks hold 2 x 72 bytes for an array of 72
+    EXPECT_EQ(error(triangle_vtu("format=\"binary\">AgAAAEgAAABIAAAABAAAAAQAAAA=", "5",
+                                 " compressor=\"vtkZLibDataCompressor\"")),
+              "x.vtu:4: DataArray 'Points': compression header declares 144 bytes, 72 expected");
     EXPECT_EQ(error("<VTKFile type=\"UnstructuredGrid\"><Unstructured"),
               "x.vtu:1: XML error: Error parsing start element tag");
 }
@@ -317,6 +325,8 @@ TEST(VtkFormats, MalformedVtk) {
               "x.vtk:12: truncated file: expected an integer");
     EXPECT_EQ(error(triangle + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\nBOGUS 1\n"),
               "x.vtk:11: unknown keyword 'BOGUS'");
+    const std::string layout51 = triangle + "CELLS 2 3\nOFFSETS vtktypeint64\n1 3\n";
+    EXPECT_EQ(error(layout51), "x.vtk:8: OFFSETS starts at 1, not 0");
     const std::string binary_head =
         "# vtk DataFile Version 4.2\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n";
     EXPECT_EQ(error(binary_head + std::string(10, '\0')),

@@ -13,10 +13,10 @@ tetrahedra = [(0, 1, 2, 3), (1, 0, 2, 4)]
 triangle = (0, 1, 3)
 
 
-def vtk_grid(label_name, label_type):
+def vtk_grid(label_name, label_type, float_points=False):
     grid = vtk.vtkUnstructuredGrid()
     p = vtk.vtkPoints()
-    p.SetDataTypeToDouble()
+    p.SetDataTypeToFloat() if float_points else p.SetDataTypeToDouble()
     for x in points:
         p.InsertNextPoint(*x)
     grid.SetPoints(p)
@@ -72,6 +72,8 @@ xml("peer_vtk_binary_zlib.vtu", vtk_grid("CellEntityIds", vtk.vtkIdTypeArray), "
 xml("peer_vtk_binary.vtu", vtk_grid("label", vtk.vtkShortArray), "binary", compress=False,
     header64=True)
 xml("peer_vtk_default.vtu", vtk_grid("label", vtk.vtkIntArray), "appended")
+xml("peer_vtk_base64_float.vtu", vtk_grid("label", vtk.vtkLongLongArray, True), "appended",
+    compress=False)
 xml("peer_vtk_raw.vtu", vtk_grid("label", vtk.vtkUnsignedCharArray), "appended", encode=False,
     compress=False, header64=True)
 xml("peer_vtk_raw_zlib_big.vtu", vtk_grid("label", vtk.vtkFloatArray), "appended", encode=False,
