@@ -289,6 +289,10 @@ TEST(VtkFormats, MalformedVtu) {
     std::string outside = triangle_vtu();
     outside.replace(outside.find(">0 1 2<"), 7, ">0 1 3<");
     EXPECT_EQ(error(outside), "x.vtu:5: cell 0 refers to point 3; the file has 3 points");
+    // cells are numbered from 0 in every message, as ParaView numbers them
+    std::string inverted = triangle_vtu();
+    inverted.replace(inverted.find(">0 1 2<"), 7, ">0 2 1<");
+    EXPECT_EQ(error(inverted), "x.vtu:5: element 0 is inverted");
     std::string polydata = triangle_vtu();
     polydata.replace(polydata.find("UnstructuredGrid\" "), 16, "PolyData");
     EXPECT_EQ(error(polydata),
