@@ -223,9 +223,19 @@ private:
     static constexpr std::size_t max_count = std::numeric_limits<std::uint32_t>::max() - 1;
 
     // ---- the text around the data ------------------------------------------------------------
+    // Lines are counted on from the last place asked for (words only move forward), so that a
+    // file of many short sections costs its length once, not once per section.
     std::size_t line_at(std::size_t at) const {
-        return 1 + static_cast<std::size_t>(
-                       std::count(m_bytes.begin(), m_bytes.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+        if (at < m_counted_at) {
+            m_counted_at = 0;
+            m_counted_lines = 1;
+        }
+        const auto begin = m_bytes.begin();
+        m_counted_lines += static_cast<std::size_t>(
+            std::count(begin + static_cast<std::ptrdiff_t>(m_counted_at),
+                       begin + static_cast<std::ptrdiff_t>(at), '\n'));
+        m_counted_at = at;
+        return m_counted_lines;
     }
     std::size_t line() const { return line_at(m_token); }
     [[noreturn]] void fail(const std::string& reason) const {
@@ -478,6 +488,7 @@ private:
     std::size_t m_at = 0;
     std::size_t m_token = 0;  // where the last word started
     bool m_binary = false;
+    mutable std::size_t m_counted_at = 0, m_counted_lines = 1;  // line_at's place
 };
 
 // ---- writing ------------------------------------------------------------------------------------
