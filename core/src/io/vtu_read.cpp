@@ -176,7 +176,9 @@ private:
         if (!scalar)
             where.fail(array.what + " has unknown type " + quote(type));
         array.type = *scalar;
-        const std::size_t found = count_attribute(node, "NumberOfComponents", 1, 64);
+        // an array without NumberOfComponents has what its place needs (Points: three)
+        const std::size_t found = count_attribute(node, "NumberOfComponents",
+                                                  static_cast<std::size_t>(components), 64);
         if (found != static_cast<std::size_t>(components))
             where.fail(array.what + " has " + std::to_string(found) + " components, " +
                        std::to_string(components) + " expected");
