@@ -200,7 +200,10 @@ TEST(Readers, FormatFromExtension) {
     EXPECT_EQ(format_from_extension("b.off"), Format::off);
     EXPECT_EQ(format_from_extension("b.obj"), Format::obj);
     EXPECT_EQ(format_from_extension("b.vtu"), Format::vtu);
-    EXPECT_EQ(format_from_extension("b.stl"), std::nullopt);
+    EXPECT_EQ(format_from_extension("b.vtk"), Format::vtk);
+    EXPECT_EQ(format_from_extension("b.STL"), Format::stl);
+    EXPECT_EQ(format_from_extension("b.ply"), Format::ply);
+    EXPECT_EQ(format_from_extension("b.vtm"), std::nullopt);
     EXPECT_EQ(format_from_extension("mesh"), std::nullopt);
     EXPECT_EQ(to_string(Format::gmsh), "gmsh");
     EXPECT_EQ(to_string(Format::tetgen), "tetgen");

@@ -1,8 +1,11 @@
-// Mesh files: Medit .mesh, Gmsh .msh (2.2 and 4.1 ASCII), TetGen .node/.ele(/.face), OFF, OBJ,
-// and VTK XML .vtu (write only). The format follows the file extension.
+// Mesh files: Medit .mesh, Gmsh .msh (2.2 and 4.1, ASCII and binary), TetGen .node/.ele(/.face),
+// OFF, OBJ, VTK XML .vtu, legacy VTK .vtk, STL and PLY (ASCII and binary), all read and written
+// (docs/formats.md). The format follows the file extension; WriteOptions::encoding chooses text
+// or binary where the format has both.
 //
 // Readers never return a half-built mesh and never crash on bad input: every problem throws
-// InputError naming the file, the 1-based line and the reason. What they check: truncated
+// InputError naming the file, the 1-based line (0 for binary data, whose messages name the byte
+// or the element instead) and the reason. What they check: truncated
 // files, counts that do not match, indices out of range, NaN/inf coordinates, unknown keywords,
 // binary garbage, and, through Mesh::assign_elements, duplicate and non-manifold elements.
 // Inverted elements (negative exact orientation when topological == ambient dimension) are an
@@ -15,15 +18,17 @@
 // Dimensions. The topological dimension is that of the largest cells in the file (tetrahedra,
 // else triangles; a file with neither is refused). The ambient dimension is what the file says
 // where it says it (Medit "Dimension", the TetGen .node dimension); formats that always store
-// x y z (Gmsh, OFF, OBJ) make a planar mesh (ambient 2) exactly when the mesh is made of
-// triangles and every z is 0 (-0 included; planar meshes store z = +0).
+// x y z (Gmsh, OFF, OBJ, VTK, STL, PLY) make a planar mesh (ambient 2) exactly when the mesh is
+// made of triangles and every z is 0 (-0 included; planar meshes store z = +0).
 //
 // Labels. Element labels: Medit element refs, Gmsh physical tags (2.2: the element's first tag;
-// 4.1: the first physical tag of its entity), the first TetGen region attribute; OFF and OBJ
-// have none (0). Face labels (Mesh::face_labels(), keyed by the face's vertex set as
+// 4.1: the first physical tag of its entity; a group named `label N` is label N, other names are
+// Mesh::label_names), the first TetGen region attribute, VTK cell data `label`; OFF, OBJ, STL
+// and PLY have none (0). Face labels (Mesh::face_labels(), keyed by the face's vertex set as
 // Simplex(+1, ...) with sign +1, whichever way the file orients it): the cells one dimension
 // below the mesh (Medit Triangles/Edges refs, Gmsh lower-dimensional elements' physical tags,
-// TetGen .face markers, or .edge markers for triangle meshes as Triangle writes them). Every
+// VTK lower-dimensional cells' labels, TetGen .face markers, or .edge markers for triangle
+// meshes as Triangle writes them). Every
 // labelled face must be a face of the mesh. Writers write exactly these faces back (boundary
 // faces outward), never invented ones; TetGen without face labels writes the plain boundary
 // without markers.
@@ -184,7 +189,7 @@ struct WriteOptions {
 // (sxk/atomic_write.hpp): a failed write leaves no partial file and an existing target as it
 // was, and a TetGen set is written whole or not at all. A mesh without elements is refused
 // ("the mesh has no elements"): no reader accepts such a file.
-// OFF and OBJ hold triangles: a tetrahedral mesh is written as its boundary surface.
+// OFF, OBJ, STL and PLY hold triangles: a tetrahedral mesh is written as its boundary surface.
 // Throws OutputError.
 SXK_API void write_mesh(const Mesh& mesh, const std::filesystem::path& path,
                         const WriteOptions& options = {});
