@@ -432,6 +432,7 @@ TEST(SxkCutSnap, CutLabelZeroIsALabelLikeAnyOther) {
         for (const auto& [face, label] : cut.face_labels()) zero += label == 0;
         EXPECT_EQ(zero, 128u) << name;  // 64 faces dissected, two boundary faces each
         EXPECT_EQ(cut.face_labels().size(), 128u) << name;
+        EXPECT_TRUE(cut.validate().ok()) << name;
     }
 }
 
