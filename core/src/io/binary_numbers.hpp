@@ -1,6 +1,7 @@
-// Numbers stored as bytes, for the readers and writers of binary formats (STL, PLY): loading a
-// value of either byte order from a file's bytes, and appending one in little-endian order to a
-// writer's content (formats.hpp: binary content is bytes in the string).
+// Numbers stored as bytes, for the readers and writers of binary formats (Gmsh, VTK, STL, PLY):
+// loading a value of either byte order from a file's bytes, and appending one in either order to
+// a writer's content (formats.hpp: binary content is bytes in the string). The one copy of
+// this mechanism: the byte swaps compile to bswap instructions.
 //
 // Loading does not check bounds: a reader checks that the bytes are there (ByteCursor::has)
 // before it loads, so that its message can say which record ran out.
@@ -30,15 +31,25 @@ T load_number(const char* bytes, bool big_endian = false) {
     return value;
 }
 
-// Appends `value` to `out` in little-endian order.
 template <class T>
-void append_little_endian(std::string& out, T value) {
+T load_number(const unsigned char* bytes, bool big_endian = false) {
+    return load_number<T>(reinterpret_cast<const char*>(bytes), big_endian);
+}
+
+// Appends `value` to `out` in little-endian order, or big-endian when `big_endian`.
+template <class T>
+void append_number_bytes(std::string& out, T value, bool big_endian) {
     static_assert(std::is_arithmetic_v<T>);
     std::array<char, sizeof(T)> copy;
     std::memcpy(copy.data(), &value, sizeof(T));
-    if constexpr (std::endian::native == std::endian::big)
+    if (big_endian != (std::endian::native == std::endian::big))
         std::reverse(copy.begin(), copy.end());
     out.append(copy.data(), sizeof(T));
+}
+
+template <class T>
+void append_little_endian(std::string& out, T value) {
+    append_number_bytes(out, value, false);
 }
 
 // A position in a file's bytes that knows how many are left.

@@ -36,6 +36,7 @@
 #include <unordered_map>
 
 #include "../fresh_array.hpp"
+#include "binary_numbers.hpp"
 #include "formats.hpp"
 #include "gmsh_common.hpp"
 #include "raw_mesh.hpp"
@@ -46,17 +47,7 @@ namespace sxk::io {
 
 namespace {
 
-constexpr std::array<std::string_view, 10> skipped_sections{"$Comments",
-                                                            "$NodeData",
-                                                            "$ElementData",
-                                                            "$ElementNodeData",
-                                                            "$Periodic",
-                                                            "$GhostElements",
-                                                            "$Parametrizations",
-                                                            "$InterpolationScheme",
-                                                            "$PartitionedEntities",
-                                                            "$NodeGroups"};
-
+using gmsh::EntityLabels;
 using gmsh::NodeMap;
 using gmsh::PhysicalName;
 using gmsh::type_size;
@@ -165,8 +156,8 @@ public:
                     m_in.fail("section $Entities appears twice");
                 m_have_entities = true;
                 read_entities();
-            } else if (std::find(skipped_sections.begin(), skipped_sections.end(), section) !=
-                       skipped_sections.end()) {
+            } else if (std::find(gmsh::skipped_sections.begin(), gmsh::skipped_sections.end(),
+                                 section) != gmsh::skipped_sections.end()) {
                 const std::string end = "$End" + std::string(section.substr(1));
                 while (m_in.need(end.c_str()) != end) {
                 }
@@ -409,14 +400,6 @@ private:
         end_section("$EndElements", "elements", count);
     }
 
-    struct EntityHash {
-        std::size_t operator()(const std::pair<int, std::int64_t>& key) const {
-            // unsigned: entity tags may be anything, and signed overflow is undefined
-            return std::hash<std::uint64_t>()(static_cast<std::uint64_t>(key.second) * 4 +
-                                              static_cast<std::uint64_t>(key.first));
-        }
-    };
-
     Cursor m_in;
     std::string_view m_text;
     RawMesh m_raw;
@@ -424,7 +407,7 @@ private:
     bool m_have_nodes = false, m_have_elements = false, m_have_entities = false;
     const char* m_section = "";
     NodeMap m_nodes;
-    std::unordered_map<std::pair<int, std::int64_t>, int, EntityHash> m_entities;
+    EntityLabels m_entities;
     std::vector<PhysicalName> m_names;
 };
 
@@ -443,8 +426,8 @@ Mesh read_gmsh(std::string_view text, const std::string& name, const ReadOptions
 namespace {
 
 // Where the writer's numbers go: text tokens separated by blanks, one record a line, or the
-// binary layout of Gmsh's file type 1 (little-endian, as this machine writes it; the reader
-// tells by the 1 after the header). Gmsh's binary sections keep their keywords and, in 2.2,
+// binary layout of Gmsh's file type 1 (little-endian; the reader tells by the 1 after the
+// header). Gmsh's binary sections keep their keywords and, in 2.2,
 // their count lines as text: the writer switches with line().
 class Sink {
 public:
@@ -515,9 +498,7 @@ private:
     }
     template <class T>
     void put(T value) {
-        char bytes[sizeof(T)];
-        std::memcpy(bytes, &value, sizeof(T));
-        m_out.append(bytes, sizeof(T));
+        append_little_endian(m_out, value);
         m_data = true;
     }
     std::string& m_out;

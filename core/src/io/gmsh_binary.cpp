@@ -28,6 +28,7 @@
 #include <cstring>
 #include <unordered_map>
 
+#include "binary_numbers.hpp"
 #include "formats.hpp"
 #include "gmsh_common.hpp"
 #include "raw_mesh.hpp"
@@ -36,17 +37,6 @@
 namespace sxk::io::gmsh {
 
 namespace {
-
-constexpr std::array<std::string_view, 10> skipped_sections{"$Comments",
-                                                            "$NodeData",
-                                                            "$ElementData",
-                                                            "$ElementNodeData",
-                                                            "$Periodic",
-                                                            "$GhostElements",
-                                                            "$Parametrizations",
-                                                            "$InterpolationScheme",
-                                                            "$PartitionedEntities",
-                                                            "$NodeGroups"};
 
 bool is_space(char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
@@ -85,8 +75,8 @@ public:
                 end_section("$EndEntities");
             } else if (section == "$PhysicalNames") {
                 read_physical_names_text();
-            } else if (std::find(skipped_sections.begin(), skipped_sections.end(), section) !=
-                       skipped_sections.end()) {
+            } else if (std::find(gmsh::skipped_sections.begin(), gmsh::skipped_sections.end(),
+                                 section) != gmsh::skipped_sections.end()) {
                 // binary data of no interest: up to the section's end keyword at a line start
                 const std::string end = "\n$End" + std::string(section.substr(1));
                 const std::size_t at = m_bytes.find(end, m_at - 1);
@@ -170,12 +160,7 @@ private:
     T take(const char* what) {
         if (left() < sizeof(T))
             fail(std::string("truncated file: expected ") + what);
-        std::array<char, sizeof(T)> raw;
-        std::memcpy(raw.data(), m_bytes.data() + m_at, sizeof(T));
-        if (m_swap)
-            std::reverse(raw.begin(), raw.end());
-        T value;
-        std::memcpy(&value, raw.data(), sizeof(T));
+        const T value = load_number<T>(m_bytes.data() + m_at, m_big_endian);
         m_at += sizeof(T);
         return value;
     }
@@ -222,17 +207,11 @@ private:
         if (rest != "1 8")
             fail("expected file type 1 and data size 8 after the version, found " + quote(rest));
         // the int 1 in the writer's byte order
+        if (left() >= 4 && load_number<std::int32_t>(m_bytes.data() + m_at, true) == 1)
+            m_big_endian = true;
         const std::int32_t one = take<std::int32_t>("the byte order mark (the int 1)");
-        if (one != 1) {
-            std::int32_t swapped = 0;
-            std::array<char, 4> raw;
-            std::memcpy(raw.data(), &one, 4);
-            std::reverse(raw.begin(), raw.end());
-            std::memcpy(&swapped, raw.data(), 4);
-            if (swapped != 1)
-                fail("expected the int 1 after the header, found " + std::to_string(one));
-            m_swap = true;
-        }
+        if (one != 1)
+            fail("expected the int 1 after the header, found " + std::to_string(one));
         expect_line("$EndMeshFormat");
     }
 
@@ -438,23 +417,16 @@ private:
                  " elements but its blocks hold " + std::to_string(seen));
     }
 
-    struct EntityHash {
-        std::size_t operator()(const std::pair<int, std::int64_t>& key) const {
-            return std::hash<std::uint64_t>()(static_cast<std::uint64_t>(key.second) * 4 +
-                                              static_cast<std::uint64_t>(key.first));
-        }
-    };
-
     std::string_view m_bytes;
     const std::string& m_name;
     std::size_t m_at = 0;
-    bool m_swap = false;
+    bool m_big_endian = false;
     int m_version = 0;
     std::string_view m_section;
     bool m_have_nodes = false, m_have_elements = false, m_have_entities = false;
     RawMesh m_raw;
     NodeMap m_nodes;
-    std::unordered_map<std::pair<int, std::int64_t>, int, EntityHash> m_entities;
+    EntityLabels m_entities;
     std::vector<PhysicalName> m_names;
 };
 

@@ -12,12 +12,15 @@
 // back.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "raw_mesh.hpp"
@@ -25,6 +28,28 @@
 #include "text.hpp"
 
 namespace sxk::io::gmsh {
+
+// Sections that carry nothing a mesh keeps ($NodeData, ...): read past.
+inline constexpr std::array<std::string_view, 10> skipped_sections{"$Comments",
+                                                                   "$NodeData",
+                                                                   "$ElementData",
+                                                                   "$ElementNodeData",
+                                                                   "$Periodic",
+                                                                   "$GhostElements",
+                                                                   "$Parametrizations",
+                                                                   "$InterpolationScheme",
+                                                                   "$PartitionedEntities",
+                                                                   "$NodeGroups"};
+
+// 4.1's entities, (dimension, tag), and the label their first physical tag gives.
+struct EntityHash {
+    std::size_t operator()(const std::pair<int, std::int64_t>& key) const {
+        // unsigned: entity tags may be anything, and signed overflow is undefined
+        return std::hash<std::uint64_t>()(static_cast<std::uint64_t>(key.second) * 4 +
+                                          static_cast<std::uint64_t>(key.first));
+    }
+};
+using EntityLabels = std::unordered_map<std::pair<int, std::int64_t>, int, EntityHash>;
 
 // Vertices per element for the types a simplicial mesh can hold; 0 for the others.
 int type_size(std::int64_t type);

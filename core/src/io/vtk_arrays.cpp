@@ -10,6 +10,7 @@
 #include <zlib.h>
 
 #include "../fresh_array.hpp"
+#include "binary_numbers.hpp"
 #include "sxk/components.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
@@ -120,27 +121,6 @@ std::optional<Scalar> legacy_scalar(std::string_view name) {
 
 namespace {
 
-template <typename T>
-T load(const unsigned char* p, bool big_endian) {
-    using Bits = std::conditional_t<
-        sizeof(T) == 1, std::uint8_t,
-        std::conditional_t<sizeof(T) == 2, std::uint16_t,
-                           std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
-    Bits bits;
-    std::memcpy(&bits, p, sizeof bits);
-    if constexpr (sizeof(T) > 1) {
-        if (big_endian != (std::endian::native == std::endian::big)) {
-            if constexpr (sizeof(T) == 2)
-                bits = __builtin_bswap16(bits);
-            else if constexpr (sizeof(T) == 4)
-                bits = __builtin_bswap32(bits);
-            else
-                bits = __builtin_bswap64(bits);
-        }
-    }
-    return std::bit_cast<T>(bits);
-}
-
 // Calls f.template operator()<T>() with the C++ type of `type`.
 template <typename F>
 decltype(auto) with_type(Scalar type, F&& f) {
@@ -238,7 +218,7 @@ std::vector<double> to_doubles(std::span<const unsigned char> bytes, Scalar type
     std::vector<double> values(count);
     with_type(type, [&]<typename T>() {
         for (std::size_t i = 0; i < count; ++i)
-            values[i] = static_cast<double>(load<T>(bytes.data() + i * size, big_endian));
+            values[i] = static_cast<double>(load_number<T>(bytes.data() + i * size, big_endian));
     });
     return values;
 }
@@ -251,7 +231,7 @@ std::vector<std::int64_t> to_integers(std::span<const unsigned char> bytes, Scal
     std::vector<std::int64_t> values(count);
     with_type(type, [&]<typename T>() {
         for (std::size_t i = 0; i < count; ++i) {
-            const T value = load<T>(bytes.data() + i * size, big_endian);
+            const T value = load_number<T>(bytes.data() + i * size, big_endian);
             if constexpr (std::is_floating_point_v<T>) {
                 values[i] = whole(static_cast<double>(value), i, where, what);
             } else if constexpr (std::is_same_v<T, std::uint64_t>) {
@@ -423,8 +403,8 @@ namespace {
 std::uint64_t read_word(Source& source, std::size_t header_bytes, bool big_endian) {
     std::vector<unsigned char> bytes;
     source.read(header_bytes, bytes);
-    return header_bytes == 4 ? load<std::uint32_t>(bytes.data(), big_endian)
-                             : load<std::uint64_t>(bytes.data(), big_endian);
+    return header_bytes == 4 ? load_number<std::uint32_t>(bytes.data(), big_endian)
+                             : load_number<std::uint64_t>(bytes.data(), big_endian);
 }
 
 // deflate's largest expansion: 258 bytes from a 2-bit code at best (zlib's technical notes)
@@ -538,27 +518,14 @@ void append_base64(std::string& out, std::span<const unsigned char> bytes) {
     }
 }
 
-template <typename T>
-void append_binary(std::string& out, T value, bool big_endian) {
-    unsigned char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    if (big_endian != (std::endian::native == std::endian::big))
-        std::reverse(bytes, bytes + sizeof(T));
-    out.append(reinterpret_cast<const char*>(bytes), sizeof(T));
-}
-template void append_binary<std::uint8_t>(std::string&, std::uint8_t, bool);
-template void append_binary<std::int32_t>(std::string&, std::int32_t, bool);
-template void append_binary<std::int64_t>(std::string&, std::int64_t, bool);
-template void append_binary<std::uint64_t>(std::string&, std::uint64_t, bool);
-template void append_binary<double>(std::string&, double, bool);
 
 void append_zlib_blocks(std::string& out, std::span<const unsigned char> data) {
     constexpr std::size_t block_size = 32768;
     const std::size_t blocks = (data.size() + block_size - 1) / block_size;
     const std::size_t header = out.size();
-    append_binary<std::uint64_t>(out, blocks, false);
-    append_binary<std::uint64_t>(out, block_size, false);
-    append_binary<std::uint64_t>(out, data.size() % block_size, false);
+    append_number_bytes<std::uint64_t>(out, blocks, false);
+    append_number_bytes<std::uint64_t>(out, block_size, false);
+    append_number_bytes<std::uint64_t>(out, data.size() % block_size, false);
     out.append(8 * blocks, '\0');  // the compressed sizes, filled in below
     std::string packed(compressBound(block_size), '\0');
     for (std::size_t b = 0; b < blocks; ++b) {
@@ -573,7 +540,7 @@ void append_zlib_blocks(std::string& out, std::span<const unsigned char> data) {
             throw OutputError("zlib could not compress a block");
         out.append(packed.data(), length);
         std::string size_bytes;
-        append_binary<std::uint64_t>(size_bytes, length, false);
+        append_number_bytes<std::uint64_t>(size_bytes, length, false);
         out.replace(header + 24 + 8 * b, 8, size_bytes);
     }
 }

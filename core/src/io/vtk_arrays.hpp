@@ -124,9 +124,6 @@ void append_base64(std::string& out, std::span<const unsigned char> bytes);
 // `data` as vtkZLibDataCompressor writes it with a UInt64 little-endian header, blocks of
 // 32768 bytes (vtkXMLWriter's default block size) each compressed on its own.
 void append_zlib_blocks(std::string& out, std::span<const unsigned char> data);
-// Appends a value's bytes in little- or big-endian order whatever the machine's.
-template <typename T>
-void append_binary(std::string& out, T value, bool big_endian);
 
 // The cells and data that both writers write (docs: the cut shows in ParaView because the
 // labelled faces are cells too).

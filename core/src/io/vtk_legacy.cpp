@@ -26,6 +26,7 @@
 #include <cstring>
 #include <limits>
 
+#include "binary_numbers.hpp"
 #include "formats.hpp"
 #include "text.hpp"
 #include "vtk_arrays.hpp"
@@ -501,7 +502,7 @@ struct LegacyWriter {
     void values(std::span<const T> data, std::size_t per_line) {
         if (binary) {
             for (const T& value : data)
-                vtk::append_binary<T>(out, value, true);
+                append_number_bytes<T>(out, value, true);
             out += '\n';
             return;
         }

@@ -24,6 +24,7 @@
 #include <cstring>
 #include <vector>
 
+#include "binary_numbers.hpp"
 #include "formats.hpp"
 #include "text.hpp"
 #include "vtk_arrays.hpp"
@@ -96,13 +97,13 @@ struct Writer {
         } else {
             bytes.reserve(values.size() * sizeof(T));
             for (const T& value : values)
-                vtk::append_binary<T>(bytes, value, false);
+                append_number_bytes<T>(bytes, value, false);
         }
         const std::span<const unsigned char> data(
             reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
         std::string& block = blocks.emplace_back();
         if (encoding == Encoding::binary) {
-            vtk::append_binary<std::uint64_t>(block, bytes.size(), false);
+            append_number_bytes<std::uint64_t>(block, bytes.size(), false);
             block += bytes;
         } else {
             vtk::append_zlib_blocks(block, data);
