@@ -173,7 +173,8 @@ inline std::variant<Mesh, std::string> try_read_mesh(const std::string& file, co
 }
 
 // What the reader repaired, one warning line each (docs/cli.md "Reading meshes"): split pinched
-// vertices, Medit faces listed again with another reference, labelled faces of no element.
+// vertices, Medit faces listed again with another reference, labelled faces of no element, STL
+// triangles of zero area.
 inline void print_read_warnings(std::ostream& err, const std::string& file, const ReadReport& report) {
     if (report.pinched_vertices > 0) {
         const std::size_t n = report.pinched_vertices;
@@ -191,6 +192,12 @@ inline void print_read_warnings(std::ostream& err, const std::string& file, cons
         if (report.stray_faces > 1)
             err << " (" << report.stray_faces << " faces like this)";
         err << " (--strict refuses it)\n";
+    }
+    if (report.dropped_triangles > 0) {
+        err << "sxk: warning: " << report.first_dropped_triangle << "; dropped";
+        if (report.dropped_triangles > 1)
+            err << " (" << report.dropped_triangles << " triangles like this)";
+        err << '\n';
     }
 }
 
@@ -231,6 +238,15 @@ inline std::optional<std::string> try_write_mesh(const Mesh& mesh, const std::st
     } catch (const std::exception& error) {
         return write_error_line(file, error);
     }
+}
+
+// The message for an output file whose extension names no mesh format, "FILE:0: unknown output
+// format (known: .mesh .msh ...)" for the caller to print after "sxk: " (exit 2), checked before
+// the input is read; nullopt when the format is known.
+inline std::optional<std::string> unknown_output_format(const std::string& file) {
+    if (format_from_extension(file))
+        return std::nullopt;
+    return file + ":0: unknown output format (known: " + std::string(known_mesh_extensions()) + ")";
 }
 
 // try_write_mesh for a plug-in command: prints "sxk: FILE:0: cannot write: why" and returns

@@ -98,7 +98,7 @@ TEST(SxkDelaunayFlip, MissingOutputAndUnknownFormat) {
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err,
               "sxk: " + (f.folder / "out.xyz").string() +
-                  ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n");
+                  ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply)\n");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -349,6 +350,16 @@ TEST(StlRead, DropsTrianglesWhoseCornersWeldAndNamesTrianglesAsTheFileDoes) {
                    "30: element 5 is oriented inconsistently with element 3 across face (3 4)");
     expect_refused(binary_stl(turned), Format::stl,
                    "0: element 5 is oriented inconsistently with element 3 across face (3 4)");
+    // the report says what was dropped, and where the first one stands
+    for (const auto& [bytes, first] :
+         {std::pair{ascii_stl(with_sliver), std::string("s.stl:9: triangle 2 has two corners at one position")},
+          std::pair{binary_stl(with_sliver), std::string("s.stl:0: triangle 2 has two corners at one position")}}) {
+        std::istringstream in(bytes);
+        ReadReport report;
+        (void)read_mesh(in, Format::stl, "s.stl", {}, &report);
+        EXPECT_EQ(report.dropped_triangles, 2u);
+        EXPECT_EQ(report.first_dropped_triangle, first);
+    }
     // nothing but slivers
     const std::vector<std::array<Point, 3>> slivers{with_sliver[1], with_sliver[3]};
     expect_refused(ascii_stl(slivers), Format::stl, "0: no triangles or tetrahedra");

@@ -47,7 +47,7 @@ void add_components_command(CLI::App& app, Context& context) {
     auto options = std::make_shared<ComponentsOptions>();
     CLI::App* command = app.add_subcommand(
         "components", "Face-connected components and their sizes (numbered by smallest element id)");
-    command->add_option("MESH", options->mesh, "Mesh file (.mesh .msh .node/.ele .off .obj)")->required();
+    command->add_option("MESH", options->mesh, "Mesh file (" + std::string(known_mesh_extensions()) + ")")->required();
     command->add_flag("--json", options->json, "Print one JSON object instead of text");
     command->callback([&context, options] { context.exit_code = run_components(context, *options); });
 }

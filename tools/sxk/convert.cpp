@@ -21,9 +21,8 @@ struct ConvertOptions {
 
 int run_convert(Context& context, const ConvertOptions& options) {
     // refuse an unknown output format before spending time on the input
-    if (!format_from_extension(options.output)) {
-        context.err << "sxk: " << options.output << ":0: unknown output format (known: " << known_mesh_extensions()
-                    << ")\n";
+    if (const auto unknown = unknown_output_format(options.output)) {
+        context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
     // a format with one encoding would silently ignore the request

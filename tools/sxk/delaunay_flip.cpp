@@ -18,9 +18,8 @@ struct DelaunayFlipOptions {
 };
 
 int run_delaunay_flip(Context& context, const DelaunayFlipOptions& options) {
-    if (!format_from_extension(options.output)) {
-        context.err << "sxk: " << options.output
-                    << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+    if (const auto unknown = unknown_output_format(options.output)) {
+        context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
     std::optional<Mesh> mesh = load_mesh(context, options.input);

@@ -130,7 +130,7 @@ void add_generate_command(CLI::App& app, Context& context) {
         "A box of Kuhn tetrahedra (the thesis' test cube: --cells 8), a Delaunay cylinder (--shape cylinder) or a "
         "planar grid of triangles (--shape square: the thesis' 2D cuts, --cells 5 gives Fig. 5.16's 50 triangles), or "
         "that grid lifted into a Gaussian bell (--shape bell: the thesis' 3D cuts, --cells 14 gives Fig. 5.19's 392)");
-    command->add_option("OUT", options->output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+    command->add_option("OUT", options->output, "Output mesh, format by extension (" + std::string(known_mesh_extensions()) + ")")
         ->required();
     command->add_option("--shape", options->shape,
                         "box: Kuhn tetrahedra, 6 per cell; cylinder: Delaunay; square: 2 triangles per cell; "

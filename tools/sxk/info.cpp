@@ -90,7 +90,7 @@ void add_info_command(CLI::App& app, Context& context) {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* command = app.add_subcommand(
         "info", "Counts (vertices, elements, boundary faces, face-connected components), dimensions, labels");
-    command->add_option("MESH", options->mesh, "Mesh file (.mesh .msh .node/.ele .off .obj)")->required();
+    command->add_option("MESH", options->mesh, "Mesh file (" + std::string(known_mesh_extensions()) + ")")->required();
     command->add_flag("--json", options->json, "Print one JSON object instead of text");
     command->callback([&context, options] { context.exit_code = run_info(context, *options); });
 }

@@ -41,9 +41,8 @@ std::string parse_point(const std::string& text, Point& point) {
 }
 
 int run_refine(Context& context, const RefineOptions& options) {
-    if (!format_from_extension(options.output)) {
-        context.err << "sxk: " << options.output
-                    << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+    if (const auto unknown = unknown_output_format(options.output)) {
+        context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
     Point x{};

@@ -125,6 +125,11 @@ struct ReadReport {
     // the first as "FILE:LINE: triangle 9 is not a face of any tetrahedron".
     std::size_t stray_faces = 0;
     std::string first_stray_face;
+    // STL triangles two of whose corners are at one position (zero area: nothing of the
+    // surface, and no element), dropped, and the first as "FILE:LINE: triangle 7 has two
+    // corners at one position" (line 0 in binary files).
+    std::size_t dropped_triangles = 0;
+    std::string first_dropped_triangle;
 };
 
 // Reads a mesh file; for TetGen give either X.node or X.ele (the other, and X.face if present,

@@ -64,10 +64,16 @@ struct PointBitsHash {
     }
 };
 
+// The triangles dropped as slivers (ReadReport::dropped_triangles).
+struct Slivers {
+    std::size_t count = 0;
+    std::string first;
+};
+
 // Turns the corners of each triangle into welded vertex ids, and the triangles into cells.
 class Welder {
 public:
-    explicit Welder(RawMesh& raw) : m_raw(raw) {}
+    Welder(RawMesh& raw, Slivers& slivers) : m_raw(raw), m_slivers(slivers) {}
 
     void reserve(std::size_t triangles) {
         m_ids.reserve(triangles / 2 + 3);  // a closed surface has about half as many vertices
@@ -104,6 +110,9 @@ public:
                 m_raw.points.pop_back();
                 m_raw.point_lines.pop_back();
             }
+            if (m_slivers.count++ == 0)
+                m_slivers.first = m_raw.vertex_file + ":" + std::to_string(line) + ": triangle " +
+                                  std::to_string(number) + " has two corners at one position";
             return;
         }
         CellList& cells = m_raw.triangles;
@@ -115,6 +124,7 @@ public:
 
 private:
     RawMesh& m_raw;
+    Slivers& m_slivers;
     std::unordered_map<Point, VertexId, PointBitsHash> m_ids;
 };
 
@@ -126,11 +136,11 @@ RawMesh raw_for(const std::string& name) {
     return raw;
 }
 
-void read_binary(std::string_view bytes, const std::string& name, RawMesh& raw) {
+void read_binary(std::string_view bytes, const std::string& name, RawMesh& raw, Slivers& slivers) {
     ByteCursor in(bytes);
     in.take(80);
     const std::uint32_t count = load_number<std::uint32_t>(in.take(4));
-    Welder welder(raw);
+    Welder welder(raw, slivers);
     welder.reserve(count);  // the caller checked that the file holds `count` triangles
     for (std::uint32_t t = 0; t < count; ++t) {
         const char* record = in.take(binary_triangle_bytes);
@@ -166,9 +176,9 @@ void expect_line(Cursor& in, std::string_view first, std::string_view second = {
         in.fail("unexpected value " + quote(in.next_in_line()) + " at the end of the line");
 }
 
-void read_ascii(std::string_view text, const std::string& name, RawMesh& raw) {
+void read_ascii(std::string_view text, const std::string& name, RawMesh& raw, Slivers& slivers) {
     Cursor in(text, name, '\0');
-    Welder welder(raw);
+    Welder welder(raw, slivers);
     std::int64_t facets = 0;
     static constexpr const char* axes[] = {"x coordinate", "y coordinate", "z coordinate"};
     while (in.next_line()) {
@@ -319,13 +329,23 @@ std::string write_binary(const Surface& surface, std::span<const Point> position
 Mesh read_stl(std::string_view bytes, const std::string& name, const ReadOptions& options,
               ReadReport* report) {
     RawMesh raw = raw_for(name);
+    Slivers slivers;
+    // the mesh, with what was dropped said in the report
+    auto built = [&] {
+        Mesh mesh = build_mesh(raw, name, options, report);
+        if (report) {
+            report->dropped_triangles = slivers.count;
+            report->first_dropped_triangle = slivers.first;
+        }
+        return mesh;
+    };
     const std::size_t size = bytes.size();
     const std::uint64_t count =
         size >= binary_header_bytes ? load_number<std::uint32_t>(bytes.data() + 80) : 0;
     const std::uint64_t binary_size = binary_header_bytes + binary_triangle_bytes * count;
     if (size >= binary_header_bytes && size == binary_size) {
-        read_binary(bytes, name, raw);
-        return build_mesh(raw, name, options, report);
+        read_binary(bytes, name, raw, slivers);
+        return built();
     }
     std::string_view text;
     try {
@@ -352,8 +372,8 @@ Mesh read_stl(std::string_view bytes, const std::string& name, const ReadOptions
                              std::to_string(binary_size) + " bytes), found " +
                              std::to_string(size) + " bytes");
     }
-    read_ascii(text, name, raw);
-    return build_mesh(raw, name, options, report);
+    read_ascii(text, name, raw, slivers);
+    return built();
 }
 
 std::string write_stl(const Mesh& mesh, const WriteOptions& options) {
