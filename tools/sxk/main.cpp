@@ -7,6 +7,7 @@
 // own --help.
 #include <algorithm>
 #include <array>
+#include <csignal>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -130,6 +131,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
 }  // namespace sxk::cli
 
 int main(int argc, char** argv) {
+    // A file-size limit (`ulimit -f`) would otherwise kill sxk with SIGXFSZ in the middle of a
+    // write: no message, the temporary file left behind. Ignored, the write fails with EFBIG,
+    // which the atomic writer reports and cleans up after (sxk/atomic_write.hpp).
+    std::signal(SIGXFSZ, SIG_IGN);
     const std::vector<std::string> args(argv + 1, argv + argc);
     try {
         return sxk::cli::run(args, std::cout, std::cerr);
