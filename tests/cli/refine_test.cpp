@@ -137,6 +137,10 @@ TEST(SxkRefine, PointOutsideTheMeshIsRefused) {
     EXPECT_EQ(run.err, "sxk: refine_around: point (5, 0.5) is not in the mesh\n");
     EXPECT_EQ(run.out, "");
     EXPECT_FALSE(fs::exists(f.out));
+    // just outside, the coordinates as given: six digits made it "(1, 0.5)", a point on the square
+    const ProcessResult near = f.run({"--around", "1.0000001,0.5", "--size", "0.5"});
+    EXPECT_EQ(near.exit_code, 1);
+    EXPECT_EQ(near.err, "sxk: refine_around: point (1.0000001, 0.5) is not in the mesh\n");
 }
 
 // Two tetrahedra glued along <2,3,4> (file numbering), labels 1 and 2: longest-edge bisection
@@ -186,6 +190,11 @@ TEST(SxkRefine, PointOutsideTheTetrahedraIsRefused) {
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_EQ(run.err, "sxk: refine_around_tetrahedra: point (2, 2, 2) is not in the mesh\n");
     EXPECT_FALSE(fs::exists(out));
+    // the hostile trial's "point (8, 4, 4)": rounded to six digits, a point outside read as one on the mesh
+    const ProcessResult near =
+        sxk({"refine", mesh.string(), out.string(), "--around", "2.0000001,2,2", "--size", "0.1"});
+    EXPECT_EQ(near.exit_code, 1);
+    EXPECT_EQ(near.err, "sxk: refine_around_tetrahedra: point (2.0000001, 2, 2) is not in the mesh\n");
 }
 
 TEST(SxkRefine, UnreadableInput) {

@@ -5,28 +5,16 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "ops/bisect_2d_helpers.hpp"
 #include "ops/index_check.hpp"
+#include "ops/point_text.hpp"
 #include "sxk/predicates.hpp"
 #include "sxk/traversal.hpp"
 
 namespace sxk {
 namespace {
-
-std::string number_text(double value) {
-    if (std::isnan(value))
-        return "nan";
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
-std::string point_text(const Point& x) {
-    return "(" + number_text(x[0]) + ", " + number_text(x[1]) + ")";
-}
 
 // The checks every entry point makes before locating x; nothing when they pass.
 std::optional<Refusal> refuse_arguments(const Mesh& mesh, double h) {
@@ -45,7 +33,7 @@ std::optional<Refusal> refuse_arguments(const Mesh& mesh, double h) {
 // refine-around from the triangle `start` that contains x.
 Outcome<RefineAroundResult> refine_from(Mesh& mesh, ElementId start, const Point& x, double h) {
     if (start == invalid_id)
-        return Refusal{RefusalCode::not_found, "refine_around: point " + point_text(x) + " is not in the mesh"};
+        return Refusal{RefusalCode::not_found, "refine_around: point " + point_text(x, 2) + " is not in the mesh"};
     // refine-around's tail recursion as a loop, on the plan: after a bisection the triangle
     // that contained x has been split, and x is followed into the child that contains it
     detail::BisectionPlan plan(mesh);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ops/index_check.hpp"
+#include "ops/point_text.hpp"
 #include "ops/tet_bisection_amp.hpp"
 #include "ops/tet_bisection_plan.hpp"
 #include "sxk/ops/split_edge.hpp"
@@ -15,12 +16,6 @@
 namespace sxk {
 
 namespace {
-
-std::string point_text(const Point& x) {
-    std::ostringstream out;
-    out << '(' << x[0] << ", " << x[1] << ", " << x[2] << ')';
-    return out.str();
-}
 
 // The checks every entry point makes before locating x; nothing when they pass.
 std::optional<Refusal> refuse_arguments(const Mesh& mesh, double h) {
@@ -44,7 +39,7 @@ std::optional<Refusal> refuse_stale(const TetBisection& state) {
 
 Refusal not_in_mesh(const Point& x) {
     return Refusal{RefusalCode::not_found,
-                   "refine_around_tetrahedra: point " + point_text(x) + " is not in the mesh"};
+                   "refine_around_tetrahedra: point " + point_text(x, 3) + " is not in the mesh"};
 }
 
 // With a bisection state, from the tetrahedron t containing x.
