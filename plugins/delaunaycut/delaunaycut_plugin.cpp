@@ -17,6 +17,7 @@
 #include "command_line.hpp"
 #include "cut_options.hpp"
 #include "incision_distance.hpp"
+#include "output_checks.hpp"
 #include "planar_cut.hpp"
 #include "surface_cut.hpp"
 #include "svg_picture.hpp"
@@ -150,6 +151,14 @@ public:
                 << " PICTURE.png'\n";
             return 2;
         }
+        // every file this command writes, checked before the cut: OUT is not replaced when a
+        // picture cannot be written after it, and no picture overwrites the input or OUT
+        const std::array<SideOutput, 2> pictures{
+            SideOutput{"--svg", options.svg, ".svg", "the picture is SVG"},
+            SideOutput{"--histogram", options.histogram, ".svg", "the histogram is SVG"}};
+        if (const std::optional<int> refused =
+                check_outputs("cut delaunay", options.input, options.output, pictures, err))
+            return *refused;
         const Mesh before = *mesh;
         // the session, and how a sample moves its scalpel
         std::unique_ptr<ToolSession> session;
@@ -182,6 +191,12 @@ public:
             }
             PlanarCutSession* cutter = made->get();
             h = cutter->mean_edge();
+            // a sample the session would refuse is a bad path: said with its line, before any step
+            for (const ToolSample& sample : path.samples)
+                if (const auto far = cutter->too_far({sample.values[0], sample.values[1], 0})) {
+                    err << "sxk: " << options.path << ':' << sample.line << ": " << *far << '\n';
+                    return 2;
+                }
             step = [&, cutter](const ToolSample& sample) {
                 const Point p{sample.values[0], sample.values[1], 0};
                 scalpel.push_back(p);
@@ -221,14 +236,20 @@ public:
         const AngleCounts angles_before = triangle_angle_degrees(before), angles_after = triangle_angle_degrees(*mesh);
         const IncisionDistance incision = surface ? incision_distance(*mesh, blades, options.cut.cut_label)
                                                   : incision_distance(*mesh, scalpel, options.cut.cut_label);
+        // a picture that fails now (a full disk: check_outputs ruled out the rest) says which
+        // file, as a failed OUT does
+        std::string writing_now;
         try {
-            if (!options.svg.empty())
+            if (!options.svg.empty()) {
+                writing_now = options.svg;
                 write_file_atomically(options.svg,
                                       mesh_svg(*mesh, scalpel, options.cut.cut_label,
                                                std::string(method_name(options.cut.method)) + " cut: " +
                                                    std::to_string(before.element_count()) + " -> " +
                                                    std::to_string(mesh->element_count()) + " triangles"));
+            }
             if (!options.histogram.empty()) {
+                writing_now = options.histogram;
                 const std::array<AngleSeries, 4> series{
                     AngleSeries{"smallest angle, before", angles_before.smallest},
                     AngleSeries{"smallest angle, after", angles_after.smallest},
@@ -239,7 +260,7 @@ public:
                                                               " cut: triangle angles", series));
             }
         } catch (const std::exception& error) {
-            err << "sxk: " << error.what() << '\n';
+            err << "sxk: " << write_error_line(writing_now, error) << '\n';
             return 1;
         }
         const auto growth =

@@ -1,8 +1,10 @@
 // What both planar cutting methods share (planar_cut.hpp): the scalpel, the undo of the session's
 // state, the entry through the boundary, and the report.
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -106,6 +108,7 @@ Outcome<Done> PlanarCutSession::apply(const ToolPose& pose, StepReport& report) 
     m_last.phase = m_state.phase;
     if (!std::isfinite(to[0]) || !std::isfinite(to[1]))
         return Refusal{RefusalCode::bad_argument, "delaunaycut: the scalpel's position is not finite"};
+    if (const std::optional<std::string> far = too_far(to)) return Refusal{RefusalCode::bad_argument, *far};
     const std::optional<Point> scalpel_before = m_scalpel;
     const State state_before = m_state;
     if (m_scalpel) {
@@ -125,6 +128,22 @@ Outcome<Done> PlanarCutSession::apply(const ToolPose& pose, StepReport& report) 
     describe(m_last, report);
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return Done{};
+}
+
+std::optional<std::string> PlanarCutSession::too_far(const Point& p) const {
+    double off = 0;
+    for (std::size_t k = 0; k < 2; ++k) off = std::max({off, m_low[k] - p[k], p[k] - m_high[k]});
+    if (!(off > farthest * m_mean_edge)) return std::nullopt;
+    // the coordinates as given (shortest round-trip text), the distances to three digits
+    const auto exact = [](double value) {
+        char text[32];
+        return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+    };
+    char distances[96];
+    std::snprintf(distances, sizeof distances, "%.3g from the mesh, more than 1e12 mean edges (%.3g)", off,
+                  farthest * m_mean_edge);
+    return "delaunaycut: the scalpel at (" + exact(p[0]) + ", " + exact(p[1]) + ") is " + distances +
+           ": so far away a movement cannot be placed on the mesh in doubles";
 }
 
 void PlanarCutSession::step_taken_back() {

@@ -156,6 +156,96 @@ TEST(SxkCutDelaunay, CutsTheThesisBellTwiceWithALineScalpel) {
                            " PICTURE.png'\n");
 }
 
+// The hostile trial: samples at +-1e17 around the square made only a dent, while +-1e3 ... 1e12 cut
+// through. Along such a movement the whole square lies within one rounding step of its parameter:
+// the movement was one piece, entered ~16 units off. Samples that far (more than 1e12 mean edges
+// from the mesh's box) are refused with their line; 1e11 still cuts the square in two.
+TEST(SxkCutDelaunay, SamplesTooFarFromTheMeshAreRefusedWithTheirLine) {
+    CutFixture f;
+    const fs::path far = f.path("far.path", "0 -1e17 2.5\n1 1e17 2.5\n");
+    const ProcessResult run = f.cut(far.string());
+    EXPECT_EQ(run.exit_code, 2);
+    // the 5 x 5 square's mean edge: (60 + 25 sqrt 2) / 85 = 1.1218
+    EXPECT_EQ(run.err, "sxk: " + far.string() +
+                           ":1: delaunaycut: the scalpel at (-1e+17, 2.5) is 1e+17 from the mesh, more than 1e12 mean "
+                           "edges (1.12e+12): so far away a movement cannot be placed on the mesh in doubles\n");
+    EXPECT_FALSE(fs::exists(f.out));
+    const fs::path near = f.path("near.path", "0 -1e11 2.5\n1 1e11 2.5\n");
+    for (const char* method : {"delaunay", "subdivision"}) {
+        const ProcessResult cut = f.cut(near.string(), {"--method", method});
+        ASSERT_EQ(cut.exit_code, 0) << method << ": " << cut.err;
+        EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0) << method;
+        EXPECT_EQ(sxk({"components", f.out.string()}).out.substr(0, 14), "components: 2\n") << method;
+    }
+}
+
+// The hostile trial: a picture that cannot be written made the command exit 1 after OUT was
+// replaced, and the message lacked "FILE:0:". Every output is checked before the cut: nothing is
+// written, OUT stays as it was.
+TEST(SxkCutDelaunay, AnUnwritablePictureIsRefusedBeforeOutIsReplaced) {
+    CutFixture f;
+    write_file(f.out, "the user's old result\n");
+    for (const char* option : {"--svg", "--histogram"}) {
+        const std::string picture = (f.folder / "nowhere" / "x.svg").string();
+        const ProcessResult run = f.cut(f.curve, {option, picture});
+        EXPECT_EQ(run.exit_code, 1) << option;
+        EXPECT_EQ(run.err, "sxk: " + picture + ":0: cannot write: No such file or directory\n") << option;
+        EXPECT_EQ(run.out, "") << option;
+        EXPECT_EQ(slurp(f.out), "the user's old result\n") << option;
+    }
+    // a directory where the picture goes
+    const fs::path folder_in_the_way = f.folder / "in-the-way.svg";
+    fs::create_directory(folder_in_the_way);
+    const ProcessResult directory = f.cut(f.curve, {"--svg", folder_in_the_way.string()});
+    EXPECT_EQ(directory.exit_code, 1);
+    EXPECT_EQ(directory.err, "sxk: " + folder_in_the_way.string() + ":0: cannot write: is a directory\n");
+    EXPECT_EQ(slurp(f.out), "the user's old result\n");
+    // OUT itself: refused before the cut, with the same message the write gives
+    const std::string lost = (f.folder / "nowhere" / "out.mesh").string();
+    const ProcessResult out = sxk({"cut", "delaunay", f.square.string(), f.curve, lost});
+    EXPECT_EQ(out.exit_code, 1);
+    EXPECT_EQ(out.err, "sxk: " + lost + ":0: cannot write: No such file or directory\n");
+}
+
+// The hostile trial: `--svg sq19.mesh` overwrote the input mesh with SVG (exit 0), and `--svg
+// x.png` wrote SVG into a .png name. A picture may be neither the input, nor OUT, nor the other
+// picture, and its name must say what it holds.
+TEST(SxkCutDelaunay, APictureMayNotOverwriteTheMeshesOrCarryAnotherExtension) {
+    CutFixture f;
+    const std::string input = slurp(f.square);
+    const std::string square = f.square.string();
+    struct Case {
+        std::vector<std::string> options;
+        std::string message;
+    };
+    const fs::path svg = f.folder / "cut.svg";
+    const std::vector<Case> cases{
+        {{"--svg", square}, "--svg " + square + ": the same file as the input mesh " + square + "; name another file"},
+        // the same file under another name
+        {{"--histogram", (f.folder / "." / "square.mesh").string()},
+         "--histogram " + (f.folder / "." / "square.mesh").string() + ": the same file as the input mesh " + square +
+             "; name another file"},
+        {{"--svg", f.out.string()},
+         "--svg " + f.out.string() + ": the same file as the output mesh " + f.out.string() + "; name another file"},
+        {{"--svg", svg.string(), "--histogram", svg.string()},
+         "--histogram " + svg.string() + ": the same file as the file of --svg; name another file"},
+        {{"--svg", (f.folder / "x.png").string()},
+         "--svg " + (f.folder / "x.png").string() + ": the picture is SVG; name it *.svg"},
+        {{"--histogram", (f.folder / "h.png").string()},
+         "--histogram " + (f.folder / "h.png").string() + ": the histogram is SVG; name it *.svg"},
+    };
+    for (const Case& c : cases) {
+        const ProcessResult run = f.cut(f.curve, c.options);
+        EXPECT_EQ(run.exit_code, 2) << c.message;
+        EXPECT_EQ(run.err, "sxk: cut delaunay: " + c.message + "\n");
+        EXPECT_EQ(slurp(f.square), input) << c.message;
+        EXPECT_FALSE(fs::exists(f.out)) << c.message;
+        EXPECT_FALSE(fs::exists(svg)) << c.message;
+        EXPECT_FALSE(fs::exists(f.folder / "x.png")) << c.message;
+    }
+    EXPECT_EQ(sxk({"validate", square}).exit_code, 0);
+}
+
 TEST(SxkGenerate, ThePlanarGridsOfTheThesis2DCuts) {
     ScratchFolder folder;
     const fs::path square = folder / "square.mesh", strip = folder / "strip.mesh";
