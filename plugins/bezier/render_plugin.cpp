@@ -14,6 +14,7 @@
 #include <optional>
 #include <sstream>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -171,6 +172,14 @@ std::variant<Camera, std::string> parse_camera(const std::string& text) {
         return "'" + text + "': eye and target coincide";
     if (is_zero(cross(minus(camera.target, camera.eye), camera.up)))
         return "'" + text + "': up is zero or parallel to the view direction";
+    // what the renderer's frame of the camera refuses beyond that (a view direction whose length
+    // overflows, an up vector parallel to it after rounding) is a bad argument too, refused here
+    // rather than by the render after the input is read (exit 1)
+    try {
+        primary_ray(camera, 1, 1, 0, 0);
+    } catch (const std::invalid_argument& error) {
+        return "'" + text + "': " + error.what();
+    }
     return camera;
 }
 

@@ -267,6 +267,20 @@ TEST(SxkRender, BadCamera) {
                        hint);
 }
 
+// The hostile trial: cameras the renderer's frame refuses (a view direction whose length overflows
+// a double, an up vector parallel to it once rounded) failed with exit 1 after the input was read;
+// a bad camera argument is a usage error (2) like the others above.
+TEST(SxkRender, CamerasTheRendererCannotFrameAreUsageErrors) {
+    RenderFixture f;
+    f.expect_error(teapot, {"--camera", "1e308,0,0,-1e308,0,0,0,0,1"},
+                   "sxk: render: --camera: '1e308,0,0,-1e308,0,0,0,0,1': camera: target - eye has no direction\n" +
+                       hint);
+    f.expect_error(teapot, {"--camera", "0,0,5,0,0,0,1e-200,0,0"},
+                   "sxk: render: --camera: '0,0,5,0,0,0,1e-200,0,0': camera: the up vector is parallel to the "
+                   "view and has no direction\n" +
+                       hint);
+}
+
 TEST(SxkRender, FovOutOfRange) {
     RenderFixture f;
     for (const char* fov : {"0", "180", "-10", "400"})
