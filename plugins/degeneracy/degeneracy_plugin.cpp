@@ -15,6 +15,7 @@
 
 #include "command_line.hpp"
 #include "degeneracy_brush.hpp"
+#include "progress_line.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin_host.hpp"
 
@@ -261,7 +262,11 @@ public:
         if (!mesh)
             return 2;
 
-        const Outcome<Report> report = remove_degeneracies(*mesh, options->removal);
+        // a spinner while it works (nothing unless stderr is a terminal), gone before the report
+        const Outcome<Report> report = [&] {
+            ProgressLine progress("removing degeneracies from " + options->input);
+            return remove_degeneracies(*mesh, options->removal);
+        }();
         if (!report) {
             err << "sxk: " << options->input << ": " << report.reason() << '\n';
             return 1;
