@@ -4,6 +4,7 @@
 // plug-in's renderer, found through the host (Plugin::attach): no plug-in links another.
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -21,6 +22,7 @@
 #include "needle_options.hpp"
 #include "needle_report.hpp"
 #include "planar_picture.hpp"
+#include "refinement_budget.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
 #include "sxk/tool_path.hpp"
@@ -150,6 +152,40 @@ public:
             const int half = path.columns / 2;
             if (std::equal(sample.values.begin(), sample.values.begin() + half, sample.values.begin() + half)) {
                 err << "sxk: " << o.path << ':' << sample.line << ": the needle has zero length (base = tip)\n";
+                return 2;
+            }
+        }
+        // the refinement the options imply, estimated before any of it is done (refinement_budget.hpp)
+        {
+            const double elements = static_cast<double>(mesh->element_count());
+            const double start = o.h_start ? uniform_refinement_elements(*mesh, *o.h_start) - elements : 0;
+            char line[320];
+            if (start > refinement_element_limit) {
+                std::snprintf(line, sizeof line,
+                              "sxk: needle: --h-start %g: refining %s to this size would add about %.2g elements, "
+                              "more than the limit of %.0f; take a larger --h-start\n",
+                              *o.h_start, o.input.c_str(), start, refinement_element_limit);
+                err << line;
+                return 2;
+            }
+            std::vector<Point> tips;
+            for (const ToolSample& sample : path.samples) {
+                const auto& v = sample.values;
+                tips.push_back(planar ? Point{v[2], v[3], 0} : Point{v[3], v[4], v[5]});
+            }
+            // after --h-start the elements along the path are already of size h_start
+            const double along = !o.h_start || o.needle.h_ref < *o.h_start
+                                     ? path_refinement_elements(*mesh, tips, o.needle.h_ref, o.needle.radius)
+                                     : 0;
+            if (start + along > refinement_element_limit) {
+                char radius[64] = "";
+                if (o.needle.radius > 0) std::snprintf(radius, sizeof radius, " --radius %g", o.needle.radius);
+                std::snprintf(line, sizeof line,
+                              "sxk: needle: --h-ref %g%s: refining along the path would add about %.2g elements, "
+                              "more than the limit of %.0f; take a larger --h-ref%s\n",
+                              o.needle.h_ref, radius, start + along, refinement_element_limit,
+                              o.needle.radius > 0 ? " or a smaller --radius" : "");
+                err << line;
                 return 2;
             }
         }

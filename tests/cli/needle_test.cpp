@@ -117,6 +117,29 @@ TEST(SxkNeedle, GoesIntoAKuhnCubeAndSaysWhenItHasNoBody) {
     EXPECT_GT(wide["elements_after"].get<int>(), json["elements_after"].get<int>());
 }
 
+// The hostile trial: `--h-start 1e-6` on the slab, and `--radius 0.05 --h-ref 1e-4`, grew memory at
+// ~35 MB/s until killed. What the refinement options ask for is estimated before any refinement
+// (plugins/needle/refinement_budget.hpp) and refused beyond the limit, exit 2, nothing written.
+TEST(SxkNeedle, RefinementBeyondTheLimitIsRefusedUpFront) {
+    NeedleFixture f;
+    const ProcessResult start = f.insert(slab_path, {"--h-start", "1e-6"});
+    EXPECT_EQ(start.exit_code, 2);
+    // the slab's 0.01 m^2 over a triangle of 1e-6 m legs (5e-13 m^2)
+    EXPECT_EQ(start.err, "sxk: needle: --h-start 1e-06: refining " + f.slab.string() +
+                             " to this size would add about 2e+10 elements, more than the limit of 1000000; take a "
+                             "larger --h-start\n");
+    const ProcessResult tube = f.insert(slab_path, {"--radius", "0.05", "--h-ref", "1e-4"});
+    EXPECT_EQ(tube.exit_code, 2);
+    // a tube 0.1 m wide along the 70 mm inside: more than the slab, so the slab at 1e-4 (5e-9 m^2 each)
+    EXPECT_EQ(tube.err, "sxk: needle: --h-ref 0.0001 --radius 0.05: refining along the path would add about 2e+06 "
+                        "elements, more than the limit of 1000000; take a larger --h-ref or a smaller --radius\n");
+    EXPECT_FALSE(fs::exists(f.out));
+    // within the limit the same needle runs: a line at 1e-4 (a tube of radius h, about 2,800 elements)
+    const ProcessResult line = f.insert(slab_path, {"--h-ref", "1e-4"});
+    EXPECT_EQ(line.exit_code, 0) << line.err;
+    EXPECT_EQ(sxk({"validate", f.out.string()}).exit_code, 0);
+}
+
 TEST(SxkNeedle, BadPathsAreRefusedWithTheirLine) {
     NeedleFixture f;
     struct Case {
