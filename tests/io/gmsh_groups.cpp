@@ -206,7 +206,7 @@ TEST(GmshGroups, BrokenBinaryFilesAreRefusedWithTheirByte) {
     EXPECT_EQ(read_error(good.substr(0, 60)), "bad.msh:0: $Nodes: truncated file: 3 nodes declared, room for 0, at byte 49");
     std::string wrong_mark = good;
     wrong_mark[23] = 7;  // the int 1 after the header, big-endian: 00 00 00 07 is 7 either way round
-    EXPECT_EQ(read_error(wrong_mark), "bad.msh:0: expected the int 1 after the header, found 117440512, at byte 24");
+    EXPECT_EQ(read_error(wrong_mark), "bad.msh:0: expected the int 1 after the header, found 117440512, at byte 20");
     EXPECT_EQ(read_error("$MeshFormat\n2.2 1 4\n"),
               "bad.msh:0: expected file type 1 and data size 8 after the version, found '1 4', at byte 20");
     std::string many_nodes = good;

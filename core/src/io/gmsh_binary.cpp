@@ -206,12 +206,15 @@ private:
             blank == std::string_view::npos ? "" : header.substr(blank + 1);
         if (rest != "1 8")
             fail("expected file type 1 and data size 8 after the version, found " + quote(rest));
-        // the int 1 in the writer's byte order
-        if (left() >= 4 && load_number<std::int32_t>(m_bytes.data() + m_at, true) == 1)
-            m_big_endian = true;
-        const std::int32_t one = take<std::int32_t>("the byte order mark (the int 1)");
-        if (one != 1)
-            fail("expected the int 1 after the header, found " + std::to_string(one));
+        // the int 1 in the writer's byte order; a message names the byte where it starts
+        if (left() < 4)
+            fail("truncated file: expected the int 1 after the header");
+        const auto little = load_number<std::int32_t>(m_bytes.data() + m_at, false);
+        const auto big = load_number<std::int32_t>(m_bytes.data() + m_at, true);
+        if (little != 1 && big != 1)
+            fail("expected the int 1 after the header, found " + std::to_string(little));
+        m_big_endian = little != 1;
+        m_at += 4;
         expect_line("$EndMeshFormat");
     }
 
