@@ -191,7 +191,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostr
     if (with_files) {
         app.add_option("IN", options.input, "Input mesh file")->required();
         app.add_option("OUT", options.output,
-                       "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+                       "Output mesh file, format by extension (" + std::string(known_mesh_extensions()) + ")")
             ->required();
     }
     app.add_option("--aspect", options.removal.aspect_ratio,
@@ -253,9 +253,8 @@ public:
         const std::optional<CommandOptions> options = parse(args, out, err, code);
         if (!options)
             return code;
-        if (!format_from_extension(options->output)) {
-            err << "sxk: " << options->output
-                << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        if (const auto unknown = unknown_output_format(options->output)) {
+            err << "sxk: " << *unknown << '\n';
             return 2;
         }
         std::optional<Mesh> mesh = load_mesh_for_command(options->input, err, options->reading);

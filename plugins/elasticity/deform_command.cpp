@@ -43,7 +43,7 @@ std::optional<Options> parse(std::span<const std::string> args, std::ostream& ou
     app.add_option("IN", o.input, "Input mesh file (tetrahedra in space or triangles in the plane)")
         ->required();
     app.add_option("OUT", o.output,
-                   "Output mesh file, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+                   "Output mesh file, format by extension (" + std::string(known_mesh_extensions()) + ")")
         ->required();
     add_body_options(app, o.body);
     app.add_flag("--json", o.json,
@@ -76,9 +76,8 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const std::optional<ParsedBody> parsed = parse_body_setup(o.body, err);
     if (!parsed)
         return 2;
-    if (!format_from_extension(o.output)) {
-        err << "sxk: " << o.output
-            << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+    if (const auto unknown = unknown_output_format(o.output)) {
+        err << "sxk: " << *unknown << '\n';
         return 2;
     }
     if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {

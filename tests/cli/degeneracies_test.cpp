@@ -213,7 +213,7 @@ TEST(SxkDegeneracies, UnknownOutputFormat) {
     EXPECT_EQ(run.exit_code, 2);
     EXPECT_EQ(run.err,
               "sxk: " + bad.string() +
-                  ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n");
+                  ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply)\n");
     EXPECT_FALSE(fs::exists(bad));
 }
 
