@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "sxk/components.hpp"
 #include "sxk/quality.hpp"
 
 namespace sxk::bezier {
@@ -125,7 +126,7 @@ MeshSurface tetrahedral_surface(const Mesh& mesh, const MeshSurfaceOptions& opti
         surface.soup.triangles.push_back({renumbered[v[0]], renumbered[v[1]], renumbered[v[2]]});
         const ElementId t = mesh.face_element(f);
         surface.keys.push_back(
-            {t, normalised_quality(mesh, t, positions), mesh.label(t), cut[index]});
+            {t, normalised_quality(mesh, t, positions), mesh.label(t), cut[index], 0});
     }
     return surface;
 }
@@ -153,7 +154,7 @@ MeshSurface triangle_surface(const Mesh& mesh, const MeshSurfaceOptions& options
         const auto v = oriented_vertices(mesh.simplex(t));
         surface.soup.triangles.push_back({renumbered[v[0]], renumbered[v[1]], renumbered[v[2]]});
         surface.keys.push_back(
-            {t, normalised_quality(mesh, t, positions), mesh.label(t), cut_element[t]});
+            {t, normalised_quality(mesh, t, positions), mesh.label(t), cut_element[t], 0});
     }
     return surface;
 }
@@ -166,8 +167,13 @@ std::size_t MeshSurface::cut_count() const {
 }
 
 MeshSurface mesh_surface(const Mesh& mesh, const MeshSurfaceOptions& options) {
-    return mesh.topological_dimension() == 3 ? tetrahedral_surface(mesh, options)
-                                             : triangle_surface(mesh, options);
+    MeshSurface surface = mesh.topological_dimension() == 3 ? tetrahedral_surface(mesh, options)
+                                                            : triangle_surface(mesh, options);
+    // one pass over the elements (O(n), as the boundary itself): a picture is not a tool's step
+    const Components components = connected_components(mesh);
+    surface.pieces = static_cast<std::uint32_t>(components.count);
+    for (SurfaceTriangleKeys& key : surface.keys) key.piece = components.element_component[key.element];
+    return surface;
 }
 
 }  // namespace sxk::bezier

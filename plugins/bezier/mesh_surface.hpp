@@ -27,6 +27,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -44,6 +45,9 @@ struct SurfaceTriangleKeys {
     double quality = 0;
     int label = 0;     // the element's label
     bool cut = false;  // on a cut (see above)
+    // The element's piece: its connected component (sxk/components.hpp), numbered in order of
+    // each piece's smallest element id, so that the piece a body keeps after a cut keeps its colour.
+    std::uint32_t piece = 0;
 };
 
 struct MeshSurface {
@@ -51,6 +55,7 @@ struct MeshSurface {
     TriangleSoup soup;
     std::vector<SurfaceTriangleKeys> keys;  // one per soup.triangles entry
     std::size_t cut_count() const;          // triangles flagged cut
+    std::uint32_t pieces = 0;               // connected components of the mesh
 };
 
 struct MeshSurfaceOptions {

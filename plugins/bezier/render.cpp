@@ -103,6 +103,81 @@ Camera frame(const Box& box, const Point& from, const Point& up, double fov_degr
     return camera;
 }
 
+namespace {
+
+// The view's axes for `from` and `up`: right, up in the picture, and forward (toward the scene).
+CameraFrame view_axes(const Point& from, const Point& up) {
+    const Point forward = scaled(-1, unit(from, "fit: the view direction"));
+    const Point right = unit(cross(forward, up), "fit: the up vector is parallel to the view and");
+    return {right, cross(right, forward), forward, 0};
+}
+
+}  // namespace
+
+double extent_aspect(std::span<const Point> points, const Point& from, const Point& up) {
+    const CameraFrame axes = view_axes(from, up);
+    double low[2] = {0, 0}, high[2] = {0, 0};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double x = dot(points[i], axes.right), y = dot(points[i], axes.up);
+        low[0] = i == 0 ? x : std::min(low[0], x), high[0] = i == 0 ? x : std::max(high[0], x);
+        low[1] = i == 0 ? y : std::min(low[1], y), high[1] = i == 0 ? y : std::max(high[1], y);
+    }
+    const double width = high[0] - low[0], height = high[1] - low[1];
+    return width > 0 && height > 0 ? width / height : 1.0;
+}
+
+Camera fit(std::span<const Point> points, const Point& from, const Point& up, double fov_degrees, double aspect,
+           double margin) {
+    if (!(fov_degrees > 0 && fov_degrees < 180))
+        throw std::invalid_argument("fit: field of view " + std::to_string(fov_degrees) +
+                                    " degrees is not in (0, 180)");
+    if (!(aspect > 0)) throw std::invalid_argument("fit: the picture's aspect ratio is not positive");
+    const CameraFrame axes = view_axes(from, up);
+    if (points.empty()) return frame(Box{}, from, up, fov_degrees);
+    // the points' extent across the view (parallel projection) decides the target
+    double low[3], high[3];
+    for (std::size_t q = 0; q < 3; ++q) low[q] = high[q] = 0;
+    const Point* axis[3] = {&axes.right, &axes.up, &axes.forward};
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t q = 0; q < 3; ++q) {
+            const double c = dot(points[i], *axis[q]);
+            low[q] = i == 0 ? c : std::min(low[q], c);
+            high[q] = i == 0 ? c : std::max(high[q], c);
+        }
+    Point target{};
+    for (std::size_t q = 0; q < 3; ++q)
+        for (std::size_t k = 0; k < 3; ++k) target[k] += (low[q] + high[q]) / 2 * (*axis[q])[k];
+    // a point at (x, y) across the view and z along it, seen from distance d before the target,
+    // lies at y / (d + z) of the picture's half height in units of tan(fov / 2): the smallest d
+    // that keeps every point inside (1 - margin) of both half sides
+    const double half = std::tan(fov_degrees * std::numbers::pi / 360) * (1 - std::clamp(margin, 0.0, 0.9));
+    const double depth = std::max({high[0] - low[0], high[1] - low[1], high[2] - low[2], 1e-300});
+    double distance = (high[2] - low[2]) / 2 + 1e-3 * depth;  // the eye outside the points
+    for (const Point& p : points) {
+        const Point d = minus(p, target);
+        const double x = std::abs(dot(d, axes.right)), y = std::abs(dot(d, axes.up)), z = dot(d, axes.forward);
+        distance = std::max({distance, y / half - z, x / (half * aspect) - z});
+    }
+    Camera camera;
+    for (std::size_t k = 0; k < 3; ++k) camera.eye[k] = target[k] - distance * axes.forward[k];
+    camera.target = target;
+    camera.up = up;
+    camera.fov_degrees = fov_degrees;
+    return camera;
+}
+
+std::optional<std::array<double, 2>> project(const Camera& camera, int width, int height, const Point& point) {
+    check_size(width, height);
+    const CameraFrame axes = camera_frame(camera);
+    const Point d = minus(point, camera.eye);
+    const double depth = dot(d, axes.forward);
+    if (!(depth > 0)) return std::nullopt;
+    // ray_through's inverse: pixel centres x + 0.5 at across = (x + 0.5 - width / 2) * pixel
+    const double pixel = 2 * axes.half_height / height;
+    return std::array<double, 2>{width / 2.0 + dot(d, axes.right) / depth / pixel,
+                                 height / 2.0 - dot(d, axes.up) / depth / pixel};
+}
+
 Ray primary_ray(const Camera& camera, int width, int height, int x, int y) {
     check_size(width, height);
     return ray_through(camera, camera_frame(camera), width, height, x, y);
@@ -118,14 +193,29 @@ Image render(const Scene& scene, const Camera& camera, int width, int height,
     image.rgb.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
     for_each_pixel(camera, width, height, [&](int x, int y, const Ray& ray) {
         Colour colour = shading.background;
-        if (const std::optional<SceneHit> hit = scene.intersect(ray)) {
+        // two-sided Lambert: patches of a file are not consistently oriented; a point with no
+        // normal (a patch flat to a point) is lit as if facing the light
+        const auto intensity = [&](const SceneHit& hit) {
+            const double lambert = norm(hit.normal) > 0 ? std::abs(dot(hit.normal, light)) : 1.0;
+            return shading.ambient + (1 - shading.ambient) * lambert;
+        };
+        const std::optional<SceneHit> hit = scene.intersect(ray);
+        if (hit) {
             const Colour surface = shading.colour ? shading.colour(*hit) : Colour{0.75, 0.75, 0.75};
-            // two-sided Lambert: patches of a file are not consistently oriented; a point with no
-            // normal (a patch flat to a point) is lit as if facing the light
-            const double lambert = norm(hit->normal) > 0 ? std::abs(dot(hit->normal, light)) : 1.0;
-            const double intensity = shading.ambient + (1 - shading.ambient) * lambert;
+            const double lit = intensity(*hit);
             for (std::size_t c = 0; c < 3; ++c)
-                colour[c] = surface[c] * intensity;
+                colour[c] = surface[c] * lit;
+        }
+        if (shading.overlay != nullptr && shading.overlay_colour) {
+            if (const std::optional<SceneHit> seen = shading.overlay->intersect(ray)) {
+                const Colour surface = shading.overlay_colour(*seen);
+                // hidden: lit as if facing the light, so that it reads the same at any angle
+                const bool nearest = !hit || seen->t <= hit->t * (1 + 1e-9);
+                const double lit = nearest ? intensity(*seen) : 0.8;
+                const double weight = nearest ? 1.0 : shading.overlay_weight;
+                for (std::size_t c = 0; c < 3; ++c)
+                    colour[c] = weight * surface[c] * lit + (1 - weight) * colour[c];
+            }
         }
         const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
                                 static_cast<std::size_t>(x)) *

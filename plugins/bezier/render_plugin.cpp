@@ -26,6 +26,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "annotation.hpp"
 #include "command_line.hpp"
 #include "flat_subdivision.hpp"
 #include "mesh_surface.hpp"
@@ -129,6 +130,9 @@ struct CommandOptions {
     double flatness = PatchSceneOptions{}.flatness;
     std::string colour;  // empty: quality for meshes, plain for patches
     std::optional<int> cut_label;
+    std::vector<Point> tool;  // --tool: a point, a segment or a triangle drawn over the picture
+    std::string title;        // --title
+    double explode = 0;       // --explode
     bool json = false;
     // which of the above were given (the patch-only options refuse meshes)
     bool segments_given = false, flatness_given = false;
@@ -183,6 +187,19 @@ std::variant<Camera, std::string> parse_camera(const std::string& text) {
     return camera;
 }
 
+// "x,y,z[,x,y,z[,x,y,z]]" as one to three points; the reason otherwise.
+std::variant<std::vector<Point>, std::string> parse_tool(const std::string& text) {
+    const auto list = parse_number_list(text);
+    if (const std::string* error = std::get_if<std::string>(&list))
+        return *error + " (a point, a segment or a triangle: 3, 6 or 9 numbers)";
+    const std::vector<double>& numbers = std::get<std::vector<double>>(list);
+    if (numbers.empty() || numbers.size() > 9 || numbers.size() % 3 != 0)
+        return "'" + text + "' is not a point, a segment or a triangle (3, 6 or 9 numbers x,y,z,...)";
+    std::vector<Point> points;
+    for (std::size_t i = 0; i < numbers.size(); i += 3) points.push_back({numbers[i], numbers[i + 1], numbers[i + 2]});
+    return points;
+}
+
 // Parses the command's arguments (without INPUT when `with_input` is false: run_on_mesh);
 // nullopt with `code` set when the command is done already (--help: 0; usage error: 2).
 std::optional<CommandOptions> parse(std::span<const std::string> args, bool with_input,
@@ -235,16 +252,32 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
         ->check(number_in(0, false, 1, true, "(0, 1]"))
         ->capture_default_str();
     app.add_option("--colour", options.colour,
-                   "quality (meshes' default: element aspect ratio, red bad -> blue good), label "
-                   "(a palette by element label; patches: by .bpt patch) or plain (grey; patches' "
-                   "default); faces on a cut are magenta")
-        ->check(CLI::IsMember({"quality", "label", "plain"}));
+                   "quality (meshes' default: element aspect ratio, red bad -> blue good, with a colour "
+                   "bar), label (a palette by element label; patches: by .bpt patch), piece (meshes: a "
+                   "palette by connected component) or plain (grey; patches' default); faces on a cut "
+                   "are magenta, seen through the body where it hides them")
+        ->check(CLI::IsMember({"quality", "label", "piece", "plain"}));
     int cut_label = 0;
     app.add_option("--cut-label", cut_label,
                    "Meshes: boundary faces with this face label are drawn as cut faces too (default: "
                    "9999, the label dissection gives the faces it opens; cut faces are also found as "
                    "boundary faces that coincide)")
         ->check(whole_number("LABEL"));
+    std::string tool;
+    app.add_option("--tool", tool,
+                   "Meshes: draw a tool over the picture: a point, a segment (a blade, a needle) or a "
+                   "triangle (a swept blade) as 3, 6 or 9 numbers x,y,z,...")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                const auto points = parse_tool(text);
+                return std::holds_alternative<std::string>(points) ? std::get<std::string>(points) : std::string();
+            },
+            "X,Y,Z,..."));
+    app.add_option("--title", options.title, "A line of text at the picture's top-left (a frame's step and time)");
+    app.add_option("--explode", options.explode,
+                   "Meshes: move each piece (connected component) away from the middle by F times its "
+                   "centre's distance from it, to show the pieces of a cut apart, 0 <= F <= 10")
+        ->check(number_in(0, true, 10, true, "[0, 10]"));
     app.add_flag("--json", options.json, "Print one JSON object instead of the summary line");
     if (with_input)
         add_read_options(app, options.reading);
@@ -254,6 +287,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
     }
     if (app.count("--cut-label") > 0)
         options.cut_label = cut_label;
+    if (!tool.empty()) options.tool = std::get<std::vector<Point>>(parse_tool(tool));
     options.segments_given = app.count("--segments") > 0;
     options.flatness_given = app.count("--flatness") > 0;
     return options;
@@ -296,6 +330,11 @@ struct Drawing {
     std::function<Colour(const SceneHit&)> colour;
     nlohmann::ordered_json facts;  // kind-specific JSON keys
     std::string summary;           // e.g. "64 patches"
+    // meshes: the cut faces again, drawn through the body where it hides them (Shading::overlay)
+    std::optional<Scene> cuts;
+    std::vector<Point> fit_points;  // meshes: what the default camera fits (empty: frame() the scene)
+    std::uint32_t pieces = 0;       // meshes: connected components
+    std::size_t cut_triangles = 0;
 };
 
 using Seconds = std::chrono::duration<double>;
@@ -391,7 +430,7 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
             return by_label ? label_colour(static_cast<int>(hit.primitive / 2)) : plain_colour();
         };
         return Drawing{std::move(scene), options.colour.empty() ? "plain" : options.colour, colour,
-                       facts, plural(patches.size(), "patch", "patches")};
+                       facts, plural(patches.size(), "patch", "patches"), std::nullopt, {}, 0, 0};
     }
     // the largest count within max_tessellation_triangles, and within max_tessellation_steps:
     // a vertex costs one de Casteljau evaluation at the highest degree, n(n+1)(n+2)/6 steps
@@ -443,7 +482,36 @@ std::optional<Drawing> patch_drawing(const CommandOptions& options, std::ostream
     return Drawing{std::move(scene), options.colour.empty() ? "plain" : options.colour, colour,
                    facts,
                    plural(patches.size(), "patch", "patches") + " tessellated (" +
-                       std::to_string(segments) + " segments)"};
+                       std::to_string(segments) + " segments)",
+                   std::nullopt, {}, 0, 0};
+}
+
+// --explode F: each piece's vertices moved by F x (the piece's centre - the middle of all), the
+// centres those of the pieces' surface vertices. A vertex is in one piece only (the kernel holds
+// no vertex whose elements do not connect through faces: sxk/io.hpp, pinched vertices).
+void explode(MeshSurface& surface, double factor) {
+    std::vector<std::uint32_t> piece_of(surface.soup.vertices.size(), 0);
+    for (std::size_t i = 0; i < surface.keys.size(); ++i)
+        for (const std::uint32_t v : surface.soup.triangles[i]) piece_of[v] = surface.keys[i].piece;
+    std::vector<Point> centre(surface.pieces, Point{0, 0, 0});
+    std::vector<double> count(surface.pieces, 0);
+    for (std::size_t v = 0; v < piece_of.size(); ++v) {
+        for (std::size_t q = 0; q < 3; ++q) centre[piece_of[v]][q] += surface.soup.vertices[v][q];
+        count[piece_of[v]] += 1;
+    }
+    Point middle{0, 0, 0};
+    double pieces = 0;
+    for (std::size_t p = 0; p < centre.size(); ++p)
+        if (count[p] > 0) {
+            centre[p] = scaled(1 / count[p], centre[p]);
+            for (std::size_t q = 0; q < 3; ++q) middle[q] += centre[p][q];
+            pieces += 1;
+        }
+    if (pieces < 2) return;
+    middle = scaled(1 / pieces, middle);
+    for (std::size_t v = 0; v < piece_of.size(); ++v)
+        for (std::size_t q = 0; q < 3; ++q)
+            surface.soup.vertices[v][q] += factor * (centre[piece_of[v]][q] - middle[q]);
 }
 
 Drawing mesh_drawing(const Mesh& mesh, const CommandOptions& options) {
@@ -463,6 +531,20 @@ Drawing mesh_drawing(const Mesh& mesh, const CommandOptions& options) {
                mesh.topological_dimension() == 3 ? "boundary triangles" : "triangles") +
         " (" + std::to_string(surface.cut_count()) + " on cuts)";
     const std::string scheme = options.colour.empty() ? "quality" : options.colour;
+    facts["pieces"] = surface.pieces;
+    if (options.explode > 0) explode(surface, options.explode);
+    // the cut faces again, alone: where the body hides them they are drawn through it
+    std::optional<Scene> cuts;
+    if (surface.cut_count() > 0) {
+        TriangleSoup cut_soup;
+        cut_soup.vertices = surface.soup.vertices;
+        for (std::size_t i = 0; i < surface.keys.size(); ++i)
+            if (surface.keys[i].cut) cut_soup.triangles.push_back(surface.soup.triangles[i]);
+        cuts = Scene::from_triangles(std::move(cut_soup));
+    }
+    std::vector<Point> fit_points = surface.soup.vertices;
+    const std::uint32_t pieces = surface.pieces;
+    const std::size_t cut_triangles = surface.cut_count();
     std::vector<SurfaceTriangleKeys> keys = std::move(surface.keys);
     Scene scene = Scene::from_triangles(std::move(surface.soup));
     auto colour = [scheme, keys = std::move(keys)](const SceneHit& hit) {
@@ -473,13 +555,66 @@ Drawing mesh_drawing(const Mesh& mesh, const CommandOptions& options) {
             return quality_colour(key.quality);
         if (scheme == "label")
             return label_colour(key.label);
+        if (scheme == "piece")
+            return label_colour(static_cast<int>(key.piece % 1000));
         return plain_colour();
     };
-    return Drawing{std::move(scene), scheme, colour, facts, summary};
+    return Drawing{std::move(scene), scheme, colour, facts, summary, std::move(cuts), std::move(fit_points),
+                   pieces, cut_triangles};
 }
 
 nlohmann::ordered_json point_json(const Point& p) {
     return {p[0], p[1], p[2]};
+}
+
+// The 8-bit sRGB colour of a linear one, for the marks drawn over a picture.
+pictures::Colour srgb(const Colour& linear) {
+    pictures::Colour encoded{};
+    for (std::size_t c = 0; c < 3; ++c) {
+        const double v = std::clamp(linear[c], 0.0, 1.0);
+        encoded[c] = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+    }
+    return encoded;
+}
+
+// Pictures smaller than this get no legend or colour bar: the text would cover them.
+constexpr int smallest_annotated_width = 200, smallest_annotated_height = 150;
+// The tool's colour: near black, which no surface colour is (the darkest shade of the palette's
+// darkest entry is lighter), so a blade reads against the body and the background.
+constexpr pictures::Colour tool_colour{0.08, 0.08, 0.12};
+
+// What is drawn over a picture: the title, the tool, the legend of what the colours mean, and
+// the colour bar of a scalar colouring.
+pictures::Annotation marks_of(const CommandOptions& options, const Drawing& drawing, const Camera& camera,
+                              const std::array<int, 2>& size) {
+    pictures::Annotation marks;
+    marks.title = options.title;
+    std::vector<std::array<double, 2>> tool;
+    for (const Point& p : options.tool)
+        if (const auto at = project(camera, size[0], size[1], p)) tool.push_back(*at);
+    const double width = std::max(3.0, size[1] / 120.0);
+    if (tool.size() == 1)
+        marks.dots.push_back({tool[0], tool_colour, width * 1.5});
+    else if (tool.size() > 1)
+        marks.lines.push_back({tool, tool_colour, width, tool.size() == 3, tool.size() == 3 ? 0.25 : 0.0});
+    if (size[0] < smallest_annotated_width || size[1] < smallest_annotated_height || drawing.fit_points.empty())
+        return marks;
+    if (drawing.scheme == "piece" && drawing.pieces > 1) {
+        const std::uint32_t listed = std::min<std::uint32_t>(drawing.pieces, 6);
+        for (std::uint32_t p = 0; p < listed; ++p)
+            marks.legend.push_back({"piece " + std::to_string(p + 1), srgb(label_colour(static_cast<int>(p)))});
+        if (drawing.pieces > listed)
+            marks.legend.back().text += " ... " + std::to_string(drawing.pieces) + " pieces";
+    }
+    if (drawing.cut_triangles > 0 || !options.tool.empty())
+        marks.legend.push_back({"cut faces", srgb(cut_colour())});
+    if (!options.tool.empty()) marks.legend.push_back({"tool", tool_colour});
+    if (drawing.scheme == "quality") {
+        pictures::Annotation::ColourBar bar{"aspect ratio / regular", "0 flat", "1 regular", {}};
+        for (const double q : {0.0, 0.25, 0.5, 0.75, 1.0}) bar.stops.push_back(srgb(quality_colour(q)));
+        marks.bar = std::move(bar);
+    }
+    return marks;
 }
 
 // Renders, writes and reports; the drawing is made. Returns the exit code.
@@ -487,7 +622,10 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
          double read_and_build_seconds, std::ostream& out, std::ostream& err) {
     const std::array<int, 2> size = *parse_size(options.size);
     Camera camera;
-    if (options.camera.empty()) {
+    if (options.camera.empty() && !drawing.fit_points.empty()) {
+        camera = fit(drawing.fit_points, planar ? planar_view : default_view, planar ? planar_up : default_up,
+                     options.fov, static_cast<double>(size[0]) / size[1]);
+    } else if (options.camera.empty()) {
         camera = frame(drawing.scene.bounds(), planar ? planar_view : default_view,
                        planar ? planar_up : default_up, options.fov);
     } else {
@@ -497,8 +635,13 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
 
     Shading shading;
     shading.colour = drawing.colour;
+    if (drawing.cuts) {
+        shading.overlay = &*drawing.cuts;
+        shading.overlay_colour = [](const SceneHit&) { return cut_colour(); };
+    }
     const auto start = std::chrono::steady_clock::now();
-    const Image image = render(drawing.scene, camera, size[0], size[1], shading);
+    Image image = render(drawing.scene, camera, size[0], size[1], shading);
+    annotate(image, marks_of(options, drawing, camera, size));
     const double render_seconds = seconds_since(start);
     try {
         write_png(options.output, image);
@@ -554,6 +697,9 @@ bool refuse_options_for(const CommandOptions& options, bool patches, std::ostrea
         why = "--colour quality needs a mesh; " + options.input + " holds patches";
     } else if (patches && options.cut_label) {
         why = "--cut-label needs a mesh; " + options.input + " holds patches";
+    } else if (patches && (options.colour == "piece" || !options.tool.empty() || options.explode > 0)) {
+        why = std::string(options.colour == "piece" ? "--colour piece" : !options.tool.empty() ? "--tool" : "--explode") +
+              " needs a mesh; " + options.input + " holds patches";
     } else if (!patches) {
         const char* given = options.tessellate       ? "--tessellate"
                             : options.segments_given ? "--segments"
@@ -685,6 +831,33 @@ std::string default_camera(const Mesh& mesh) {
     return text;
 }
 
+// RenderService::frame_view: one view for every picture of a run, fitted to the mesh as it is
+// (its deformed positions, the vertices in elements) with room for what moves (a margin of 8 %),
+// the picture shaped to the body (width / height within [0.4, 2.5]) with about `pixels` pixels.
+std::vector<std::string> frame_view(const Mesh& mesh, long long pixels) {
+    std::vector<Point> points;
+    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+        if (mesh.vertex_element(v) != invalid_id) points.push_back(mesh.deformed(v));
+    const bool planar = mesh.ambient_dimension() == 2;
+    const Point& from = planar ? planar_view : default_view;
+    const Point& up = planar ? planar_up : default_up;
+    const double aspect = std::clamp(extent_aspect(points, from, up), 0.4, 2.5);
+    const double area = static_cast<double>(std::clamp(pixels, 40000LL, max_pixels));
+    // even sides: the video encoders of --animation (ffmpeg's yuv420p) need them
+    const auto even = [](double side) { return std::max(2, 2 * static_cast<int>(std::lround(side / 2))); };
+    const int width = even(std::sqrt(area * aspect)), height = even(area / std::sqrt(area * aspect));
+    const Camera camera = fit(points, from, up, CommandOptions{}.fov, static_cast<double>(width) / height, 0.08);
+    std::string text;
+    char number[32];
+    for (const Point* p : {&camera.eye, &camera.target, &camera.up})
+        for (const double x : *p) {
+            std::snprintf(number, sizeof number, "%.17g,", x);
+            text += number;
+        }
+    text.pop_back();
+    return {"--size", std::to_string(width) + "x" + std::to_string(height), "--camera", text};
+}
+
 class BezierPlugin final : public Plugin {
 public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
@@ -694,7 +867,7 @@ public:
     }
 
 private:
-    RenderService m_service{&draw_mesh, &default_camera};
+    RenderService m_service{&draw_mesh, &default_camera, &frame_view};
     RenderCommand m_render;
     PluginCommand* m_commands[1] = {&m_render};
 };

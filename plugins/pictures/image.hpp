@@ -17,4 +17,8 @@ struct Image {
 // the file when it cannot be written.
 void write_png(const std::filesystem::path& path, const Image& image);
 
+// Reads a PNG file as 8-bit RGB (grey, palette and alpha converted by libpng; alpha composed on
+// black). Throws std::runtime_error("cannot read FILE: libpng: why").
+Image read_png(const std::filesystem::path& path);
+
 }  // namespace sxk::pictures
