@@ -21,6 +21,7 @@
 #include "planar_cut.hpp"
 #include "surface_cut.hpp"
 #include "svg_picture.hpp"
+#include "tool_frames.hpp"
 #include "sxk/atomic_write.hpp"
 #include "sxk/io.hpp"
 #include "sxk/plugin.hpp"
@@ -33,8 +34,13 @@ namespace sxk::delaunaycut {
 
 namespace {
 
+// The host's services (Plugin::attach), for --frames (the bezier plug-in's renderer). A global as
+// in the snapcut plug-in: a process loads the plug-in once, the last host to attach it is used.
+const sxk::Services* plugin_host = nullptr;
+
 struct CommandOptions {
     std::string input, path, output, svg, histogram, undo;
+    RecordingOptions recording;  // --frames, --animation, --series (tool_frames.hpp)
     Options cut;
     bool json = false;
     ReadOptions reading;
@@ -114,6 +120,7 @@ public:
                        "Draw the triangles' smallest and largest angles before and after the cut into FILE (SVG)")
             ->type_name("FILE");
         add_undo_option(app, options.undo);
+        add_recording_options(app, options.recording);
         app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut delaunay", out, err)) return *done;
@@ -205,19 +212,37 @@ public:
             last = [cutter]() -> const CutStepReport& { return cutter->last_step(); };
             session = std::move(*made);
         }
+        // --frames, --series: pictures by piece with the scalpel, and the series' files written as OUT is
+        WriteOptions writing;
+        writing.drop_unused_vertices = true;  // removals and contractions leave vertices in no element
+        auto recording = ToolRecording::open(
+            plugin_host, *mesh, options.recording,
+            {"cut delaunay", path.samples.size(),
+             {"--colour", "piece", "--cut-label", std::to_string(options.cut.cut_label)}, {}, writing},
+            err);
+        if (!recording) return 2;
+        // the scalpel at a sample: a blade from handle to tip (surfaces), a point (planar cuts)
+        const auto scalpel_at = [surface](const ToolSample& sample) {
+            const auto& v = sample.values;
+            return surface ? std::vector<Point>{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}
+                           : std::vector<Point>{{v[0], v[1], 0}};
+        };
+        if (!recording->step(*mesh, 0, path.samples.front().time, scalpel_at(path.samples.front()), err)) return 1;
         std::vector<ReplayedStep> steps;
         std::size_t entries = 0;
-        const auto started = std::chrono::steady_clock::now();
+        double seconds = 0;  // the cut's, without the pictures and files recorded
         for (const ToolSample& sample : path.samples) {
+            const auto started = std::chrono::steady_clock::now();
             if (auto stepped = step(sample); !stepped) {
                 err << "sxk: " << options.path << ':' << sample.line
                     << ": the step was refused (the mesh is as before it): " << stepped.reason() << '\n';
                 return 1;
             }
+            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             steps.push_back({sample.time, sample.line, last()});
             entries += steps.back().report.entries;
+            if (!recording->step(*mesh, steps.size(), sample.time, scalpel_at(sample), err)) return 1;
         }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (entries == 0) {
             err << "sxk: " << options.path << ':' << first_line
                 << (surface ? ": the blade never enters the surface (no movement meets an edge or takes the tip "
@@ -225,13 +250,12 @@ public:
                             : ": the scalpel never enters the mesh (no movement crosses its boundary inwards)\n");
             return 2;
         }
+        if (!recording->finish(*mesh, err)) return 1;
         const auto undoing = undo_steps(*session, options.undo, "cut delaunay", err);
         if (const int* code = std::get_if<int>(&undoing)) return *code;
         const std::size_t undone = std::get<std::size_t>(undoing);
         session->end();
 
-        WriteOptions writing;
-        writing.drop_unused_vertices = true;  // removals and contractions leave vertices in no element
         if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
         const AngleCounts angles_before = triangle_angle_degrees(before), angles_after = triangle_angle_degrees(*mesh);
         const IncisionDistance incision = surface ? incision_distance(*mesh, blades, options.cut.cut_label)
@@ -373,8 +397,16 @@ public:
         if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
         return {};
     }
+    void attach(const sxk::Services& services) override {
+        m_attached = &services;
+        plugin_host = &services;
+    }
+    ~DelaunaycutPlugin() override {
+        if (plugin_host == m_attached) plugin_host = nullptr;
+    }
 
 private:
+    const sxk::Services* m_attached = nullptr;
     CutDelaunayCommand m_cut;
     PluginCommand* m_commands[1] = {&m_cut};
     ToolFactory m_tools{&delaunaycut_tools, &begin_delaunaycut};

@@ -40,7 +40,8 @@ namespace {
 const sxk::Services* plugin_host = nullptr;
 
 struct CommandOptions {
-    std::string input, path, output, deform, frames, plot;
+    std::string input, path, output, deform, plot;
+    RecordingOptions recording;  // --frames, --animation, --series (tool_frames.hpp)
     std::optional<double> h_start;
     Options needle;
     bool json = false;
@@ -100,11 +101,7 @@ public:
                        "Refine the whole mesh to elements of this size first (thesis h_start; not a step)")
             ->check(number_in(0, false, 1e300, true, "(0, 1e300]"));
         add_needle_options(app, o.needle, &o.deform);
-        app.add_option("--frames", o.frames,
-                       "Write a picture of the mesh per step into folder DIR (made if missing): step-0000.png "
-                       "before the first step, then one per step; a planar mesh with the needle and its nodes, a "
-                       "tetrahedral one by the bezier plug-in's renderer")
-            ->type_name("DIR");
+        add_recording_options(app, o.recording);  // a planar mesh's pictures show the needle's nodes too
         app.add_option("--plot", o.plot,
                        "Draw the forces along the needle after the replay (PNG): per needle node, and "
                        "the friction thresholds");
@@ -229,24 +226,26 @@ public:
         }
         // --frames: a planar mesh drawn with its needle (planar_picture.hpp), a tetrahedral one by the
         // renderer; one view for every picture, framing the body before the first step
-        std::optional<ToolFrames> frames;
+        const std::size_t steps = path.samples.size() + (o.settle > 0 ? 1 : 0);
+        ToolRecording::Drawer planar_drawer;
         if (planar) {
             const std::array<double, 4> view = picture_view(*mesh);
-            const std::size_t steps = path.samples.size() + (o.settle > 0 ? 1 : 0);
-            frames = ToolFrames::drawn_by(
-                o.frames, "needle",
-                [&mesh, &session, view, steps](const std::filesystem::path& file, std::size_t index) {
-                    const std::string title = index == 0 ? std::string("before the first step")
-                                                         : "step " + std::to_string(index) + " of " +
-                                                               std::to_string(steps);
-                    pictures::write_png(file, pictures::draw(planar_picture(*mesh, **session, view, title)));
-                },
-                err);
-        } else {
-            frames = ToolFrames::open(plugin_host, *mesh, o.frames, "needle", {"--colour", "plain"}, err);
+            planar_drawer = [&mesh, &session, view, steps](const std::filesystem::path& file, std::size_t index) {
+                const std::string title = index == 0 ? std::string("before the first step")
+                                                     : "step " + std::to_string(index) + " of " + std::to_string(steps);
+                pictures::write_png(file, pictures::draw(planar_picture(*mesh, **session, view, title)));
+            };
         }
-        if (!frames) return 2;
-        if (!frames->draw(*mesh, 0, err)) return 1;
+        auto recording = ToolRecording::open(plugin_host, *mesh, o.recording,
+                                             {"needle", steps, {"--colour", "piece"}, planar_drawer, {}}, err);
+        if (!recording) return 2;
+        // the needle at a sample: base to tip
+        const auto shaft = [planar](const ToolSample& sample) {
+            const auto& v = sample.values;
+            return planar ? std::vector<Point>{{v[0], v[1], 0}, {v[2], v[3], 0}}
+                          : std::vector<Point>{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+        };
+        if (!recording->step(*mesh, 0, path.samples.front().time, {}, err)) return 1;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -262,7 +261,7 @@ public:
                 return 1;
             }
             record.steps.push_back({sample.time, sample.line, *stepped});
-            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
+            if (!recording->step(*mesh, record.steps.size(), sample.time, shaft(sample), err)) return 1;
         }
         if (o.settle > 0 && (*session)->needle()) {
             const auto settled = (*session)->settle(o.settle);
@@ -272,7 +271,8 @@ public:
                 return 1;
             }
             record.steps.push_back({path.samples.back().time, path.samples.back().line, *settled});
-            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
+            if (!recording->step(*mesh, record.steps.size(), path.samples.back().time, shaft(path.samples.back()), err))
+                return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) {
@@ -290,6 +290,7 @@ public:
                 return 1;
             }
         }
+        if (!recording->finish(*mesh, err)) return 1;
         const auto undone = undo_steps(**session, o.undo, "needle", err);
         if (const int* code = std::get_if<int>(&undone)) return *code;
         record.undone = std::get<std::size_t>(undone);

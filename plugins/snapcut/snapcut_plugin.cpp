@@ -46,7 +46,8 @@ CutServices services_from(const sxk::Services* host) {
 }
 
 struct CommandOptions {
-    std::string input, path, output, deform, frames;
+    std::string input, path, output, deform;
+    RecordingOptions recording;  // --frames, --animation, --series (tool_frames.hpp)
     Options cut;
     bool json = false;
     std::string undo;  // "", a count, or "all"
@@ -60,7 +61,8 @@ void print_json(std::ostream& out, const CommandOptions& options, const CutServi
     json["file"] = options.input;
     json["path"] = options.path;
     json["output"] = options.output;
-    if (!options.frames.empty()) json["frames"] = options.frames;
+    if (!options.recording.frames.empty()) json["frames"] = options.recording.frames;
+    if (!options.recording.series.empty()) json["series"] = options.recording.series;
     json["options"] = to_json(options.cut, services.degeneracy != nullptr);
     const nlohmann::ordered_json body = to_json(record);  // named: items() is a view
     for (const auto& [key, value] : body.items()) json[key] = value;
@@ -114,11 +116,7 @@ public:
                        "Cut a deforming body: `sxk deform`'s options in one word, e.g. \"--fix z<0.001 "
                        "--force z>7.99:0,0,-50 --E 1e4\" (the elasticity plug-in; the body is solved "
                        "first and relaxed after every step)");
-        app.add_option("--frames", options.frames,
-                       "Write a picture of the mesh per step into folder DIR (made if missing): "
-                       "step-0000.png before the first step, then one per step, cut faces in magenta, "
-                       "one camera for all (the bezier plug-in's renderer)")
-            ->type_name("DIR");
+        add_recording_options(app, options.recording);
         app.add_flag("--json", options.json, "Print one JSON object (with a 'steps' array) instead of the table");
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut snap", out, err)) return *done;
@@ -223,12 +221,21 @@ public:
             err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
             return 2;
         }
-        // --frames: one camera, framing the body as the cut starts, for every picture
-        const auto frames = ToolFrames::open(plugin_host, *mesh, options.frames, "cut snap",
-                                             {"--colour", "plain", "--cut-label", std::to_string(options.cut.cut_label)},
-                                             err);
-        if (!frames) return 2;
-        if (!frames->draw(*mesh, 0, err)) return 1;
+        // --frames, --series: pictures by piece with the blade, and the series' files written as OUT is
+        WriteOptions writing;
+        writing.drop_unused_vertices = true;  // collapses leave vertices in no element
+        auto recording = ToolRecording::open(
+            plugin_host, *mesh, options.recording,
+            {"cut snap", path.size(), {"--colour", "piece", "--cut-label", std::to_string(options.cut.cut_label)}, {},
+             writing},
+            err);
+        if (!recording) return 2;
+        // the blade at a step: the scalpel from handle to tip, or the swept triangle
+        const auto blade = [](const Move& move) {
+            return move.triangle ? std::vector<Point>{move.triangle->a, move.triangle->b, move.triangle->c}
+                                 : std::vector<Point>{move.scalpel.handle, move.scalpel.tip};
+        };
+        if (!recording->step(*mesh, 0, path.front().time, blade(path.front()), err)) return 1;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -242,7 +249,7 @@ public:
                 return 1;
             }
             record.steps.push_back({move.time, move.line, (*session)->last_step()});
-            if (!frames->draw(*mesh, record.steps.size(), err)) return 1;
+            if (!recording->step(*mesh, record.steps.size(), move.time, blade(move), err)) return 1;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) { return step.report.edges_hit > 0; })) {
@@ -250,6 +257,7 @@ public:
                 << ": the scalpel never meets the mesh (no sweep crosses an edge)\n";
             return 2;
         }
+        if (!recording->finish(*mesh, err)) return 1;
         const auto undone = undo_steps(**session, options.undo, "cut snap", err);
         if (const int* code = std::get_if<int>(&undone)) return *code;
         record.undone = std::get<std::size_t>(undone);
@@ -267,8 +275,6 @@ public:
         record.elements_after = mesh->element_count();
         record.vertices_after = mesh->vertices_in_elements();
 
-        WriteOptions writing;
-        writing.drop_unused_vertices = true;  // collapses leave vertices in no element
         if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
         warn_unshown_relaxations(err, record);
         if (options.json) {
