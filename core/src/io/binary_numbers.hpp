@@ -11,12 +11,52 @@
 #include <array>
 #include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <string_view>
 #include <type_traits>
 
 namespace sxk::io {
+
+// The scalar types binary formats declare by name (VTK's Int8 ... Float64, PLY's char ... double):
+// one list, each format's reader mapping its own names onto it.
+enum class Scalar : std::uint8_t {
+    int8,
+    uint8,
+    int16,
+    uint16,
+    int32,
+    uint32,
+    int64,
+    uint64,
+    float32,
+    float64
+};
+
+constexpr std::size_t size_of(Scalar type) {
+    switch (type) {
+        case Scalar::int8:
+        case Scalar::uint8:
+            return 1;
+        case Scalar::int16:
+        case Scalar::uint16:
+            return 2;
+        case Scalar::int32:
+        case Scalar::uint32:
+        case Scalar::float32:
+            return 4;
+        case Scalar::int64:
+        case Scalar::uint64:
+        case Scalar::float64:
+            return 8;
+    }
+    return 1;
+}
+
+constexpr bool is_float(Scalar type) {
+    return type == Scalar::float32 || type == Scalar::float64;
+}
 
 // The T stored at `bytes` in little-endian order, or big-endian when `big_endian`.
 template <class T>

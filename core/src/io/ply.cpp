@@ -48,8 +48,6 @@ namespace sxk::io {
 
 namespace {
 
-enum class Scalar : std::uint8_t { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
-
 struct ScalarName {
     std::string_view name;
     Scalar type;
@@ -71,26 +69,8 @@ constexpr std::array<ScalarName, 16> scalar_names{{{"char", Scalar::int8},
                                                    {"double", Scalar::float64},
                                                    {"float64", Scalar::float64}}};
 
-std::size_t size_of(Scalar type) {
-    switch (type) {
-        case Scalar::int8:
-        case Scalar::uint8:
-            return 1;
-        case Scalar::int16:
-        case Scalar::uint16:
-            return 2;
-        case Scalar::int32:
-        case Scalar::uint32:
-        case Scalar::float32:
-            return 4;
-        case Scalar::float64:
-            break;
-    }
-    return 8;
-}
-
 bool is_integer(Scalar type) {
-    return type != Scalar::float32 && type != Scalar::float64;
+    return !is_float(type);
 }
 
 // The value at `bytes` (the caller checked that size_of(type) bytes are there).
@@ -108,6 +88,10 @@ double load_double(Scalar type, const char* bytes, bool big_endian) {
             return load_number<std::int32_t>(bytes, big_endian);
         case Scalar::uint32:
             return load_number<std::uint32_t>(bytes, big_endian);
+        case Scalar::int64:  // no PLY type name gives these (binary_numbers.hpp is shared with VTK)
+            return static_cast<double>(load_number<std::int64_t>(bytes, big_endian));
+        case Scalar::uint64:
+            return static_cast<double>(load_number<std::uint64_t>(bytes, big_endian));
         case Scalar::float32:
             return load_number<float>(bytes, big_endian);
         case Scalar::float64:

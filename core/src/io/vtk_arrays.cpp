@@ -25,30 +25,6 @@ void Where::fail(const std::string& reason) const {
 
 // ---- scalar types -----------------------------------------------------------------------------
 
-std::size_t size_of(Scalar type) {
-    switch (type) {
-        case Scalar::int8:
-        case Scalar::uint8:
-            return 1;
-        case Scalar::int16:
-        case Scalar::uint16:
-            return 2;
-        case Scalar::int32:
-        case Scalar::uint32:
-        case Scalar::float32:
-            return 4;
-        case Scalar::int64:
-        case Scalar::uint64:
-        case Scalar::float64:
-            return 8;
-    }
-    return 1;
-}
-
-bool is_float(Scalar type) {
-    return type == Scalar::float32 || type == Scalar::float64;
-}
-
 std::optional<Scalar> xml_scalar(std::string_view name) {
     struct Entry {
         std::string_view name;

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "binary_numbers.hpp"
 #include "raw_mesh.hpp"
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
@@ -31,9 +32,6 @@ struct Where {
 };
 
 // ---- scalar types -----------------------------------------------------------------------------
-enum class Scalar { int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64 };
-std::size_t size_of(Scalar type);
-bool is_float(Scalar type);
 // XML names: Int8 ... UInt64, Float32, Float64 (and "Char"/"UInt8"-style aliases VTK accepts).
 std::optional<Scalar> xml_scalar(std::string_view name);
 std::string_view xml_name(Scalar type);

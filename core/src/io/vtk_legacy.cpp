@@ -35,8 +35,6 @@ namespace sxk::io {
 
 namespace {
 
-using vtk::Scalar;
-
 std::string lower(std::string_view text) {
     std::string result(text);
     std::transform(result.begin(), result.end(), result.begin(),
@@ -365,7 +363,7 @@ private:
     // ---- data ----------------------------------------------------------------------------------
     // The bytes of n binary values; "WHAT declares N values but only M bytes remain".
     std::span<const unsigned char> binary(std::size_t n, Scalar type, const std::string& what) {
-        const std::size_t size = vtk::size_of(type);
+        const std::size_t size = size_of(type);
         const std::size_t left = m_bytes.size() - m_at;
         if (n > left / size)
             fail(what + " declares " + std::to_string(n) + " values but only " +

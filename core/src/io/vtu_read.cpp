@@ -34,8 +34,6 @@ namespace sxk::io {
 
 namespace {
 
-using vtk::Scalar;
-
 class VtuReader {
 public:
     VtuReader(std::string_view bytes, const std::string& name) : m_bytes(bytes), m_name(name) {}
@@ -183,7 +181,7 @@ private:
             where.fail(array.what + " has " + std::to_string(found) + " components, " +
                        std::to_string(components) + " expected");
         const std::string format = node.attribute("format").value();
-        const std::size_t size = vtk::size_of(array.type);
+        const std::size_t size = size_of(array.type);
         if (count > std::numeric_limits<std::uint64_t>::max() / size)
             where.fail(array.what + " is too large");
         const std::uint64_t expected = count * size;
