@@ -119,19 +119,7 @@ std::string write_off(const Mesh& mesh, const WriteOptions& options) {
     out += ' ';
     append_number(out, surface.triangles.size());
     out += " 0\n";
-    for (VertexId v : surface.vertices) {
-        const Point& p = positions[v];
-        append_xyz(out, p);
-        out += '\n';
-    }
-    for (const auto& t : surface.triangles) {
-        out += '3';
-        for (VertexId v : t) {
-            out += ' ';
-            append_number(out, v);
-        }
-        out += '\n';
-    }
+    append_surface_lines(out, surface, positions);
     return out;
 }
 

@@ -522,18 +522,7 @@ std::string write_ply(const Mesh& mesh, const WriteOptions& options) {
     append_number(out, surface.triangles.size());
     out += "\nproperty list uchar int vertex_indices\nend_header\n";
     if (ascii) {
-        for (VertexId v : surface.vertices) {
-            append_xyz(out, positions[v]);
-            out += '\n';
-        }
-        for (const auto& t : surface.triangles) {
-            out += '3';
-            for (VertexId v : t) {
-                out += ' ';
-                append_number(out, v);
-            }
-            out += '\n';
-        }
+        append_surface_lines(out, surface, positions);
         return out;
     }
     for (VertexId v : surface.vertices)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "text.hpp"
+
 namespace sxk::io {
 
 std::span<const Point> chosen_positions(const Mesh& mesh, const WriteOptions& options) {
@@ -63,6 +65,21 @@ Surface triangle_surface(const Mesh& mesh) {
         surface.triangles.push_back({renumbered[v[0]], renumbered[v[1]], renumbered[v[2]]});
     }
     return surface;
+}
+
+void append_surface_lines(std::string& out, const Surface& surface, std::span<const Point> positions) {
+    for (VertexId v : surface.vertices) {
+        append_xyz(out, positions[v]);
+        out += '\n';
+    }
+    for (const auto& t : surface.triangles) {
+        out += '3';
+        for (VertexId v : t) {
+            out += ' ';
+            append_number(out, v);
+        }
+        out += '\n';
+    }
 }
 
 }  // namespace sxk::io

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -30,5 +31,9 @@ struct Surface {
     std::vector<std::array<VertexId, 3>> triangles;  // surface vertex numbers, oriented
 };
 Surface triangle_surface(const Mesh& mesh);
+
+// The surface as OFF and ASCII PLY write it after their headers: a line "x y z" per vertex,
+// then a line "3 a b c" per triangle (0-based vertex numbers).
+void append_surface_lines(std::string& out, const Surface& surface, std::span<const Point> positions);
 
 }  // namespace sxk::io
