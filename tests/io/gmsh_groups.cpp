@@ -15,17 +15,11 @@ namespace sxk {
 namespace {
 
 using test::data_file;
+using test::file_bytes;
 using test::expect_same_mesh;
 using test::planar_triangles;
 using test::scratch_dir;
 using test::two_tetrahedra;
-
-std::string file_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 Mesh write_then_read(const Mesh& mesh, const std::string& name, int version, Encoding encoding) {
     WriteOptions options;
@@ -49,7 +43,7 @@ TEST(GmshGroups, Version41PutsEveryEntityInAPhysicalGroupAndNamesLabelZero) {
     const Mesh mesh = unlabelled_tetrahedra();
     const auto path = scratch_dir() / "zero.msh";
     write_mesh(mesh, path);
-    const std::string text = file_text(path);
+    const std::string text = file_bytes(path);
     // element labels {0, 2}: 0 takes tag 1; face labels {-4, 5}: -4 takes tag 1
     EXPECT_NE(text.find("$PhysicalNames\n2\n2 1 \"label -4\"\n3 1 \"label 0\"\n$EndPhysicalNames\n"),
               std::string::npos)
@@ -67,7 +61,7 @@ TEST(GmshGroups, Version22WritesAGroupAndAnEntityOfAtLeastOne) {
     options.gmsh_version = 22;
     const auto path = scratch_dir() / "zero22.msh";
     write_mesh(mesh, path, options);
-    const std::string text = file_text(path);
+    const std::string text = file_bytes(path);
     // faces by vertices: {0,1,2} labelled 5 is element 1, {0,1,3} labelled -4 (group 1) element
     // 2; the tetrahedron labelled 0 (group 1) is element 3
     const std::size_t elements = text.find("$Elements\n4\n");
@@ -124,11 +118,11 @@ TEST(GmshGroups, BinaryFilesSayWhatTheyAre) {
     options.encoding = Encoding::binary;
     const auto path = scratch_dir() / "b.msh";
     write_mesh(two_tetrahedra(), path, options);
-    const std::string text = file_text(path);
+    const std::string text = file_bytes(path);
     EXPECT_EQ(text.substr(0, 32), std::string("$MeshFormat\n4.1 1 8\n\x01\0\0\0\n$EndMeshFormat\n", 32));
     options.gmsh_version = 22;
     write_mesh(two_tetrahedra(), path, options);
-    EXPECT_EQ(file_text(path).substr(0, 32), std::string("$MeshFormat\n2.2 1 8\n\x01\0\0\0\n$EndMeshFormat\n", 32));
+    EXPECT_EQ(file_bytes(path).substr(0, 32), std::string("$MeshFormat\n2.2 1 8\n\x01\0\0\0\n$EndMeshFormat\n", 32));
 }
 
 // Files Gmsh 4.8 wrote (tests/data/io/gmsh_made/make.py): a box, its volume in group 7 "bone",

@@ -7,6 +7,8 @@
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,6 +147,12 @@ inline std::filesystem::path scratch_dir() {
 
 inline std::filesystem::path data_file(const std::string& name) {
     return std::filesystem::path(SXK_TEST_DATA_DIR) / name;
+}
+
+// A file's bytes as they are (binary formats included).
+inline std::string file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace sxk::test

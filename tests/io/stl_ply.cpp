@@ -28,16 +28,12 @@ namespace sxk {
 namespace {
 
 using test::data_file;
+using test::file_bytes;
 using test::expect_same_mesh;
 using test::planar_triangles;
 using test::scratch_dir;
 using test::tetrahedron_surface;
 using test::two_tetrahedra;
-
-std::string file_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 Mesh read_bytes(const std::string& bytes, Format format, ReadReport* report = nullptr) {
     std::istringstream in(bytes);

@@ -14,14 +14,8 @@ namespace sxk {
 namespace {
 
 using test::expect_same_mesh;
+using test::file_bytes;
 using test::scratch_dir;
-
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::string written(const Mesh& mesh, const std::string& name, Encoding encoding,
                     bool quality = true) {
@@ -30,7 +24,7 @@ std::string written(const Mesh& mesh, const std::string& name, Encoding encoding
     options.encoding = encoding;
     options.quality_cell_data = quality;
     write_mesh(mesh, path, options);
-    return slurp(path);
+    return file_bytes(path);
 }
 
 Mesh read_text(const std::string& text, Format format, const std::string& name) {
