@@ -109,7 +109,6 @@ constexpr long long max_tessellation_triangles = 1LL << 24;
 // count's search measures several tessellations with 2.5 segments^2 more points each, so it
 // searches only counts whose tessellation takes a sixteenth of that.
 constexpr long long max_tessellation_steps = 1LL << 31;
-constexpr const char* known_inputs = ".bpt .mesh .msh .node .ele .off .obj";
 
 // Default views: patch files and 3D meshes from the front-left and above (z up, as the teapot
 // is), planar meshes from +z with y up.
@@ -212,7 +211,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
         "sxk render");
     if (with_input)
         app.add_option("INPUT", options.input,
-                       "Patch file (.bpt) or mesh file (.mesh .msh .node .ele .off .obj)")
+                       "Patch file (.bpt) or mesh file (" + std::string(known_mesh_extensions()) + ")")
             ->required();
     app.add_option("OUT", options.output, "Output picture (.png)")->required();
     app.add_option("--size", options.size,
@@ -739,8 +738,8 @@ public:
             return code;
         const bool patches = lowercase_extension(options->input) == ".bpt";
         if (!patches && !format_from_extension(options->input)) {
-            err << "sxk: " << options->input << ":0: unknown input format (known: " << known_inputs
-                << ")\n";
+            err << "sxk: " << options->input << ":0: unknown input format (known: .bpt "
+                << known_mesh_extensions() << ")\n";
             return 2;
         }
         if (refuse_options_for(*options, patches, err) || !check_output(options->output, err))

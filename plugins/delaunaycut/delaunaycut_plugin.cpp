@@ -111,7 +111,7 @@ public:
                        "Scalpel path: one sample per line, 'time x y' (planar), or 'time hx hy hz tx ty tz' (a "
                        "blade from its handle end to its tip, surfaces) (docs/formats.md \"Tool paths\")")
             ->required();
-        app.add_option("OUT", options.output, "Output mesh, format by extension (.mesh .msh .off .obj .vtu)")
+        app.add_option("OUT", options.output, "Output mesh, format by extension (" + std::string(known_mesh_extensions()) + ")")
             ->required();
         add_cut_options(app, options.cut);
         app.add_option("--svg", options.svg, "Planar cuts: draw the cut mesh with the path over it into FILE (SVG)")
@@ -125,9 +125,8 @@ public:
         add_read_options(app, options.reading);
         if (const auto done = parse_command_line(app, args, "cut delaunay", out, err)) return *done;
 
-        if (!format_from_extension(options.output)) {
-            err << "sxk: " << options.output
-                << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        if (const auto unknown = unknown_output_format(options.output)) {
+            err << "sxk: " << *unknown << '\n';
             return 2;
         }
         ToolPath path;

@@ -95,7 +95,7 @@ public:
                        "Needle path: one sample per line, 'time bx by tx ty' (2D) or 'time bx by bz tx ty "
                        "tz' (3D): base and tip (docs/formats.md)")
             ->required();
-        app.add_option("OUT", o.output, "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+        app.add_option("OUT", o.output, "Output mesh, format by extension (" + std::string(known_mesh_extensions()) + ")")
             ->required();
         app.add_option("--h-start", o.h_start,
                        "Refine the whole mesh to elements of this size first (thesis h_start; not a step)")
@@ -114,8 +114,8 @@ public:
         add_read_options(app, o.reading);
         if (const auto done = parse_command_line(app, args, "needle", out, err)) return *done;
 
-        if (!format_from_extension(o.output)) {
-            err << "sxk: " << o.output << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        if (const auto unknown = unknown_output_format(o.output)) {
+            err << "sxk: " << *unknown << '\n';
             return 2;
         }
         if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {

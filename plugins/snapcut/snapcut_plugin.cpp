@@ -108,7 +108,7 @@ public:
                        "an .obj of the triangles it sweeps, in order, one step each (docs/formats.md)")
             ->required();
         app.add_option("OUT", options.output,
-                       "Output mesh, format by extension (.mesh .msh .node .ele .off .obj .vtu)")
+                       "Output mesh, format by extension (" + std::string(known_mesh_extensions()) + ")")
             ->required();
         add_cut_options(app, options.cut);
         add_undo_option(app, options.undo);
@@ -134,9 +134,8 @@ public:
         if (app.count("--far") > 0 && options.cut.local_vertices == 0)
             return usage("--far: only with --local N > 0 (it relaxes the far field that a local relaxation leaves)");
 
-        if (!format_from_extension(options.output)) {
-            err << "sxk: " << options.output
-                << ":0: unknown output format (known: .mesh .msh .node .ele .off .obj .vtu)\n";
+        if (const auto unknown = unknown_output_format(options.output)) {
+            err << "sxk: " << *unknown << '\n';
             return 2;
         }
         // the path's steps: scalpel samples, or swept triangles (an .obj)

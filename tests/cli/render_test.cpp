@@ -347,7 +347,7 @@ TEST(SxkRender, UnreadableInputs) {
     const fs::path text = f.input("notes.txt", "hello\n");
     f.expect_error(text.string(), {},
                    "sxk: " + text.string() +
-                       ":0: unknown input format (known: .bpt .mesh .msh .node .ele .off .obj)\n");
+                       ":0: unknown input format (known: .bpt .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply)\n");
 }
 
 TEST(SxkRender, BadOutputs) {
