@@ -310,7 +310,7 @@ TEST(SxkRender, OtherBadOptions) {
     f.expect_error(teapot, {"--flatness", "0"},
                    "sxk: render: --flatness: '0' is not in (0, 1]\n" + hint);
     f.expect_error(teapot, {"--colour", "rainbow"},
-                   "sxk: render: --colour: rainbow not in {quality,label,plain}\n" + hint);
+                   "sxk: render: --colour: rainbow not in {quality,label,piece,plain}\n" + hint);
     f.expect_error(
         teapot, {"--colour", "quality"},
         "sxk: render: --colour quality needs a mesh; " + teapot + " holds patches\n" + hint);
