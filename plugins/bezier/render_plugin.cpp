@@ -812,13 +812,16 @@ Outcome<Done> draw_mesh(const Mesh& mesh, const std::filesystem::path& output,
 }
 
 // RenderService::default_camera: frame() from the default view, as draw() frames a mesh.
-std::string default_camera(const Mesh& mesh) {
+// The deformed positions of the vertices in elements: what a picture of the mesh shows.
+std::vector<Point> shown_points(const Mesh& mesh) {
     std::vector<Point> points;
     for (VertexId v = 0; v < mesh.vertex_count(); ++v)
         if (mesh.vertex_element(v) != invalid_id) points.push_back(mesh.deformed(v));
-    const bool planar = mesh.ambient_dimension() == 2;
-    const Camera camera = frame(box_of(points), planar ? planar_view : default_view, planar ? planar_up : default_up,
-                                CommandOptions{}.fov);
+    return points;
+}
+
+// "eye,target,up" as --camera reads it, every coordinate in round-trip precision.
+std::string camera_text(const Camera& camera) {
     std::string text;
     char number[32];
     for (const Point* p : {&camera.eye, &camera.target, &camera.up})
@@ -830,13 +833,19 @@ std::string default_camera(const Mesh& mesh) {
     return text;
 }
 
+std::string default_camera(const Mesh& mesh) {
+    const std::vector<Point> points = shown_points(mesh);
+    const bool planar = mesh.ambient_dimension() == 2;
+    const Camera camera = frame(box_of(points), planar ? planar_view : default_view, planar ? planar_up : default_up,
+                                CommandOptions{}.fov);
+    return camera_text(camera);
+}
+
 // RenderService::frame_view: one view for every picture of a run, fitted to the mesh as it is
 // (its deformed positions, the vertices in elements) with room for what moves (a margin of 8 %),
 // the picture shaped to the body (width / height within [0.4, 2.5]) with about `pixels` pixels.
 std::vector<std::string> frame_view(const Mesh& mesh, long long pixels) {
-    std::vector<Point> points;
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-        if (mesh.vertex_element(v) != invalid_id) points.push_back(mesh.deformed(v));
+    const std::vector<Point> points = shown_points(mesh);
     const bool planar = mesh.ambient_dimension() == 2;
     const Point& from = planar ? planar_view : default_view;
     const Point& up = planar ? planar_up : default_up;
@@ -846,15 +855,7 @@ std::vector<std::string> frame_view(const Mesh& mesh, long long pixels) {
     const auto even = [](double side) { return std::max(2, 2 * static_cast<int>(std::lround(side / 2))); };
     const int width = even(std::sqrt(area * aspect)), height = even(area / std::sqrt(area * aspect));
     const Camera camera = fit(points, from, up, CommandOptions{}.fov, static_cast<double>(width) / height, 0.08);
-    std::string text;
-    char number[32];
-    for (const Point* p : {&camera.eye, &camera.target, &camera.up})
-        for (const double x : *p) {
-            std::snprintf(number, sizeof number, "%.17g,", x);
-            text += number;
-        }
-    text.pop_back();
-    return {"--size", std::to_string(width) + "x" + std::to_string(height), "--camera", text};
+    return {"--size", std::to_string(width) + "x" + std::to_string(height), "--camera", camera_text(camera)};
 }
 
 class BezierPlugin final : public Plugin {
