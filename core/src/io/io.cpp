@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <istream>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "formats.hpp"
 #include "sxk/atomic_write.hpp"
@@ -54,10 +57,6 @@ std::string_view to_string(Encoding encoding) {
     return "unknown";
 }
 
-std::string_view known_mesh_extensions() {
-    return ".mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply";
-}
-
 std::optional<Encoding> encoding_from_string(std::string_view name) {
     for (const Encoding encoding : {Encoding::standard, Encoding::ascii, Encoding::binary})
         if (to_string(encoding) == name)
@@ -65,28 +64,35 @@ std::optional<Encoding> encoding_from_string(std::string_view name) {
     return std::nullopt;
 }
 
+namespace {
+
+// Each extension and its format: the one list format_from_extension and known_mesh_extensions
+// read.
+constexpr std::pair<std::string_view, Format> extensions[] = {
+    {".mesh", Format::medit}, {".msh", Format::gmsh}, {".node", Format::tetgen},
+    {".ele", Format::tetgen}, {".off", Format::off},  {".obj", Format::obj},
+    {".vtu", Format::vtu},    {".vtk", Format::vtk},  {".stl", Format::stl},
+    {".ply", Format::ply}};
+
+}  // namespace
+
+std::string_view known_mesh_extensions() {
+    static const std::string list = [] {
+        std::string text;
+        for (const auto& [extension, format] : extensions)
+            text += (text.empty() ? "" : " ") + std::string(extension);
+        return text;
+    }();
+    return list;
+}
+
 std::optional<Format> format_from_extension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension == ".mesh")
-        return Format::medit;
-    if (extension == ".msh")
-        return Format::gmsh;
-    if (extension == ".node" || extension == ".ele")
-        return Format::tetgen;
-    if (extension == ".off")
-        return Format::off;
-    if (extension == ".obj")
-        return Format::obj;
-    if (extension == ".vtu")
-        return Format::vtu;
-    if (extension == ".vtk")
-        return Format::vtk;
-    if (extension == ".stl")
-        return Format::stl;
-    if (extension == ".ply")
-        return Format::ply;
+    for (const auto& [known, format] : extensions)
+        if (extension == known)
+            return format;
     return std::nullopt;
 }
 
@@ -207,6 +213,35 @@ Mesh read_tetgen(std::istream& node, const std::string& node_name, std::istream&
     return io::build_mesh(raw, ele_name, options, report);
 }
 
+namespace {
+
+// A one-file format's content (TetGen writes a set: write_mesh does it).
+std::string content_of(const Mesh& mesh, Format format, const WriteOptions& options) {
+    switch (format) {
+        case Format::medit:
+            return io::write_medit(mesh, options);
+        case Format::gmsh:
+            return io::write_gmsh(mesh, options);
+        case Format::off:
+            return io::write_off(mesh, options);
+        case Format::obj:
+            return io::write_obj(mesh, options);
+        case Format::vtu:
+            return io::write_vtu(mesh, options);
+        case Format::vtk:
+            return io::write_vtk(mesh, options);
+        case Format::stl:
+            return io::write_stl(mesh, options);
+        case Format::ply:
+            return io::write_ply(mesh, options);
+        case Format::tetgen:
+            break;
+    }
+    throw std::logic_error("content_of: a TetGen mesh is a set of files");
+}
+
+}  // namespace
+
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
     const std::optional<Format> format = format_from_extension(path);
     if (!format)
@@ -235,28 +270,14 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
     }
     switch (*format) {
         case Format::medit:
-            write_file_atomically(path, io::write_medit(mesh, options));
-            return;
         case Format::gmsh:
-            write_file_atomically(path, io::write_gmsh(mesh, options));
-            return;
         case Format::off:
-            write_file_atomically(path, io::write_off(mesh, options));
-            return;
         case Format::obj:
-            write_file_atomically(path, io::write_obj(mesh, options));
-            return;
         case Format::vtu:
-            write_file_atomically(path, io::write_vtu(mesh, options));
-            return;
         case Format::vtk:
-            write_file_atomically(path, io::write_vtk(mesh, options));
-            return;
         case Format::stl:
-            write_file_atomically(path, io::write_stl(mesh, options));
-            return;
         case Format::ply:
-            write_file_atomically(path, io::write_ply(mesh, options));
+            write_file_atomically(path, content_of(mesh, *format, options));
             return;
         case Format::tetgen: {
             const io::TetgenFiles files = io::write_tetgen(mesh, options);
