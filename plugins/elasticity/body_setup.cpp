@@ -183,8 +183,9 @@ std::optional<ParsedBody> parse_body_setup(const BodySetup& setup, std::ostream&
     return parsed;
 }
 
-std::optional<BuiltBody> build_body(const Mesh& mesh, const std::string& name, const BodySetup& setup,
+std::optional<BuiltBody> build_body(const Mesh& mesh, const std::string& file, const BodySetup& setup,
                                     const ParsedBody& parsed, std::ostream& err) {
+    const std::string name = file.empty() ? "the mesh" : file;
     const bool planar = mesh.topological_dimension() == 2 && mesh.ambient_dimension() == 2;
     if (setup.thickness && !planar) {
         err << "sxk: deform: --thickness is for triangle meshes in the plane (plane stress); "
@@ -196,7 +197,7 @@ std::optional<BuiltBody> build_body(const Mesh& mesh, const std::string& name, c
     auto body = ElasticBody::make(mesh, {.young = setup.young, .poisson = setup.poisson},
                                   {.model = model, .thickness = setup.thickness.value_or(1.0)});
     if (!body) {
-        err << "sxk: " << name << ":0: " << body.reason() << '\n';
+        err << "sxk: " << (file.empty() ? "" : file + ":0: ") << body.reason() << '\n';
         return std::nullopt;
     }
     BuiltBody result;

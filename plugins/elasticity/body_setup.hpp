@@ -62,8 +62,10 @@ struct BuiltBody {
     Model model = Model::linear;
 };
 
-// The body of `mesh` (named `name` in messages); nullopt with the message printed.
-std::optional<BuiltBody> build_body(const Mesh& mesh, const std::string& name, const BodySetup& setup,
+// The body of `mesh`; nullopt with the message printed. `file` names the mesh's file in messages
+// ("FILE:0: ..."); a caller without one (the service's simulate) passes "" and the messages
+// say "the mesh", with no location that is not a file's.
+std::optional<BuiltBody> build_body(const Mesh& mesh, const std::string& file, const BodySetup& setup,
                                     const ParsedBody& parsed, std::ostream& err);
 
 }  // namespace sxk::elasticity

@@ -303,7 +303,7 @@ Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, std::span<const std::s
     };
     const std::optional<ParsedBody> parsed = parse_body_setup(setup, messages);
     if (!parsed) return refused();
-    std::optional<BuiltBody> built = build_body(mesh, "the mesh", setup, *parsed, messages);
+    std::optional<BuiltBody> built = build_body(mesh, "", setup, *parsed, messages);
     if (!built) return refused();
     const SolveOptions options{.tolerance = setup.tolerance,
                                .max_iterations = setup.max_iterations,

@@ -442,5 +442,18 @@ TEST(ElasticityLocal, ANeoHookeanBodyRelaxesWholeAndHasNoFarField) {
     EXPECT_EQ(far->iterations, 0u);
 }
 
+// The service has no file name: its refusals about the mesh say so without a made-up location
+// (issue 47 saw "the mesh:0:"), and `sxk deform`, which has one, adds "FILE:0:" itself.
+TEST(ElasticityLocal, ServiceRefusalsAboutTheMeshNameNoFile) {
+    Mesh surface = *make_gaussian_bell({4, 4}, {1, 1}, 1, 1);
+    const std::vector<std::string> words{"--fix", "x<0.5"};
+    auto made = simulate(surface, words);
+    ASSERT_FALSE(made.ok());
+    EXPECT_EQ(made.reason(),
+              "elasticity: the mesh has 2-dimensional elements in 3-dimensional space; the body needs "
+              "tetrahedra in space or triangles in the plane");
+    EXPECT_TRUE(surface.validate().ok()) << surface.validate().reason();
+}
+
 }  // namespace
 }  // namespace sxk::elasticity
