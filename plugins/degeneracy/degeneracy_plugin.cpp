@@ -261,10 +261,17 @@ public:
         if (!mesh)
             return 2;
 
-        // a spinner while it works (nothing unless stderr is a terminal), gone before the report
+        // a spinner with the pass and its count while it works (nothing unless stderr is a
+        // terminal), gone before the report
         const Outcome<Report> report = [&] {
-            ProgressLine progress("removing degeneracies from " + options->input);
-            return remove_degeneracies(*mesh, options->removal);
+            const std::string what = "removing degeneracies from " + options->input;
+            ProgressLine progress(what);
+            Options removal = options->removal;
+            removal.progress = [&](const Progress& p) {
+                progress.set_label(what + ": pass " + std::to_string(p.pass) + " (" + p.stage + "), " +
+                                   std::to_string(p.done) + " of " + std::to_string(p.listed));
+            };
+            return remove_degeneracies(*mesh, removal);
         }();
         if (!report) {
             err << "sxk: " << options->input << ": " << report.reason() << '\n';

@@ -20,8 +20,9 @@ namespace sxk::degeneracy {
 
 struct DegeneracyService {
     static constexpr std::string_view service_id = "sxk.degeneracy";
-    // 1 was the untyped "sxk.degeneracy/1"; 2 had refusals without a code and no remaining_codes
-    static constexpr std::uint32_t service_version = 3;
+    // 1 was the untyped "sxk.degeneracy/1"; 2 had refusals without a code and no remaining_codes;
+    // 3 had no Options::progress
+    static constexpr std::uint32_t service_version = 4;
 
     Outcome<Report> (*remove)(Mesh& mesh, const Options& options);
     Outcome<Report> (*remove_among)(Mesh& mesh, std::span<const ElementId> candidates, const Options& options);

@@ -39,6 +39,9 @@ std::vector<Simplex> MoveStep::removed() const {
 }
 
 void MoveStep::keep() { (void)m_journal.commit(); }    // begin() opened the step
-void MoveStep::undo() { (void)m_journal.rollback(); }  // begin() opened the step
+void MoveStep::undo() {
+    (void)m_journal.rollback();  // begin() opened the step
+    m_log.truncate(m_touched_start, m_events_start);
+}
 
 }  // namespace sxk::degeneracy::detail

@@ -8,7 +8,8 @@
 //   created()    the move's new or changed elements still in the mesh
 //   removed()    the elements of before the move that it removed (their simplexes)
 //   keep()       commit: the move stays (inside the run's step, or the application's)
-//   undo()       rollback: the mesh is as before begin(), ids included
+//   undo()       rollback: the mesh is as before begin(), ids included, and the move log
+//                forgets the move (its events and the rollback's own)
 //
 // Follow-up moves (removals of what a move made) are steps nested inside the move's: undoing
 // the move undoes them too.
@@ -44,13 +45,19 @@ public:
         touched.push_back(element);
         events.push_back({Event::Kind::added, Simplex{}, mesh.simplex(element)});
     }
+    // Forgets what came after these sizes: a rolled-back move left no shape behind, and a log
+    // that kept every tried move grew to gigabytes on the femur (issue 47, defect 10).
+    void truncate(std::size_t touched_size, std::size_t events_size) {
+        touched.resize(touched_size);
+        events.resize(events_size);
+    }
     std::vector<ElementId> touched;
     std::vector<Event> events;
 };
 
 class MoveStep {
 public:
-    MoveStep(Mesh& mesh, EditJournal& journal, const MoveLog& log) : m_mesh(mesh), m_journal(journal), m_log(log) {}
+    MoveStep(Mesh& mesh, EditJournal& journal, MoveLog& log) : m_mesh(mesh), m_journal(journal), m_log(log) {}
 
     void begin();
     std::vector<ElementId> created() const;
@@ -61,7 +68,7 @@ public:
 private:
     Mesh& m_mesh;
     EditJournal& m_journal;
-    const MoveLog& m_log;
+    MoveLog& m_log;
     std::size_t m_touched_start = 0;
     std::size_t m_events_start = 0;
 };

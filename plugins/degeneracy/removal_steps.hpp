@@ -125,22 +125,37 @@ ElementId element_with(const Mesh& mesh, const Simplex& vertices);
 template <class Move, class Execute, class Count, class FollowUp>
 Refused try_moves(Mesh& mesh, std::span<const Move> moves, double before, const Options& options,
                   MoveStep& step, Effort effort, Execute execute, Count count, FollowUp follow_up) {
-    std::vector<char> refused(moves.size(), 0);  // by an operation: later rounds skip them
+    // Round 1 does every move once and notes of each whether an operation refused it (later
+    // rounds skip it) and whether round 2 would keep it. A move done again from the same mesh
+    // makes the same shapes (the rollback restores the mesh, ids included), so rounds 2 and 4 do
+    // again only the move they keep, not every move (issue 47, defect 10).
+    enum class Tried : char { refused, succeeded, pays_round_2 };
+    std::vector<Tried> tried(moves.size(), Tried::refused);
     const int rounds = effort == Effort::clean ? 1 : effort == Effort::paying ? 2 : effort == Effort::follow_up ? 3 : 4;
-    Refused why;
+    // the last refusal, and the last "does not pay" (later rounds said it last, once)
+    Refused why, not_paying;
+    auto keep = [&](const Move& move) {
+        step.keep();
+        count(move);
+        return Refused{};
+    };
     for (int round = 0; round < rounds; ++round)
         for (std::size_t i = 0; i < moves.size(); ++i) {
-            if (refused[i]) continue;
+            if (round > 0 && tried[i] == Tried::refused) continue;
+            if (round == 1 && tried[i] != Tried::pays_round_2) continue;
             step.begin();
             Refused refusal = execute(moves[i]);
             if (!refusal) {
+                if (round == 1 || round == 3) return keep(moves[i]);  // as round 1 found
                 const std::vector<ElementId> created = step.created();
                 const Shapes made = shapes_of(mesh, created, options);
                 bool pays = made.degenerate == 0;
-                if (round == 1)
-                    pays = made.degenerate < shapes_of(mesh, step.removed(), options).degenerate ||
-                           made.worst > before;
-                if (round == 3) pays = true;
+                if (round == 0 && !pays) {
+                    tried[i] = Tried::succeeded;
+                    if (rounds > 1 && (made.degenerate < shapes_of(mesh, step.removed(), options).degenerate ||
+                                       made.worst > before))
+                        tried[i] = Tried::pays_round_2;
+                }
                 if (round == 2) {
                     std::vector<Simplex> flat;
                     for (const ElementId t : created)
@@ -148,22 +163,17 @@ Refused try_moves(Mesh& mesh, std::span<const Move> moves, double before, const 
                             flat.emplace_back(+1, mesh.simplex(t).vertices());
                     pays = follow_up(flat) && shapes_of(mesh, step.created(), options).degenerate == 0;
                 }
-                if (pays) {
-                    step.keep();
-                    count(moves[i]);
-                    return std::nullopt;
-                }
+                if (pays) return keep(moves[i]);
                 refusal =
                     Refusal(RefusalCode::not_applicable,
                             "every move leaves a degenerate element (this one: aspect ratio " +
                                 std::to_string(made.worst) + ")");
-            } else {
-                refused[i] = 1;
+                not_paying = refusal;
             }
             step.undo();
             why = std::move(refusal);
         }
-    return why;
+    return rounds > 1 && not_paying ? not_paying : why;
 }
 
 // try_moves for a removal step `remove(mesh, element, options, tally, step, effort, inner)`

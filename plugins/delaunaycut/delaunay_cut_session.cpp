@@ -18,10 +18,10 @@ Outcome<Done> DelaunayCutSession::move(const Point& from, const Point& to, CutSt
     for (std::size_t k = 0; k < 2; ++k) {
         const double d = to[k] - from[k];
         if (d == 0) {
-            if (from[k] < m_low[k] || from[k] > m_high[k]) enter = 1, leave = 0;
+            if (from[k] < m_reach.low(k) || from[k] > m_reach.high(k)) enter = 1, leave = 0;
             continue;
         }
-        const double a = (m_low[k] - from[k]) / d, b = (m_high[k] - from[k]) / d;
+        const double a = (m_reach.low(k) - from[k]) / d, b = (m_reach.high(k) - from[k]) / d;
         enter = std::max(enter, std::min(a, b));
         leave = std::min(leave, std::max(a, b));
     }

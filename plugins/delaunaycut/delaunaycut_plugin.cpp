@@ -181,6 +181,14 @@ public:
             }
             SurfaceCutSession* cutter = made->get();
             h = cutter->mean_edge();
+            // a sample the session would refuse is a bad path: said with its line, before any step
+            for (const ToolSample& sample : path.samples) {
+                const auto& v = sample.values;
+                if (const auto far = cutter->too_far(Blade{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}})) {
+                    err << "sxk: " << options.path << ':' << sample.line << ": " << *far << '\n';
+                    return 2;
+                }
+            }
             step = [&, cutter](const ToolSample& sample) {
                 const auto& v = sample.values;
                 const Blade blade{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};

@@ -35,6 +35,7 @@
 #include <string_view>
 #include <vector>
 
+#include "scalpel_reach.hpp"
 #include "sxk/locate.hpp"
 #include "sxk/tool_session.hpp"
 
@@ -125,15 +126,9 @@ public:
     // The node the scalpel drags (Delaunay) or the cut's last node (subdivision); invalid_id outside.
     VertexId active_node() const { return m_state.active; }
     const std::optional<Point>& scalpel() const { return m_scalpel; }
-    // Why the scalpel may not be at p: more than `farthest` mean edges from the mesh's box (the
-    // box as the session began, grown by a mean edge). A movement's pieces are found along it in
-    // doubles, where the box must be wider than a rounding step of the movement: samples at 1e17
-    // around a unit square made the whole square one step, the movement one piece entered at a
-    // point ~16 units off, and the cut a dent (the hostile trial). At 1e12 mean edges a rounding
-    // step is still below 1e-3 of a mean edge. nullopt when p is near enough; apply() refuses the
-    // step otherwise (bad_argument).
-    static constexpr double farthest = 1e12;
-    std::optional<std::string> too_far(const Point& p) const;
+    // Why the scalpel may not be at p (ScalpelReach): nullopt when p is near enough; apply()
+    // refuses the step otherwise (bad_argument).
+    std::optional<std::string> too_far(const Point& p) const { return m_reach.too_far(p, "the scalpel"); }
 
 protected:
     PlanarCutSession(Mesh& mesh, const Options& options, double mean_edge);
@@ -180,7 +175,7 @@ protected:
     Options m_options;
     double m_mean_edge;
     // the mesh's bounding box when the session began, grown by a mean edge: the cuts stay in it
-    std::array<double, 2> m_low{}, m_high{};
+    ScalpelReach m_reach;
     State m_state;
 
 private:

@@ -1,11 +1,8 @@
 // What both planar cutting methods share (planar_cut.hpp): the scalpel, the undo of the session's
 // state, the entry through the boundary, and the report.
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <string>
 
 #include "cut_methods.hpp"
@@ -82,16 +79,8 @@ Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, co
 }
 
 PlanarCutSession::PlanarCutSession(Mesh& mesh, const Options& options, double mean_edge)
-    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_index(mesh, Positions::deformed) {
-    m_low = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    m_high = {-m_low[0], -m_low[1]};
-    for (const ElementId t : elements(mesh))
-        for (const VertexId v : mesh.simplex(t).vertices())
-            for (std::size_t k = 0; k < 2; ++k) {
-                m_low[k] = std::min(m_low[k], mesh.deformed(v)[k] - mean_edge);
-                m_high[k] = std::max(m_high[k], mesh.deformed(v)[k] + mean_edge);
-            }
-}
+    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_reach(mesh, mean_edge, 2),
+      m_index(mesh, Positions::deformed) {}
 
 PlanarCutSession::~PlanarCutSession() = default;
 
@@ -128,22 +117,6 @@ Outcome<Done> PlanarCutSession::apply(const ToolPose& pose, StepReport& report) 
     describe(m_last, report);
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return Done{};
-}
-
-std::optional<std::string> PlanarCutSession::too_far(const Point& p) const {
-    double off = 0;
-    for (std::size_t k = 0; k < 2; ++k) off = std::max({off, m_low[k] - p[k], p[k] - m_high[k]});
-    if (!(off > farthest * m_mean_edge)) return std::nullopt;
-    // the coordinates as given (shortest round-trip text), the distances to three digits
-    const auto exact = [](double value) {
-        char text[32];
-        return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
-    };
-    char distances[96];
-    std::snprintf(distances, sizeof distances, "%.3g from the mesh, more than 1e12 mean edges (%.3g)", off,
-                  farthest * m_mean_edge);
-    return "delaunaycut: the scalpel at (" + exact(p[0]) + ", " + exact(p[1]) + ") is " + distances +
-           ": so far away a movement cannot be placed on the mesh in doubles";
 }
 
 void PlanarCutSession::step_taken_back() {

@@ -41,9 +41,11 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "planar_cut.hpp"
+#include "scalpel_reach.hpp"
 
 namespace sxk::delaunaycut {
 
@@ -75,6 +77,9 @@ public:
     // The incisions' active nodes (and the entry nodes of incisions not yet begun), in order.
     std::vector<VertexId> active_nodes() const;
     const std::optional<Blade>& blade() const { return m_blade; }
+    // Why the blade may not be there (ScalpelReach: its tip or handle too far from the surface to
+    // place a movement in doubles); nullopt when it may. apply() refuses the step otherwise.
+    std::optional<std::string> too_far(const Blade& blade) const;
 
 private:
     SurfaceCutSession(Mesh& mesh, const Options& options, double mean_edge);
@@ -142,6 +147,7 @@ private:
     Options m_options;
     double m_mean_edge;
     double m_longest_edge;
+    ScalpelReach m_reach;  // the surface's box when the session began, grown by a mean edge
     SpatialIndex m_index;  // deformed positions: where the blade meets the surface first
     State m_state;
     std::optional<Blade> m_blade;

@@ -52,11 +52,16 @@ Outcome<std::unique_ptr<SurfaceCutSession>> SurfaceCutSession::make(Mesh& mesh, 
 
 SurfaceCutSession::SurfaceCutSession(Mesh& mesh, const Options& options, double mean_edge)
     : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_longest_edge(0),
-      m_index(mesh, Positions::deformed) {
+      m_reach(mesh, mean_edge, 3), m_index(mesh, Positions::deformed) {
     for (const ElementId t : elements(mesh)) m_longest_edge = std::max(m_longest_edge, longest_edge(mesh, t));
 }
 
 SurfaceCutSession::~SurfaceCutSession() = default;
+
+std::optional<std::string> SurfaceCutSession::too_far(const Blade& blade) const {
+    if (auto far = m_reach.too_far(blade.tip, "the blade's tip")) return far;
+    return m_reach.too_far(blade.handle, "the blade's handle");
+}
 
 std::vector<VertexId> SurfaceCutSession::active_nodes() const {
     std::vector<VertexId> nodes;
@@ -107,6 +112,7 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
         for (const double x : p)
             if (!std::isfinite(x))
                 return Refusal{RefusalCode::bad_argument, "delaunaycut: the blade's position is not finite"};
+    if (const std::optional<std::string> far = too_far(to)) return Refusal{RefusalCode::bad_argument, *far};
     const std::optional<Blade> blade_before = m_blade;
     const State state_before = m_state;
     if (m_blade) {

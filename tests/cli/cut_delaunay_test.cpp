@@ -179,6 +179,32 @@ TEST(SxkCutDelaunay, SamplesTooFarFromTheMeshAreRefusedWithTheirLine) {
     }
 }
 
+// The same for the line scalpel on a surface: a blade whose tip or handle is more than 1e12 mean
+// edges from the surface's box is refused with its line, and the bell is not written; one
+// 1e3 away on either side cuts it in two.
+TEST(SxkCutDelaunay, BladesTooFarFromTheSurfaceAreRefusedWithTheirLine) {
+    ScratchFolder folder;
+    const fs::path bell = folder / "bell.off", out = folder / "cut.off";
+    ASSERT_EQ(sxk({"generate", bell.string(), "--shape", "bell", "--cells", "14"}).exit_code, 0);
+    const fs::path far = folder / "far.path", near = folder / "near.path";
+    write_file(far, "0 -1 7 9 -1 7 -1\n1 1e17 7 9 1e17 7 -1\n");
+    const ProcessResult run = sxk({"cut", "delaunay", bell.string(), far.string(), out.string()});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.err.rfind("sxk: " + far.string() + ":2: delaunaycut: the blade's tip at (1e+17, 7, -1) is 1e+17 from "
+                            "the mesh, more than 1e12 mean edges (",
+                            0),
+              0u)
+        << run.err;
+    EXPECT_NE(run.err.find("): so far away a movement cannot be placed on the mesh in doubles\n"), std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(out));
+    write_file(near, "0 -1e3 7 9 -1e3 7 -1\n1 1e3 7 9 1e3 7 -1\n");
+    const ProcessResult cut = sxk({"cut", "delaunay", bell.string(), near.string(), out.string()});
+    ASSERT_EQ(cut.exit_code, 0) << cut.err;
+    EXPECT_EQ(sxk({"validate", out.string()}).exit_code, 0);
+    EXPECT_EQ(sxk({"components", out.string()}).out.substr(0, 14), "components: 2\n");
+}
+
 // The hostile trial: a picture that cannot be written made the command exit 1 after OUT was
 // replaced, and the message lacked "FILE:0:". Every output is checked before the cut: nothing is
 // written, OUT stays as it was.

@@ -476,7 +476,7 @@ TEST(DegeneracyService, AServiceOfAnotherVersionIsRefused) {
     PluginHost host;
     host.load_folder(SXK_PLUGIN_BUILD_DIR);
     EXPECT_EQ(host.service<OldDegeneracyService>().reason(),
-              "plug-in degeneracy offers sxk.degeneracy version 3, not version 1");
+              "plug-in degeneracy offers sxk.degeneracy version 4, not version 1");
     EXPECT_EQ(host.service<CutterService>().reason(), "no plug-in offers sxk.cutter");
     EXPECT_EQ(host.service<degeneracy::DegeneracyService>("stats").reason(), "plug-in stats offers sxk.degeneracy");
     EXPECT_EQ(host.service<degeneracy::DegeneracyService>("nothing").reason(), "no plug-in called nothing");

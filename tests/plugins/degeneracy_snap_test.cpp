@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -399,6 +400,44 @@ TEST(DegeneracySnappedCube, ALocalRunEditsOnlyAroundItsCandidatesAtAnyThreshold)
     EXPECT_EQ(kept, far.size());
     EXPECT_GE(mesh.element_count(), far.size());
     EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
+// The progress a run tells (Options::progress): for every pass but the cut free one, calls with
+// done 0, 1, ... below the count of its list, as the pass report gives it. At aspect ratio 0.2
+// a sixth of the cube is listed and the passes run on while moves make new degenerates.
+TEST(DegeneracySnappedCube, TellsItsProgressPassByPass) {
+    SnapReport snap;
+    Mesh mesh = snapped_thesis_cube(snap);
+    std::vector<Progress> told;
+    Options options;
+    options.aspect_ratio = 0.2;
+    options.progress = [&](const Progress& p) { told.push_back(p); };
+    const auto removed = remove_degeneracies(mesh, options);
+    ASSERT_TRUE(removed.ok()) << removed.reason();
+    print("cube at aspect ratio 0.2, whole mesh", *removed);
+    ASSERT_FALSE(told.empty());
+    std::size_t pass = 0, expected_done = 0;
+    for (const Progress& p : told) {
+        ASSERT_GE(p.pass, 1u);
+        ASSERT_LE(p.pass, removed->passes.size());
+        if (p.pass != pass) {
+            EXPECT_GT(p.pass, pass);
+            pass = p.pass;
+            expected_done = 0;
+        }
+        const PassReport& report = removed->passes[p.pass - 1];
+        EXPECT_EQ(std::string(p.stage), to_string(report.kind)) << "pass " << p.pass;
+        EXPECT_EQ(p.listed, report.found_total()) << "pass " << p.pass;
+        EXPECT_EQ(p.done, expected_done++) << "pass " << p.pass;
+        EXPECT_LT(p.done, p.listed);
+    }
+    std::size_t passes_with_a_list = 0;
+    for (const PassReport& report : removed->passes)
+        passes_with_a_list += report.kind != PassReport::Kind::cut_free && report.found_total() > 0;
+    std::set<std::size_t> passes_told;
+    for (const Progress& p : told) passes_told.insert(p.pass);
+    EXPECT_EQ(passes_told.size(), passes_with_a_list);
+    expect_done(mesh, *removed, 3072);
 }
 
 }  // namespace
