@@ -4,12 +4,23 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "undo_log.hpp"
 
 namespace sxk {
 
-struct EditJournal::Log : detail::UndoLog {};
+// A record of the mesh's stores and, in the history, what each side log recorded of the step (in
+// the order of attachment).
+struct EditJournal::Log : detail::UndoLog {
+    std::vector<std::pair<SideLog*, std::unique_ptr<SideRecord>>> sides;
+    bool holds_nothing() const { return empty() && sides.empty(); }
+};
+
+SideLog::~SideLog() {
+    if (m_journal != nullptr) m_journal->detach(*this);
+}
 
 EditJournal::EditJournal(Mesh& mesh) : m_mesh(mesh), m_open(std::make_unique<Log>()) {
     if (mesh.m_journal != nullptr) throw std::logic_error("EditJournal: the mesh already has a journal");
@@ -22,17 +33,43 @@ EditJournal::~EditJournal() {
     if (!m_marks.empty()) {
         m_mesh.m_undo = nullptr;
         m_open->undo(m_mesh, 0, nullptr);
+        for (auto side = m_sides.rbegin(); side != m_sides.rend(); ++side) side->log->rollback_to(side->marks.front());
     }
+    for (Side& side : m_sides) side.log->m_journal = nullptr;
     m_mesh.m_journal = nullptr;
+}
+
+Outcome<Done> EditJournal::attach(SideLog& log) {
+    if (log.m_journal == this) return Done{};
+    if (log.m_journal != nullptr)
+        return Refusal{RefusalCode::not_applicable, "attach: the side log is attached to another journal"};
+    Side side{&log, {}};
+    for (std::size_t level = 0; level < m_marks.size(); ++level) side.marks.push_back(log.mark());
+    m_sides.push_back(std::move(side));
+    log.m_journal = this;
+    return Done{};
+}
+
+void EditJournal::detach(SideLog& log) {
+    if (log.m_journal != this) return;
+    std::erase_if(m_sides, [&](const Side& side) { return side.log == &log; });
+    for (auto* history : {&m_undo, &m_redo}) {
+        for (std::unique_ptr<Log>& step : *history)
+            std::erase_if(step->sides, [&](const auto& record) { return record.first == &log; });
+        std::erase_if(*history, [](const std::unique_ptr<Log>& step) { return step->holds_nothing(); });
+    }
+    log.m_journal = nullptr;
 }
 
 void EditJournal::checkpoint() {
     if (m_marks.empty()) {
         m_open->clear();
+        m_open->sides.clear();  // a history that keeps no step dropped the last ones here
         m_revision_at_open = m_mesh.revision();
         m_mesh.m_undo = m_open.get();
     }
     m_marks.push_back(m_open->size());
+    for (Side& side : m_sides) side.marks.push_back(side.log->mark());
     m_mesh.new_record_stretch();
 }
 
@@ -41,10 +78,22 @@ std::size_t EditJournal::recorded() const { return m_marks.empty() ? 0 : m_open-
 Outcome<Done> EditJournal::commit() {
     if (m_marks.empty()) return Refusal{RefusalCode::not_applicable, "commit: no step is open"};
     m_marks.pop_back();
-    if (!m_marks.empty()) return Done{};
+    if (!m_marks.empty()) {
+        for (Side& side : m_sides) {
+            side.log->keep(side.marks.back());
+            side.marks.pop_back();
+        }
+        return Done{};
+    }
     m_mesh.m_undo = nullptr;
-    if (m_open->empty()) {
-        // Nothing happened, or all that happened was rolled back by inner steps: no step to undo.
+    for (Side& side : m_sides) {
+        if (std::unique_ptr<SideRecord> record = side.log->commit(side.marks.back()))
+            m_open->sides.emplace_back(side.log, std::move(record));
+        side.marks.pop_back();
+    }
+    if (m_open->holds_nothing()) {
+        // Nothing happened to the mesh or a side log, or all that happened was rolled back by
+        // inner steps: no step to undo.
         // The rollbacks moved the revision on, but the mesh is as when the step opened, so the
         // history still holds when it held then.
         if (m_revision_at_open == m_history_revision) m_history_revision = m_mesh.revision();
@@ -75,6 +124,10 @@ Outcome<Done> EditJournal::rollback() {
     // replaying must not record itself
     m_mesh.m_undo = nullptr;
     m_open->undo(m_mesh, mark, nullptr);
+    for (auto side = m_sides.rbegin(); side != m_sides.rend(); ++side) {
+        side->log->rollback_to(side->marks.back());
+        side->marks.pop_back();
+    }
     if (!m_marks.empty()) {
         m_mesh.m_undo = m_open.get();
         m_mesh.new_record_stretch();
@@ -110,6 +163,9 @@ Outcome<Done> EditJournal::replay_history(std::deque<std::unique_ptr<Log>>& from
     from.pop_back();
     auto inverse = std::make_unique<Log>();
     step->undo(m_mesh, 0, inverse.get());
+    for (auto record = step->sides.rbegin(); record != step->sides.rend(); ++record)
+        inverse->sides.emplace_back(record->first, record->first->replay(std::move(record->second)));
+    std::reverse(inverse->sides.begin(), inverse->sides.end());  // in the order of attachment again
     to.push_back(std::move(inverse));
     m_history_revision = m_mesh.revision();
     return Done{};

@@ -27,6 +27,10 @@
 // and writes through vertex_attribute spans; adding or removing vertex attributes and
 // assign_elements are refused inside a step.
 //
+// State kept beside the mesh (a tool's) joins the steps through side logs (side_log.hpp):
+// attach() one, and every step marks it, rolls it back, records it and undoes or redoes it with
+// the mesh. A step that changed only a side log is a step of the history too.
+//
 // One journal per mesh; the mesh must not be moved, and must outlive the journal. Destroying the
 // journal with steps open rolls them back (a step that was not committed did not happen).
 #pragma once
@@ -40,6 +44,7 @@
 #include "sxk/config.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
+#include "sxk/side_log.hpp"
 
 namespace sxk {
 
@@ -81,11 +86,26 @@ public:
     Outcome<Done> redo();
     void clear_history();
 
+    // ---- side logs --------------------------------------------------------------------------------
+    // Steps from now on mark, roll back, record and replay `log` with the mesh (side_log.hpp).
+    // Attached while steps are open, it is marked for each of them as it is now. Refuses a log
+    // attached to another journal; attaching it again here changes nothing.
+    Outcome<Done> attach(SideLog& log);
+    // Steps no longer concern `log`: its marks in open steps and its records in the history are
+    // dropped (a history step left with nothing to replay is dropped with them). Nothing when it
+    // is not attached here. A log's destructor detaches it.
+    void detach(SideLog& log);
+    std::size_t side_log_count() const { return m_sides.size(); }
+
     // The journal attached to `mesh`, or nullptr.
     static EditJournal* of(Mesh& mesh) { return mesh.m_journal; }
 
 private:
     struct Log;
+    struct Side {
+        SideLog* log;
+        std::vector<std::size_t> marks;  // one per open step, outermost first
+    };
     Outcome<Done> replay_history(std::deque<std::unique_ptr<Log>>& from,
                                  std::deque<std::unique_ptr<Log>>& to, const char* what);
 
@@ -94,6 +114,7 @@ private:
     std::vector<std::size_t> m_marks;  // where each open step starts in it
     std::deque<std::unique_ptr<Log>> m_undo;
     std::deque<std::unique_ptr<Log>> m_redo;
+    std::vector<Side> m_sides;  // in the order of attachment
     std::size_t m_history_limit = 100;
     std::uint64_t m_revision_at_open = 0;  // the mesh's revision when the outermost step opened
     std::uint64_t m_history_revision = 0;  // the mesh's revision after the history's last change
