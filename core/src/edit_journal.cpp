@@ -99,6 +99,7 @@ Outcome<Done> EditJournal::commit() {
         if (m_revision_at_open == m_history_revision) m_history_revision = m_mesh.revision();
         return Done{};
     }
+    ++m_steps_recorded;
     // the history holds only if nothing changed between its last step and this one
     if (m_revision_at_open != m_history_revision) clear_history();
     m_redo.clear();

@@ -58,7 +58,8 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     if (m_ended) return Refusal{RefusalCode::not_applicable, "step: the session has ended"};
     EditJournal& journal = m_journal.journal();
     const bool outermost = journal.depth() == 0;
-    bool recorded = false;  // an outermost step that recorded nothing leaves no history entry
+    // an outermost step that recorded nothing (in the mesh or a side log) leaves no history entry
+    const std::uint64_t recorded_before = journal.steps_recorded();
     const std::size_t vertices_before = m_mesh.vertex_count();
     const std::size_t elements_before = m_mesh.element_count();
     const bool in_step = m_mesh.revision() == m_revision;  // nothing changed since our last step
@@ -79,9 +80,9 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
             }
         } forget{m_step_elements, m_step_vertices};
         applied = apply(pose, report);
-        recorded = journal.recorded() > 0;
         if (applied) (void)step.commit();
     }  // a refusal is rolled back here
+    const bool recorded = journal.steps_recorded() != recorded_before;
     if (!applied) {
         if (in_step) m_revision = m_mesh.revision();  // the mesh is as after our last step again
         return applied.refusal();
@@ -103,6 +104,8 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     std::erase_if(report.vertices, [&](VertexId v) { return v >= m_mesh.vertex_count(); });
     return report;
 }
+
+Outcome<Done> ToolSession::keep_beside(SideLog& log) { return m_journal->attach(log); }
 
 Outcome<Done> ToolSession::undo_step() {
     if (m_kept.empty())

@@ -37,6 +37,7 @@
 
 #include "scalpel_reach.hpp"
 #include "sxk/locate.hpp"
+#include "sxk/side_log.hpp"
 #include "sxk/tool_session.hpp"
 
 namespace sxk::delaunaycut {
@@ -133,7 +134,6 @@ public:
 protected:
     PlanarCutSession(Mesh& mesh, const Options& options, double mean_edge);
     Outcome<Done> apply(const ToolPose& pose, StepReport& report) override;
-    void step_taken_back() override;
 
     // What a method keeps between movements (restored when a movement is refused or undone).
     struct State {
@@ -147,6 +147,7 @@ protected:
         // farther than twice eps_exit from the exit point
         std::vector<std::array<VertexId, 2>> forbidden;
         Point exit_point{};
+        bool operator==(const State&) const = default;
     };
 
     // The method: the scalpel moves from `from` to `to` (z = 0); edits through the mesh's
@@ -176,16 +177,19 @@ protected:
     double m_mean_edge;
     // the mesh's bounding box when the session began, grown by a mean edge: the cuts stay in it
     ScalpelReach m_reach;
-    State m_state;
+    // The scalpel and the method's state, a side log of the session's journal: a refused or
+    // undone movement takes them back with the mesh (ToolSession::keep_beside).
+    struct Beside {
+        std::optional<Point> scalpel;
+        State state;
+        bool operator==(const Beside&) const = default;
+    };
+    SnapshotLog<Beside> m_beside;
+    State& m_state = m_beside.edit().state;
 
 private:
     SpatialIndex m_index;  // deformed positions: where the scalpel meets the boundary
-    std::optional<Point> m_scalpel;
-    struct Undo {
-        std::optional<Point> scalpel;
-        State state;
-    };
-    std::vector<Undo> m_undo;  // per kept step: what to restore when it is taken back
+    std::optional<Point>& m_scalpel = m_beside.edit().scalpel;
     CutStepReport m_last;
 };
 

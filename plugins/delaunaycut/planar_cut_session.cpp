@@ -80,7 +80,9 @@ Outcome<std::unique_ptr<PlanarCutSession>> PlanarCutSession::make(Mesh& mesh, co
 
 PlanarCutSession::PlanarCutSession(Mesh& mesh, const Options& options, double mean_edge)
     : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_reach(mesh, mean_edge, 2),
-      m_index(mesh, Positions::deformed) {}
+      m_index(mesh, Positions::deformed) {
+    (void)keep_beside(m_beside);  // a new log, attached nowhere else
+}
 
 PlanarCutSession::~PlanarCutSession() = default;
 
@@ -98,32 +100,20 @@ Outcome<Done> PlanarCutSession::apply(const ToolPose& pose, StepReport& report) 
     if (!std::isfinite(to[0]) || !std::isfinite(to[1]))
         return Refusal{RefusalCode::bad_argument, "delaunaycut: the scalpel's position is not finite"};
     if (const std::optional<std::string> far = too_far(to)) return Refusal{RefusalCode::bad_argument, *far};
-    const std::optional<Point> scalpel_before = m_scalpel;
-    const State state_before = m_state;
     if (m_scalpel) {
-        if (auto moved = move(*m_scalpel, to, m_last); !moved) {
-            m_state = state_before;
-            return moved.refusal();
-        }
+        // a refusal: the step's rollback takes back the mesh, the scalpel and the state
+        if (auto moved = move(*m_scalpel, to, m_last); !moved) return moved.refusal();
         expire_forbidden(to);
     } else {
         report.actions.push_back("placed the scalpel");
     }
     m_scalpel = to;
-    m_undo.push_back({scalpel_before, state_before});
     m_last.phase = m_state.phase;
     m_last.elements = mesh().element_count();
     m_last.vertices = mesh().vertices_in_elements();
     describe(m_last, report);
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return Done{};
-}
-
-void PlanarCutSession::step_taken_back() {
-    if (m_undo.empty()) return;
-    m_scalpel = m_undo.back().scalpel;
-    m_state = std::move(m_undo.back().state);
-    m_undo.pop_back();
 }
 
 std::optional<PlanarCutSession::Entry> PlanarCutSession::first_entry(const Point& from, const Point& to) const {

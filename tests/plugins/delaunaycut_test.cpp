@@ -16,6 +16,7 @@
 #include "planar_cut.hpp"
 #include "svg_picture.hpp"
 #include "sxk/components.hpp"
+#include "sxk/edit_journal.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/plugin_host.hpp"
 #include "sxk/ops/make_delaunay_by_flips.hpp"
@@ -174,6 +175,45 @@ TEST(PlanarCut, AStepUndoneAndTakenAgainGivesTheSameMesh) {
     test::expect_same_state(mesh, before);
     ASSERT_TRUE((*session)->cut(path[20]).ok());
     test::expect_same_state(mesh, after);
+    ASSERT_TRUE(mesh.validate().ok());
+}
+
+// The scalpel and the cut's state are a side log of the journal (ToolSession::keep_beside): the
+// application's own undo and redo of a movement take them back and forth with the mesh, and
+// placing the scalpel, which edits nothing, is a step it can undo too.
+TEST(PlanarCut, TheApplicationsUndoAndRedoTakeTheScalpelWithTheMesh) {
+    Mesh mesh = square_grid(5);
+    EditJournal journal(mesh);
+    auto session = PlanarCutSession::make(mesh, with_method(Method::delaunay));
+    ASSERT_TRUE(session.ok());
+    PlanarCutSession& cutter = **session;
+    const std::vector<Point> path = recorded_path("square-curve.path");
+    ASSERT_TRUE(cutter.cut(path[0]).ok());  // placed: no edit
+    EXPECT_EQ(journal.undo_count(), 1u);
+    for (std::size_t i = 1; i < 20; ++i) ASSERT_TRUE(cutter.cut(path[i]).ok());
+    ASSERT_EQ(cutter.phase(), Phase::cutting);
+    const Mesh before = mesh;
+    const Point scalpel_before = *cutter.scalpel();
+    const VertexId active_before = cutter.active_node();
+    ASSERT_TRUE(cutter.cut(path[20]).ok());
+    const Mesh after = mesh;
+    const VertexId active_after = cutter.active_node();
+
+    ASSERT_TRUE(journal.undo().ok());
+    test::expect_same_state(mesh, before);
+    EXPECT_EQ(*cutter.scalpel(), scalpel_before);
+    EXPECT_EQ(cutter.active_node(), active_before);
+    EXPECT_EQ(cutter.phase(), Phase::cutting);
+    ASSERT_TRUE(journal.redo().ok());
+    test::expect_same_state(mesh, after);
+    EXPECT_EQ(*cutter.scalpel(), path[20]);
+    EXPECT_EQ(cutter.active_node(), active_after);
+
+    // every step back: the square as it was and no scalpel
+    while (journal.undo_count() > 0) ASSERT_TRUE(journal.undo().ok());
+    test::expect_same_state(mesh, square_grid(5));
+    EXPECT_FALSE(cutter.scalpel().has_value());
+    EXPECT_EQ(cutter.phase(), Phase::outside);
     ASSERT_TRUE(mesh.validate().ok());
 }
 

@@ -77,6 +77,10 @@ public:
     // Committed outermost steps kept for undo (default 100; 0 keeps none). Older ones are dropped.
     void set_history_limit(std::size_t steps);
     std::size_t undo_count() const { return m_undo.size(); }
+    // Outermost steps committed with something to undo (mesh edits or side log changes), since
+    // the journal began: a step that grew it is an entry of the history (unless the history keeps
+    // none), whatever the limit dropped.
+    std::uint64_t steps_recorded() const { return m_steps_recorded; }
     std::size_t redo_count() const { return m_redo.size(); }
     // Takes back the newest committed step (redo puts it back; a new commit forgets what could
     // be redone). Refuses, changing nothing, when a step is open, when there is nothing to undo
@@ -118,6 +122,7 @@ private:
     std::size_t m_history_limit = 100;
     std::uint64_t m_revision_at_open = 0;  // the mesh's revision when the outermost step opened
     std::uint64_t m_history_revision = 0;  // the mesh's revision after the history's last change
+    std::uint64_t m_steps_recorded = 0;
 };
 
 // A step for the length of a scope: opened at construction, committed by commit(), rolled back

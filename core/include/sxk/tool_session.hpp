@@ -87,6 +87,12 @@ protected:
     // pose) restores its state of before that step. A refused apply() restores its own state
     // before it returns.
     virtual void step_taken_back() {}
+    // State the tool keeps between steps, attached to the session's journal (side_log.hpp): every
+    // step marks it, a refused step takes it back, and undo_step (or an application's undo) takes
+    // it back with the mesh, so the tool needs no stack of its own nor step_taken_back(). Call it
+    // from the tool's constructor; the log, a member of the tool, detaches itself when destroyed.
+    // Refuses a log attached to another journal.
+    Outcome<Done> keep_beside(SideLog& log);
     // Inside apply(): the elements the step's edits have changed or added so far, in the order of
     // their events (an id may repeat, and may have been removed since). It only grows during a
     // step, so a tool that follows what its own edits made (a cutter carrying its marks over to
@@ -102,8 +108,8 @@ private:
     Mesh& m_mesh;
     JournalScope m_journal;
     // per kept step: an entry of the journal's history (undo_step takes it back), part of an
-    // application's open step (the application undoes it), or a step that changed nothing (the
-    // journal keeps no entry for it; undoing it is taking back nothing)
+    // application's open step (the application undoes it), or a step that changed nothing, in
+    // the mesh or a side log (the journal keeps no entry for it; undoing it is taking back nothing)
     enum class Kept : std::uint8_t { history_entry, application_step, nothing };
     std::vector<Kept> m_kept;
     std::uint64_t m_revision = 0;  // the mesh's revision after this session's last change
