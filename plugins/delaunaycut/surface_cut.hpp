@@ -52,6 +52,7 @@ namespace sxk::delaunaycut {
 // The blade: a segment from the handle end to the tip.
 struct Blade {
     Point handle{}, tip{};
+    bool operator==(const Blade&) const = default;
 };
 
 // The shortest piece of a movement, in mean edges (the blade's faster end): where d_max is shorter
@@ -84,7 +85,6 @@ public:
 private:
     SurfaceCutSession(Mesh& mesh, const Options& options, double mean_edge);
     Outcome<Done> apply(const ToolPose& pose, StepReport& report) override;
-    void step_taken_back() override;
 
     enum class Stage {
         entered,      // `node` is the entry node; the blade's pierce points are still near it
@@ -97,12 +97,14 @@ private:
         VertexId entry_node = invalid_id;  // constrained: the other end of the constrained edge
         Point entry{};                     // where the blade entered
         std::vector<Point> path;           // the pierce points since the incision's last split
+        bool operator==(const Incision&) const = default;
     };
     struct State {
         std::vector<Incision> incisions;
         // nodes where a cut ended (and their copies): no entry through their triangles until the
         // blade is twice eps_exit from them (it touches them as it leaves)
         std::vector<VertexId> forbidden;
+        bool operator==(const State&) const = default;
     };
 
     // surface_cut_session.cpp: the movement in pieces of at most d_max.
@@ -146,17 +148,22 @@ private:
 
     Options m_options;
     double m_mean_edge;
-    double m_longest_edge;
-    ScalpelReach m_reach;  // the surface's box when the session began, grown by a mean edge
-    SpatialIndex m_index;  // deformed positions: where the blade meets the surface first
-    State m_state;
-    std::optional<Blade> m_blade;
-    std::optional<Blade> m_exact;  // cut()'s blade, bit for bit (the pose rebuilds the handle in doubles)
-    struct Undo {
+    // The blade, the incisions and the longest edge (it grows with the cut's edges), a side log of
+    // the session's journal: a refused or undone movement takes them back with the mesh
+    // (ToolSession::keep_beside).
+    struct Beside {
         std::optional<Blade> blade;
         State state;
+        double longest_edge = 0;
+        bool operator==(const Beside&) const = default;
     };
-    std::vector<Undo> m_undo;
+    SnapshotLog<Beside> m_beside;
+    State& m_state = m_beside.edit().state;
+    std::optional<Blade>& m_blade = m_beside.edit().blade;
+    double& m_longest_edge = m_beside.edit().longest_edge;
+    ScalpelReach m_reach;  // the surface's box when the session began, grown by a mean edge
+    SpatialIndex m_index;  // deformed positions: where the blade meets the surface first
+    std::optional<Blade> m_exact;  // cut()'s blade, bit for bit (the pose rebuilds the handle in doubles)
     CutStepReport m_last;
 };
 

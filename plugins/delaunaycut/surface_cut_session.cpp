@@ -51,9 +51,10 @@ Outcome<std::unique_ptr<SurfaceCutSession>> SurfaceCutSession::make(Mesh& mesh, 
 }
 
 SurfaceCutSession::SurfaceCutSession(Mesh& mesh, const Options& options, double mean_edge)
-    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_longest_edge(0),
-      m_reach(mesh, mean_edge, 3), m_index(mesh, Positions::deformed) {
+    : ToolSession(mesh), m_options(options), m_mean_edge(mean_edge), m_reach(mesh, mean_edge, 3),
+      m_index(mesh, Positions::deformed) {
     for (const ElementId t : elements(mesh)) m_longest_edge = std::max(m_longest_edge, longest_edge(mesh, t));
+    (void)keep_beside(m_beside);  // a new log, attached nowhere else
 }
 
 SurfaceCutSession::~SurfaceCutSession() = default;
@@ -113,13 +114,9 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
             if (!std::isfinite(x))
                 return Refusal{RefusalCode::bad_argument, "delaunaycut: the blade's position is not finite"};
     if (const std::optional<std::string> far = too_far(to)) return Refusal{RefusalCode::bad_argument, *far};
-    const std::optional<Blade> blade_before = m_blade;
-    const State state_before = m_state;
     if (m_blade) {
-        if (auto moved = move(*m_blade, to, m_last); !moved) {
-            m_state = state_before;
-            return moved.refusal();
-        }
+        // a refusal: the step's rollback takes back the mesh, the blade and the incisions
+        if (auto moved = move(*m_blade, to, m_last); !moved) return moved.refusal();
         // the cut's ends accept entries again once the blade is away from them
         std::erase_if(m_state.forbidden,
                       [&](VertexId v) { return distance_to_blade(to, mesh().deformed(v)) > 2 * eps_exit(); });
@@ -127,7 +124,6 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
         report.actions.push_back("placed the blade");
     }
     m_blade = to;
-    m_undo.push_back({blade_before, state_before});
     for (const ElementId t : elements_edited_in_step())
         if (mesh().is_element(t)) m_longest_edge = std::max(m_longest_edge, longest_edge(mesh(), t));
     m_last.phase = m_state.incisions.empty() ? Phase::outside : Phase::cutting;
@@ -139,13 +135,6 @@ Outcome<Done> SurfaceCutSession::apply(const ToolPose& pose, StepReport& report)
         report.actions.push_back(std::to_string(m_last.retractions) + " incisions left by the blade");
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return Done{};
-}
-
-void SurfaceCutSession::step_taken_back() {
-    if (m_undo.empty()) return;
-    m_blade = m_undo.back().blade;
-    m_state = std::move(m_undo.back().state);
-    m_undo.pop_back();
 }
 
 double SurfaceCutSession::safe_move(const Blade& blade) const {

@@ -16,6 +16,7 @@
 #include "core/fixtures.hpp"
 #include "surface_cut.hpp"
 #include "sxk/components.hpp"
+#include "sxk/edit_journal.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/plugin_host.hpp"
 #include "sxk/quality.hpp"
@@ -184,6 +185,44 @@ TEST(DelaunayCutSurface, UndoingEveryMovementRestoresTheBellBitForBit) {
     (*session)->end();
     ASSERT_TRUE(mesh.validate().ok());
     test::expect_same_state(mesh, surface);
+}
+
+// The blade and the incisions are a side log of the journal (ToolSession::keep_beside): the
+// application's own undo and redo of a movement take them back and forth with the bell.
+TEST(DelaunayCutSurface, TheApplicationsUndoAndRedoTakeTheBladeWithTheMesh) {
+    const Mesh surface = bell();
+    Mesh mesh = surface;
+    EditJournal journal(mesh);
+    journal.set_history_limit(1000);
+    auto session = SurfaceCutSession::make(mesh, {});
+    ASSERT_TRUE(session.ok()) << session.reason();
+    SurfaceCutSession& cutter = **session;
+    const BladePath path = sweep({{-1, -2, 2.5}, {-1, 16, 2.6}}, {{15, -2, 2.5}, {15, 16, 2.6}}, 80);
+    std::size_t i = 0;
+    for (; i < path.size() && cutter.active_nodes().empty(); ++i)
+        ASSERT_TRUE(cutter.cut(path[i].handle, path[i].tip).ok());
+    ASSERT_FALSE(cutter.active_nodes().empty()) << "the sweep never entered the bell";
+    ASSERT_TRUE(cutter.cut(path[i].handle, path[i].tip).ok());  // one movement with incisions under way
+    const Mesh before = mesh;
+    const std::vector<VertexId> nodes_before = cutter.active_nodes();
+    ASSERT_TRUE(cutter.cut(path[i + 1].handle, path[i + 1].tip).ok());
+    const Mesh after = mesh;
+    const std::vector<VertexId> nodes_after = cutter.active_nodes();
+
+    ASSERT_TRUE(journal.undo().ok());
+    test::expect_same_state(mesh, before);
+    EXPECT_EQ(*cutter.blade(), path[i]);
+    EXPECT_EQ(cutter.active_nodes(), nodes_before);
+    ASSERT_TRUE(journal.redo().ok());
+    test::expect_same_state(mesh, after);
+    EXPECT_EQ(*cutter.blade(), path[i + 1]);
+    EXPECT_EQ(cutter.active_nodes(), nodes_after);
+
+    while (journal.undo_count() > 0) ASSERT_TRUE(journal.undo().ok());
+    test::expect_same_state(mesh, surface);
+    EXPECT_FALSE(cutter.blade().has_value());
+    EXPECT_TRUE(cutter.active_nodes().empty());
+    ASSERT_TRUE(mesh.validate().ok());
 }
 
 TEST(DelaunayCutSurface, RefusesPlanarMeshesTheSubdivisionMethodAndFlatTriangles) {
