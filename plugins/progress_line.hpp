@@ -49,6 +49,10 @@ public:
     ProgressLine(const ProgressLine&) = delete;
     ProgressLine& operator=(const ProgressLine&) = delete;
 
+    // Whether it draws at all (stderr is a terminal, or a stream was given): a caller that
+    // builds labels as it goes needs to build none otherwise.
+    bool drawing() const { return m_out != nullptr; }
+
     void set_label(std::string label) {
         std::lock_guard lock(m_mutex);
         m_label = std::move(label);

@@ -267,10 +267,11 @@ public:
             const std::string what = "removing degeneracies from " + options->input;
             ProgressLine progress(what);
             Options removal = options->removal;
-            removal.progress = [&](const Progress& p) {
-                progress.set_label(what + ": pass " + std::to_string(p.pass) + " (" + p.stage + "), " +
-                                   std::to_string(p.done) + " of " + std::to_string(p.listed));
-            };
+            if (progress.drawing())  // a label per element only where someone sees it
+                removal.progress = [&](const Progress& p) {
+                    progress.set_label(what + ": pass " + std::to_string(p.pass) + " (" + p.stage + "), " +
+                                       std::to_string(p.done) + " of " + std::to_string(p.listed));
+                };
             return remove_degeneracies(*mesh, removal);
         }();
         if (!report) {

@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <functional>
 #include <cstdio>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -170,6 +171,7 @@ public:
         std::unique_ptr<ToolSession> session;
         std::function<Outcome<StepReport>(const ToolSample&)> step;
         std::function<const CutStepReport&()> last;
+        std::function<std::optional<std::string>(const ToolSample&)> too_far;  // why the scalpel may not be there
         std::vector<Point> scalpel;
         std::vector<Blade> blades;
         double h = 0;
@@ -181,17 +183,13 @@ public:
             }
             SurfaceCutSession* cutter = made->get();
             h = cutter->mean_edge();
-            // a sample the session would refuse is a bad path: said with its line, before any step
-            for (const ToolSample& sample : path.samples) {
+            const auto blade_of = [](const ToolSample& sample) {
                 const auto& v = sample.values;
-                if (const auto far = cutter->too_far(Blade{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}})) {
-                    err << "sxk: " << options.path << ':' << sample.line << ": " << *far << '\n';
-                    return 2;
-                }
-            }
-            step = [&, cutter](const ToolSample& sample) {
-                const auto& v = sample.values;
-                const Blade blade{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+                return Blade{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+            };
+            too_far = [cutter, blade_of](const ToolSample& sample) { return cutter->too_far(blade_of(sample)); };
+            step = [&, cutter, blade_of](const ToolSample& sample) {
+                const Blade blade = blade_of(sample);
                 blades.push_back(blade);
                 return cutter->cut(blade.handle, blade.tip);
             };
@@ -205,12 +203,9 @@ public:
             }
             PlanarCutSession* cutter = made->get();
             h = cutter->mean_edge();
-            // a sample the session would refuse is a bad path: said with its line, before any step
-            for (const ToolSample& sample : path.samples)
-                if (const auto far = cutter->too_far({sample.values[0], sample.values[1], 0})) {
-                    err << "sxk: " << options.path << ':' << sample.line << ": " << *far << '\n';
-                    return 2;
-                }
+            too_far = [cutter](const ToolSample& sample) {
+                return cutter->too_far({sample.values[0], sample.values[1], 0});
+            };
             step = [&, cutter](const ToolSample& sample) {
                 const Point p{sample.values[0], sample.values[1], 0};
                 scalpel.push_back(p);
@@ -219,6 +214,12 @@ public:
             last = [cutter]() -> const CutStepReport& { return cutter->last_step(); };
             session = std::move(*made);
         }
+        // a sample the session would refuse is a bad path: said with its line, before any step
+        for (const ToolSample& sample : path.samples)
+            if (const auto far = too_far(sample)) {
+                err << "sxk: " << options.path << ':' << sample.line << ": " << *far << '\n';
+                return 2;
+            }
         // --frames, --series: pictures by piece with the scalpel, and the series' files written as OUT is
         WriteOptions writing;
         writing.drop_unused_vertices = true;  // removals and contractions leave vertices in no element
