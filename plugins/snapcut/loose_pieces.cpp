@@ -50,9 +50,14 @@ SeedGroups seed_groups(const Mesh& mesh, std::span<const ElementId> seeds) {
 
 // The groups' bodies, as a union-find forest over the n groups and one more (n) whose roots name
 // the bodies: groups joined by a pair of cut nodes (an original and its copy, whose
-// stars were one before the dissection) lie on one body as it was before the step. Groups that
-// no pair reaches (a degeneracy collapse may have removed both ends' elements from the seeds)
-// are put together in one body, the rule before bodies were told apart.
+// stars were one before the dissection) lie on one body as it was before the step. A group that
+// no pair reaches (a degeneracy collapse may have removed both ends' elements from the seeds, or
+// the removal cut free the elements that held a piece on) lies on the step's one body when the
+// pairs reach one body only: a step's seeds surround its edits, and the edits of a step that cut
+// one body lie on it. (A random through cut of the femur, SXK_SEED=3289562137 cut 5, separated 5
+// elements by the removal's cutting free 2; put in a body of their own, they raced nothing and
+// stayed in the mesh as a third piece.) When the pairs reach several bodies, the groups they do
+// not reach are put together in one body, the rule before bodies were told apart.
 std::vector<std::uint32_t> bodies_of(const SeedGroups& seeds, std::span<const std::pair<VertexId, VertexId>> cut_pairs) {
     const std::size_t n = seeds.groups.size();
     std::vector<std::uint32_t> parent(n + 1);  // n: the body of the groups no pair reaches
@@ -68,8 +73,17 @@ std::vector<std::uint32_t> bodies_of(const SeedGroups& seeds, std::span<const st
         reached[a->second] = reached[b->second] = 1;
         parent[root(a->second)] = root(b->second);
     }
+    // the body the unreached groups join: the pairs' one body, or n
+    std::uint32_t unreached_body = static_cast<std::uint32_t>(n);
+    bool several = false;
+    for (std::uint32_t i = 0; i < n && !several; ++i) {
+        if (!reached[i]) continue;
+        if (unreached_body == n) unreached_body = root(i);
+        else several = root(i) != unreached_body;
+    }
+    if (several) unreached_body = static_cast<std::uint32_t>(n);
     for (std::uint32_t i = 0; i < n; ++i)
-        if (!reached[i]) parent[root(i)] = root(static_cast<std::uint32_t>(n));
+        if (!reached[i]) parent[root(i)] = root(unreached_body);
     for (std::uint32_t i = 0; i <= n; ++i) parent[i] = root(i);
     return parent;
 }
