@@ -54,6 +54,7 @@ namespace sxk::needle {
 struct Needle {
     Point base{0, 0, 0};
     Point tip{0, 0, 0};
+    bool operator==(const Needle&) const = default;
 };
 
 // The friction along the shaft (thesis Fig. 6.4, after DiMaio and Salcudean): the dynamic
@@ -123,6 +124,7 @@ struct NeedleNode {
     double threshold = 0;  // the dynamic friction threshold, N (Friction over the node's share)
     double entered = 0;    // `along` when it was intercepted
     double axial = 0;      // the needle's force on the node along the axis at the last solve, N
+    bool operator==(const NeedleNode&) const = default;
 };
 
 // What one movement did.
@@ -181,20 +183,23 @@ public:
 
 protected:
     Outcome<Done> apply(const ToolPose& pose, StepReport& report) override;
-    void step_taken_back() override;
 
 private:
     NeedleSession(Mesh& mesh, const Options& options, elasticity::Simulation* simulation);
 
+    // The needle and its nodes, beside the mesh: taken back, undone and redone with it
+    // (m_beside, a side log of the session's journal).
     struct State {
         std::optional<Needle> needle;
         std::vector<NeedleNode> nodes;
         ElementId tip_element = invalid_id;  // a hint for locating the tip (deformed positions)
-        std::size_t bisection_mark = 0;      // m_bisection's undo_mark() then
+        bool operator==(const State&) const = default;
     };
     Outcome<Done> step_to(const Needle& needle, StepReport& words);
-    // The body's constraints and tool forces as `state` says (after an undo or a refusal).
-    void restore(State state);
+    // After the journal put the state back (a refusal's rollback, an undo, a redo): the body's
+    // constraints and tool forces as the state says, the nodes of `replaced` it no longer lists
+    // released.
+    void follow(const State& replaced);
     Outcome<Done> hold(const NeedleNode& node, const Needle& needle);
     // Options::relocate: moves v by -offset in both position sets; false (nothing moved) when that
     // would invert or flatten an element.
@@ -205,12 +210,11 @@ private:
     elasticity::Simulation* m_simulation;
     bool m_say_geometry_only = false;  // the first step tells that there is no body
     std::unique_ptr<SpatialIndex> m_reference_index, m_deformed_index;
-    // tetrahedral meshes: the bisection's marks (Maubach's on a Kuhn mesh, AMP's otherwise), taken
-    // back with the steps
+    // tetrahedral meshes: the bisection's marks (Maubach's on a Kuhn mesh, AMP's otherwise), a
+    // side log of the session's journal like m_beside
     std::unique_ptr<TetBisection> m_bisection;
-    std::optional<std::size_t> m_take_back;  // a refused step's marks, taken back before the next
-    State m_state;
-    std::vector<State> m_history;  // per kept step, the state before it
+    SnapshotLog<State> m_beside;
+    State& m_state = m_beside.edit();
     bool m_resync = false;         // the body reads its displacements from the mesh first
     std::size_t m_settle = 0;      // settle(): this step solves the whole body, at most so many iterations
     NeedleStepReport m_last;

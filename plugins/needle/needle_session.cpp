@@ -81,7 +81,10 @@ Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Op
         if (!marked) marked = TetBisection::with_amp_marking(mesh);
         if (!marked) return marked.refusal().prefixed("needle: ");
         session->m_bisection = std::make_unique<TetBisection>(std::move(*marked));
+        (void)session->keep_beside(*session->m_bisection);  // a new log, attached nowhere else
     }
+    (void)session->keep_beside(session->m_beside);
+    session->m_beside.on_restore([raw = session.get()](const State& replaced) { raw->follow(replaced); });
     return session;
 }
 
@@ -132,27 +135,8 @@ Outcome<Done> NeedleSession::apply(const ToolPose& pose, StepReport& report) {
     if (mesh().ambient_dimension() == 2) needle.base[2] = needle.tip[2] = 0;
     if (!finite(needle.base) || !finite(needle.tip) || !(pose.length > 0))
         return Refusal{RefusalCode::bad_argument, "needle: the pose is not a needle (length > 0, finite)"};
-    if (m_bisection && m_take_back) m_bisection->take_back(*m_take_back);
-    m_take_back.reset();
-    if (m_bisection) m_state.bisection_mark = m_bisection->undo_mark();
-    m_history.push_back(m_state);
-    auto stepped = step_to(needle, report);
-    if (!stepped) {
-        restore(m_history.back());
-        m_history.pop_back();
-        // the journal rolls the mesh back after this returns: the marks follow at the next step
-        if (m_bisection) m_take_back = m_state.bisection_mark;
-        return stepped.refusal();
-    }
-    return Done{};
-}
-
-void NeedleSession::step_taken_back() {
-    if (m_history.empty()) return;
-    restore(std::move(m_history.back()));
-    m_history.pop_back();
-    if (m_bisection) m_bisection->take_back(m_state.bisection_mark);
-    m_take_back.reset();
+    // a refusal: the journal takes the mesh, the marks and the state back together (follow())
+    return step_to(needle, report);
 }
 
 Outcome<Done> NeedleSession::hold(const NeedleNode& node, const Needle& needle) {
@@ -194,10 +178,10 @@ bool NeedleSession::relocate(VertexId v, const Point& offset) {
     return true;
 }
 
-void NeedleSession::restore(State state) {
+void NeedleSession::follow(const State& replaced) {
     if (m_simulation != nullptr) {
-        for (const NeedleNode& node : m_state.nodes) {
-            const bool kept = std::any_of(state.nodes.begin(), state.nodes.end(),
+        for (const NeedleNode& node : replaced.nodes) {
+            const bool kept = std::any_of(m_state.nodes.begin(), m_state.nodes.end(),
                                           [&](const NeedleNode& n) { return n.vertex == node.vertex; });
             if (kept) continue;
             // a vertex the undo removed is no longer the body's: nothing to release
@@ -205,9 +189,8 @@ void NeedleSession::restore(State state) {
             (void)m_simulation->set_tool_force(node.vertex, {0, 0, 0});
         }
     }
-    m_state = std::move(state);
-    // the mesh is taken back after this (a refusal) or was just now (an undo): the body reads its
-    // displacements from the mesh before the next step, and holds the nodes as they were
+    // the mesh was just put back: the body reads its displacements from the mesh before the next
+    // step, and holds the nodes as they were
     m_resync = true;
     if (m_simulation != nullptr && m_state.needle)
         for (const NeedleNode& node : m_state.nodes) (void)hold(node, *m_state.needle);

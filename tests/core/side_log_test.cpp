@@ -265,5 +265,29 @@ TEST(SideLog, AJournalDestroyedWithAStepOpenTakesBackTheLogs) {
     EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
 }
 
+// on_restore: told, after every rollback, undo and redo, the value it replaced, with the new
+// value in place (the needle re-holds the body's nodes so).
+TEST(SideLog, ASnapshotsFollowerHearsTheValueEachRestoreReplaced) {
+    Mesh mesh = test::unit_square();
+    EditJournal journal(mesh);
+    SnapshotLog<int> count(1);
+    std::vector<std::string> heard;
+    count.on_restore([&](const int& replaced) {
+        heard.push_back(std::to_string(replaced) + " -> " + std::to_string(count.get()));
+    });
+    ASSERT_TRUE(journal.attach(count).ok());
+    journal.checkpoint();
+    count.edit() = 5;
+    ASSERT_TRUE(journal.rollback().ok());
+    journal.checkpoint();
+    count.edit() = 7;
+    move_vertex_2(mesh, 2);
+    ASSERT_TRUE(journal.commit().ok());
+    ASSERT_TRUE(journal.undo().ok());
+    ASSERT_TRUE(journal.redo().ok());
+    EXPECT_EQ(heard, (std::vector<std::string>{"5 -> 1", "7 -> 1", "1 -> 7"}));
+    EXPECT_TRUE(mesh.validate().ok()) << mesh.validate().reason();
+}
+
 }  // namespace
 }  // namespace sxk

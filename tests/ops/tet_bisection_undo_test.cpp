@@ -1,7 +1,7 @@
-// TetBisection's take-back (sxk/ops/tet_bisection.hpp): a journal undo or rollback of bisections
-// makes the state stale; take_back restores the marks written since and lets it bisect again, with
-// the same result as never having bisected (both rules a tool uses: Maubach on a Kuhn cube, AMP on
-// a general mesh).
+// TetBisection's marks beside the mesh (sxk/ops/tet_bisection.hpp, sxk/side_log.hpp): attached to
+// the mesh's journal, a rollback, undo or redo of bisections takes the marks with the mesh and
+// leaves the state able to bisect, with the same result as never having bisected (both rules a
+// tool uses: Maubach on a Kuhn cube, AMP on a general mesh).
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -11,13 +11,34 @@
 #include "sxk/generators.hpp"
 #include "sxk/io.hpp"
 #include "sxk/ops/refine_around_tetrahedra.hpp"
+#include "sxk/ops/remove_elements.hpp"
 #include "sxk/ops/tet_bisection.hpp"
+#include "sxk/traversal.hpp"
 
 namespace sxk {
 namespace {
 
-// Refines around `a` in one journal step, undoes it, takes the marks back, then refines around
-// `b`; the same as refining around `b` alone on a fresh copy.
+// Every live element's marking, by element id.
+std::vector<TetMarking> markings(const TetBisection& state) {
+    std::vector<TetMarking> result(state.mesh().element_capacity());
+    for (const ElementId t : elements(state.mesh())) result[t] = state.marking(t);
+    return result;
+}
+
+void expect_same_markings(const std::vector<TetMarking>& a, const std::vector<TetMarking>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t t = 0; t < a.size(); ++t) {
+        EXPECT_EQ(a[t].vertices, b[t].vertices) << "element " << t;
+        EXPECT_EQ(a[t].acd_unmarked, b[t].acd_unmarked) << "element " << t;
+        EXPECT_EQ(a[t].bcd_unmarked, b[t].bcd_unmarked) << "element " << t;
+        EXPECT_EQ(a[t].flagged, b[t].flagged) << "element " << t;
+        EXPECT_EQ(a[t].generation, b[t].generation) << "element " << t;
+    }
+}
+
+// Refines around `a` in one journal step, undoes it, redoes it and undoes it again, then rolls a
+// second refinement around `a` back, and refines around `b`: the same as refining around `b`
+// alone on a fresh copy. The journal takes the marks with the mesh every time.
 void expect_take_back_is_never_having_bisected(const Mesh& start, bool kuhn, const Point& a, const Point& b,
                                                double h) {
     Mesh mesh = start, fresh = start;
@@ -25,24 +46,30 @@ void expect_take_back_is_never_having_bisected(const Mesh& start, bool kuhn, con
     auto other = kuhn ? TetBisection::for_kuhn_mesh(fresh) : TetBisection::with_amp_marking(fresh);
     ASSERT_TRUE(state.ok() && other.ok());
     EditJournal journal(mesh);
-    const std::size_t mark = state->undo_mark();
+    ASSERT_TRUE(journal.attach(*state).ok());
+    const std::vector<TetMarking> before = markings(*state);
     journal.checkpoint();
     auto first = refine_around_tetrahedra(*state, a, h);
     ASSERT_TRUE(first.ok()) << first.reason();
     ASSERT_GT(*first, 0u);
     ASSERT_TRUE(journal.commit().ok());
+    const std::vector<TetMarking> after = markings(*state);
     ASSERT_TRUE(journal.undo().ok());
-    EXPECT_TRUE(state->is_stale());
-    state->take_back(mark);
-    EXPECT_FALSE(state->is_stale());
+    EXPECT_FALSE(state->is_stale()) << state->stale_reason();
     ASSERT_TRUE(state->check_marking().ok());
-    // a refused step's rollback is taken back the same way
-    const std::size_t again = state->undo_mark();
+    expect_same_markings(markings(*state), before);
+    ASSERT_TRUE(journal.redo().ok());
+    EXPECT_FALSE(state->is_stale()) << state->stale_reason();
+    ASSERT_TRUE(state->check_marking().ok());
+    expect_same_markings(markings(*state), after);
+    ASSERT_TRUE(journal.undo().ok());
+    // a refused step's rollback takes the marks back the same way
     journal.checkpoint();
     ASSERT_TRUE(refine_around_tetrahedra(*state, a, h).ok());
     ASSERT_TRUE(journal.rollback().ok());
-    state->take_back(again);
+    EXPECT_FALSE(state->is_stale()) << state->stale_reason();
     test::expect_same_state(mesh, start);
+    expect_same_markings(markings(*state), before);
 
     auto second = refine_around_tetrahedra(*state, b, h);
     auto reference = refine_around_tetrahedra(*other, b, h);
@@ -51,6 +78,28 @@ void expect_take_back_is_never_having_bisected(const Mesh& start, bool kuhn, con
     ASSERT_TRUE(mesh.validate({.orientation = true}).ok());
     test::expect_same_state(mesh, fresh);
     ASSERT_TRUE(state->check_marking().ok());
+}
+
+// An edit outside the bisection inside the step makes the state stale; undoing the step takes the
+// staleness back with it, and redoing it brings it again.
+TEST(TetBisectionTakeBack, AStepThatMadeTheStateStaleIsUndoneToAFreshOne) {
+    Mesh mesh = test::kuhn_cube(2);
+    auto state = TetBisection::for_kuhn_mesh(mesh);
+    ASSERT_TRUE(state.ok());
+    EditJournal journal(mesh);
+    ASSERT_TRUE(journal.attach(*state).ok());
+    journal.checkpoint();
+    ASSERT_TRUE(refine_around_tetrahedra(*state, {0.4, 0.6, 1.1}, 0.5).ok());
+    const ElementId removed = *elements(mesh).begin();
+    ASSERT_TRUE(remove_elements(mesh, std::vector<ElementId>{removed}).ok());
+    ASSERT_TRUE(state->is_stale());
+    const std::string reason = state->stale_reason();
+    ASSERT_TRUE(journal.commit().ok());
+    ASSERT_TRUE(journal.undo().ok());
+    EXPECT_FALSE(state->is_stale()) << state->stale_reason();
+    ASSERT_TRUE(state->check_marking().ok());
+    ASSERT_TRUE(journal.redo().ok());
+    EXPECT_EQ(state->stale_reason(), reason);
 }
 
 TEST(TetBisectionTakeBack, AfterAnUndoOnAKuhnCube) {

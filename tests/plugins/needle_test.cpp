@@ -18,6 +18,7 @@
 #include "core/fixtures.hpp"
 #include "needle.hpp"
 #include "simulation.hpp"
+#include "sxk/edit_journal.hpp"
 #include "sxk/generators.hpp"
 #include "sxk/plugin_host.hpp"
 
@@ -411,6 +412,50 @@ TEST(Needle, WithoutABodyRefinesAndTracksNodesButMovesNothing) {
     }
     EXPECT_EQ(run.session->last_step().iterations, 0u);
     expect_right_isosceles(run.mesh);
+}
+
+// The application's own journal (issue 48, "one undo"): undoing and redoing a step through it takes
+// the needle, its nodes and the bisection's marks with the mesh, and the insertion then goes on as
+// if nothing had been undone (a Kuhn cube, geometry only, so that both runs are exact).
+TEST(Needle, TheApplicationsUndoAndRedoTakeTheNodesAndTheMarksWithTheMesh) {
+    Options options;
+    options.h_ref = 0.1 / 32;
+    Mesh mesh = cube(), straight = cube();
+    EditJournal journal(mesh);
+    auto made = NeedleSession::make(mesh, options, nullptr);
+    auto reference = NeedleSession::make(straight, options, nullptr);
+    ASSERT_TRUE(made.ok() && reference.ok());
+    NeedleSession& needle = **made;
+    for (double x = -0.01; x <= 0.02 + 1e-12; x += 0.002) {
+        ASSERT_TRUE(needle.move(along_x(x, 0.051, 0.049)).ok());
+        ASSERT_TRUE((*reference)->move(along_x(x, 0.051, 0.049)).ok());
+    }
+    const Mesh before = mesh;
+    const std::vector<NeedleNode> nodes_before(needle.nodes().begin(), needle.nodes().end());
+    const Needle needle_before = *needle.needle();
+    ASSERT_TRUE(needle.move(along_x(0.024, 0.051, 0.049)).ok());
+    ASSERT_GT(needle.last_step().bisections, 0u) << "the step refines nothing: the test proves nothing";
+    const Mesh after = mesh;
+    const std::vector<NeedleNode> nodes_after(needle.nodes().begin(), needle.nodes().end());
+
+    ASSERT_TRUE(journal.undo().ok());
+    test::expect_same_state(mesh, before);
+    EXPECT_EQ(std::vector<NeedleNode>(needle.nodes().begin(), needle.nodes().end()), nodes_before);
+    EXPECT_EQ(*needle.needle(), needle_before);
+    ASSERT_TRUE(journal.redo().ok());
+    test::expect_same_state(mesh, after);
+    EXPECT_EQ(std::vector<NeedleNode>(needle.nodes().begin(), needle.nodes().end()), nodes_after);
+    ASSERT_TRUE(journal.undo().ok());
+
+    // on from the undone step: the marks are as they were, so the refinement is the same
+    for (double x = 0.024; x <= 0.05 + 1e-12; x += 0.002) {
+        ASSERT_TRUE(needle.move(along_x(x, 0.051, 0.049)).ok()) << "x = " << x;
+        ASSERT_TRUE((*reference)->move(along_x(x, 0.051, 0.049)).ok());
+    }
+    ASSERT_TRUE(mesh.validate({.orientation = true, .flat_is_invalid = true}).ok());
+    test::expect_same_state(mesh, straight);
+    EXPECT_EQ(std::vector<NeedleNode>(needle.nodes().begin(), needle.nodes().end()),
+              std::vector<NeedleNode>((*reference)->nodes().begin(), (*reference)->nodes().end()));
 }
 
 TEST(Needle, RefusesWhatItCannotDoWithTheReason) {

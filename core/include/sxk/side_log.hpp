@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -72,14 +73,19 @@ public:
     const T& get() const { return m_value; }
     // The value to change (inside a step, for the change to be taken back with it).
     T& edit() { return m_value; }
+    // Called after a rollback, an undo or a redo has put a value back, with the value it replaced:
+    // for what must follow the value outside the mesh (the needle holds the body's nodes its
+    // value lists, and releases those it no longer does).
+    void on_restore(std::function<void(const T& replaced)> follow) { m_follow = std::move(follow); }
 
     std::size_t mark() override {
         m_saved.push_back(m_value);
         return m_saved.size() - 1;
     }
     void rollback_to(std::size_t mark) override {
-        m_value = std::move(m_saved[mark]);
+        T replaced = std::exchange(m_value, std::move(m_saved[mark]));
         m_saved.resize(mark);
+        if (m_follow) m_follow(replaced);
     }
     void keep(std::size_t mark) override { m_saved.resize(mark); }
     std::unique_ptr<SideRecord> commit(std::size_t mark) override {
@@ -92,6 +98,7 @@ public:
         // the record holds the other value: swapping makes it the record that goes back
         using std::swap;
         swap(static_cast<Record&>(*record).value, m_value);
+        if (m_follow) m_follow(static_cast<const Record&>(*record).value);
         return record;
     }
 
@@ -102,6 +109,7 @@ private:
     };
     T m_value;
     std::vector<T> m_saved;  // the value when each open step began, outermost first
+    std::function<void(const T&)> m_follow;
 };
 
 }  // namespace sxk

@@ -114,14 +114,18 @@ void TetBisection::attach() {
     m_own_edit = false;
 }
 
+// A state attached to a journal is not moved (the journal holds its address); the states are
+// moved out of the factories' Outcome before a tool attaches them.
 TetBisection::TetBisection(TetBisection&& other) noexcept
     : Watcher(),
+      SideLog(),
       m_mesh(other.m_mesh),
       m_markings(std::move(other.m_markings)),
       m_rule(other.m_rule),
       m_stale_reason(std::move(other.m_stale_reason)),
       m_last_child(other.m_last_child),
-      m_undo(std::move(other.m_undo)) {
+      m_undo(std::move(other.m_undo)),
+      m_opened(std::move(other.m_opened)) {
     if (m_mesh) {
         m_mesh->remove_watcher(other);
         other.m_mesh = nullptr;
@@ -138,6 +142,7 @@ TetBisection& TetBisection::operator=(TetBisection&& other) noexcept {
     m_stale_reason = std::move(other.m_stale_reason);
     m_last_child = other.m_last_child;
     m_undo = std::move(other.m_undo);
+    m_opened = std::move(other.m_opened);
     if (m_mesh) {
         m_mesh->remove_watcher(other);
         other.m_mesh = nullptr;
@@ -266,18 +271,71 @@ Outcome<Done> TetBisection::check_marking() const {
 void TetBisection::write_marking(ElementId t, const TetMarking& marking) {
     if (m_markings.size() <= t)
         detail::grow_doubling(m_markings, std::max<std::size_t>(t + 1, m_mesh->element_capacity()), TetMarking{});
-    m_undo.push_back({t, m_markings[t], m_last_child});
+    if (!m_opened.empty()) m_undo.push_back({t, m_markings[t], m_last_child});
     m_markings[t] = marking;
 }
 
-void TetBisection::take_back(std::size_t mark) {
-    while (m_undo.size() > mark) {
+// ---- the marks beside the mesh (SideLog) ---------------------------------------------------------
+//
+// The journal calls these after it has put the mesh back (or forward), and its events have by
+// then made the state stale; the mesh is as it was at the mark, so the marks written since are
+// taken back and the staleness is what it was then.
+
+struct TetBisection::Record final : SideRecord {
+    std::vector<Written> written;  // in the order written; replayed from the back
+    std::string stale_there;       // the staleness the replay leaves (the other side of the step)
+    std::string stale_here;        // the staleness on this side, for the record that goes back
+};
+
+std::size_t TetBisection::mark() {
+    m_opened.push_back({m_undo.size(), m_stale_reason});
+    return m_opened.size() - 1;
+}
+
+void TetBisection::rollback_to(std::size_t mark) {
+    while (m_undo.size() > m_opened[mark].written) {
         const Written& written = m_undo.back();
         m_markings[written.element] = written.was;
         m_last_child = written.last_child;
         m_undo.pop_back();
     }
-    m_stale_reason.clear();
+    m_stale_reason = std::move(m_opened[mark].stale_reason);
+    m_opened.resize(mark);
+}
+
+void TetBisection::keep(std::size_t mark) { m_opened.resize(mark); }
+
+std::unique_ptr<SideRecord> TetBisection::commit(std::size_t mark) {
+    const std::size_t begin = m_opened[mark].written;
+    auto record = std::make_unique<Record>();
+    record->written.assign(m_undo.begin() + static_cast<std::ptrdiff_t>(begin), m_undo.end());
+    record->stale_there = std::move(m_opened[mark].stale_reason);
+    record->stale_here = m_stale_reason;
+    m_undo.resize(begin);
+    m_opened.resize(mark);
+    if (record->written.empty() && record->stale_there == record->stale_here) return nullptr;
+    return record;
+}
+
+std::unique_ptr<SideRecord> TetBisection::replay(std::unique_ptr<SideRecord> record) {
+    // the writes taken back from the last; each leaves the mark it takes back in the record that
+    // goes the other way, which is therefore in the order that replays them from the back again
+    auto& writes = static_cast<Record&>(*record);
+    auto back = std::make_unique<Record>();
+    back->written.reserve(writes.written.size());
+    for (auto w = writes.written.rbegin(); w != writes.written.rend(); ++w) {
+        if (m_markings.size() <= w->element)
+            detail::grow_doubling(m_markings, std::max<std::size_t>(w->element + 1, m_mesh->element_capacity()),
+                                  TetMarking{});
+        back->written.push_back({w->element, m_markings[w->element], m_last_child});
+        m_markings[w->element] = w->was;
+        m_last_child = w->last_child;
+    }
+    // the journal's events made the state stale: it is as it was on the record's side
+    back->stale_there = std::move(writes.stale_here);
+    back->stale_here = writes.stale_there;
+    m_stale_reason = std::move(writes.stale_there);
+    return back;
 }
 
 void TetBisection::foreign_edit(const std::string& what) {

@@ -103,12 +103,14 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "sxk/config.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
+#include "sxk/side_log.hpp"
 #include "sxk/watcher.hpp"
 
 namespace sxk {
@@ -143,7 +145,11 @@ struct TetBisectionAccess;  // the plan's replay (private header ops/tet_bisecti
 }
 SXK_API Outcome<std::size_t> bisect_tetrahedron(TetBisection& state, ElementId t);
 
-class SXK_API TetBisection : private Watcher {
+// The marks are state beside the mesh: attached to the mesh's EditJournal (journal.attach(state),
+// sxk/side_log.hpp), they are taken back, undone and redone with the bisections that wrote them,
+// and the staleness the journal's own events raise is cleared with them (the needle, thesis §6.7,
+// whose steps are undone). A state attached to a journal must not be moved.
+class SXK_API TetBisection : private Watcher, public SideLog {
 public:
     // Longest-edge bisection of any valid tetrahedral mesh. Refuses a triangle mesh
     // ("tet_bisection: the mesh has triangles, not tetrahedra").
@@ -183,16 +189,13 @@ public:
     // A child of the last split (invalid_id before any): where point location starts next.
     ElementId last_child() const { return m_last_child; }
 
-    // Taking marks back with the mesh, for a tool whose steps an EditJournal undoes (the needle,
-    // thesis §6.7): every mark the state writes is logged with the one it replaced. A tool takes
-    // `undo_mark()` before its step; after the journal took the mesh back to exactly that moment
-    // (an undo, or the rollback of a refused step), `take_back(mark)` restores the marks written
-    // since and clears the staleness the journal's events raised (the caller vouches that the mesh
-    // is as it was: the state was not stale then, and nothing else edited it). Costs what was
-    // bisected since the mark. `forget_undo()` drops the log (when no step can be undone any more).
-    std::size_t undo_mark() const { return m_undo.size(); }
-    void take_back(std::size_t mark);
-    void forget_undo() { m_undo.clear(); }
+    // SideLog: the marks written since mark() (logged only while a step of the journal is open),
+    // and whether the state was stale then.
+    std::size_t mark() override;
+    void rollback_to(std::size_t mark) override;
+    void keep(std::size_t mark) override;
+    std::unique_ptr<SideRecord> commit(std::size_t mark) override;
+    std::unique_ptr<SideRecord> replay(std::unique_ptr<SideRecord> record) override;
 
 private:
     TetBisection(Mesh& mesh, std::vector<TetMarking> markings, BisectionRule rule);
@@ -216,13 +219,20 @@ private:
     std::string m_stale_reason;
     bool m_own_edit = false;     // watcher events come from our own split_edge
     ElementId m_last_child = invalid_id;
-    // every mark written: the element, the mark it replaced (default for a new id), m_last_child then
+    // every mark written while a journal's step is open: the element, the mark it replaced
+    // (default for a new id), m_last_child then
     struct Written {
         ElementId element;
         TetMarking was;
         ElementId last_child;
     };
     std::vector<Written> m_undo;
+    struct Opened {  // an open step's mark: where its writes begin, and the staleness then
+        std::size_t written;
+        std::string stale_reason;
+    };
+    std::vector<Opened> m_opened;
+    struct Record;  // a committed step's writes, and the staleness before it
     // writes a mark, logging the one it replaces (both rules' replays go through here)
     void write_marking(ElementId t, const TetMarking& marking);
 };
