@@ -309,29 +309,96 @@ void CutMarks::add_snapped(const Mesh& mesh, VertexId v, Point was) {
     cover_star(mesh, v);
 }
 
-CutMarks::Checkpoint CutMarks::checkpoint() const {
-    return {m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), m_incomplete, m_pending, m_look_again};
-}
-
-void CutMarks::restore(const Checkpoint& checkpoint) {
-    while (m_mark_order.size() > checkpoint.marks) {
+void CutMarks::trim(std::size_t marks, std::size_t snapped, std::size_t sweeps) {
+    while (m_mark_order.size() > marks) {
         count_marks_at(m_mark_order.back(), -1);
         m_marks.erase(m_mark_order.back());
         m_mark_order.pop_back();
     }
-    while (m_snapped_order.size() > checkpoint.snapped) {
+    while (m_snapped_order.size() > snapped) {
         Node& node = m_nodes[m_snapped_order.back()];
         node.snapped = false;  // its radius stays: a larger one finds more, never less
         m_tree->tree.remove(SnappedTree::value(node.was, m_snapped_order.back()));
         m_snapped_order.pop_back();
     }
-    while (m_sweeps.size() > checkpoint.sweeps) {
+    while (m_sweeps.size() > sweeps) {
         m_sweep_tree->tree.remove(SweepTree::value(m_sweeps.back(), static_cast<std::uint32_t>(m_sweeps.size() - 1)));
         m_sweeps.pop_back();
     }
-    m_incomplete = checkpoint.incomplete;
-    m_pending = checkpoint.pending;
-    m_look_again = checkpoint.look_again;
+}
+
+// ---- beside the mesh (SideLog) -----------------------------------------------------------------
+//
+// Marks, snapped nodes and sweeps are only ever added, so a step's are the newest: a mark is
+// their counts, a rollback or an undo forgets what came after them, and a redo adds the step's
+// again (the record keeps them). The lists are copied when they first change inside a step.
+
+struct CutMarks::Record final : SideRecord {
+    std::vector<std::pair<std::uint64_t, Mark>> marks;   // the step's, by key, in order
+    std::vector<std::pair<VertexId, Point>> snapped;     // the step's snapped nodes, with `was`
+    std::vector<Sweep> sweeps;                           // the step's sweeps
+    std::shared_ptr<const Lists> before, after;          // null: the step left the lists alone
+    bool applied = true;                                 // the state holds the step
+};
+
+void CutMarks::before_lists_change() {
+    if (m_opened.empty() || m_opened.back().lists) return;
+    // every open step the lists have not changed in yet sees them as they are now
+    const auto now = std::make_shared<const Lists>(m_lists);
+    for (auto opened = m_opened.rbegin(); opened != m_opened.rend() && !opened->lists; ++opened) opened->lists = now;
+}
+
+std::size_t CutMarks::mark() {
+    m_opened.push_back({m_mark_order.size(), m_snapped_order.size(), m_sweeps.size(), nullptr});
+    return m_opened.size() - 1;
+}
+
+void CutMarks::rollback_to(std::size_t mark) {
+    const Opened& opened = m_opened[mark];
+    trim(opened.marks, opened.snapped, opened.sweeps);
+    if (opened.lists) m_lists = *opened.lists;
+    m_opened.resize(mark);
+}
+
+void CutMarks::keep(std::size_t mark) { m_opened.resize(mark); }
+
+std::unique_ptr<SideRecord> CutMarks::commit(std::size_t mark) {
+    const Opened opened = std::move(m_opened[mark]);
+    m_opened.resize(mark);
+    auto record = std::make_unique<Record>();
+    for (std::size_t i = opened.marks; i < m_mark_order.size(); ++i)
+        record->marks.emplace_back(m_mark_order[i], m_marks.at(m_mark_order[i]));
+    for (std::size_t i = opened.snapped; i < m_snapped_order.size(); ++i)
+        record->snapped.emplace_back(m_snapped_order[i], m_nodes[m_snapped_order[i]].was);
+    record->sweeps.assign(m_sweeps.begin() + static_cast<std::ptrdiff_t>(opened.sweeps), m_sweeps.end());
+    if (opened.lists) {
+        record->before = opened.lists;
+        record->after = std::make_shared<const Lists>(m_lists);
+    }
+    if (record->marks.empty() && record->snapped.empty() && record->sweeps.empty() && !record->before) return nullptr;
+    return record;
+}
+
+std::unique_ptr<SideRecord> CutMarks::replay(std::unique_ptr<SideRecord> record) {
+    auto& step = static_cast<Record&>(*record);
+    if (step.applied) {  // undo: the step's are the newest
+        trim(m_mark_order.size() - step.marks.size(), m_snapped_order.size() - step.snapped.size(),
+             m_sweeps.size() - step.sweeps.size());
+        if (step.before) m_lists = *step.before;
+    } else {  // redo
+        for (const auto& [key, mark] : step.marks) add_mark(static_cast<VertexId>(key >> 32),
+                                                            static_cast<VertexId>(key & 0xffffffffu), mark);
+        for (const auto& [v, was] : step.snapped) {
+            node(v).was = was;
+            m_nodes[v].snapped = true;
+            m_snapped_order.push_back(v);
+            m_tree->tree.insert(SnappedTree::value(was, v));
+        }
+        for (const Sweep& sweep : step.sweeps) (void)add_sweep(sweep);
+        if (step.after) m_lists = *step.after;
+    }
+    step.applied = !step.applied;
+    return record;
 }
 
 namespace {

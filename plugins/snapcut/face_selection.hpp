@@ -82,6 +82,7 @@
 
 #include "sxk/detail/flat_set.hpp"
 #include "sxk/mesh.hpp"
+#include "sxk/side_log.hpp"
 
 namespace sxk::snapcut {
 
@@ -97,8 +98,11 @@ struct Sweep {
 double distance_to_sweep(const Sweep& sweep, const Point& p);
 double squared_distance_to_sweep(const Sweep& sweep, const Point& p);
 
-// What the cut keeps between sweeps, with checkpoints to take steps back.
-class CutMarks {
+// What the cut keeps between sweeps. A side log of the session's journal (sxk/side_log.hpp): a
+// step's marks, snapped nodes and sweeps, and the lists the next selection reads, are taken back,
+// undone and redone with the mesh. (The snapped nodes' radii only grow, and are not taken back: a
+// larger one finds more elements, never fewer.)
+class CutMarks final : public SideLog {
 public:
     CutMarks();
     ~CutMarks();
@@ -156,8 +160,11 @@ public:
                                   const SweptSurface* swept = nullptr);
     // Elements that gained a marked edge outside a selection (the two calls above), sorted: they
     // may now be complete, so the next selection looks at them (take_pending empties the list).
-    const std::vector<ElementId>& pending() const { return m_pending; }
-    std::vector<ElementId> take_pending() { return std::exchange(m_pending, {}); }
+    const std::vector<ElementId>& pending() const { return m_lists.pending; }
+    std::vector<ElementId> take_pending() {
+        before_lists_change();
+        return std::exchange(m_lists.pending, {});
+    }
 
     // Elements the "corners snapped elsewhere" rule (select_faces) may have completed wherever the
     // sweep is: those around nodes snapped since the last selection and those edits made. A
@@ -166,13 +173,20 @@ public:
     // is remade: the next selection looks at these once, and at no other element the sweep does
     // not meet (take_look_again empties the list).
     void look_again(std::span<const ElementId> elements) {
-        m_look_again.insert(m_look_again.end(), elements.begin(), elements.end());
+        before_lists_change();
+        m_lists.look_again.insert(m_lists.look_again.end(), elements.begin(), elements.end());
     }
-    std::vector<ElementId> take_look_again() { return std::exchange(m_look_again, {}); }
+    std::vector<ElementId> take_look_again() {
+        before_lists_change();
+        return std::exchange(m_lists.look_again, {});
+    }
 
     // The last sweep's candidates with one or two marked corners (sorted).
-    const std::vector<ElementId>& incomplete() const { return m_incomplete; }
-    void set_incomplete(std::vector<ElementId> incomplete) { m_incomplete = std::move(incomplete); }
+    const std::vector<ElementId>& incomplete() const { return m_lists.incomplete; }
+    void set_incomplete(std::vector<ElementId> incomplete) {
+        before_lists_change();
+        m_lists.incomplete = std::move(incomplete);
+    }
 
     // Nodes moved onto the sweep once already: they stay where the cut put them.
     bool snapped(VertexId v) const { return v < m_nodes.size() && m_nodes[v].snapped; }
@@ -210,13 +224,12 @@ public:
                 selection_position(mesh, s.vertex(2)), selection_position(mesh, s.vertex(3))};
     }
 
-    struct Checkpoint {
-        std::size_t marks = 0, snapped = 0, sweeps = 0;
-        std::vector<ElementId> incomplete, pending, look_again;
-    };
-    Checkpoint checkpoint() const;
-    // Forgets everything added since `checkpoint` (which must be older than any later one used).
-    void restore(const Checkpoint& checkpoint);
+    // SideLog
+    std::size_t mark() override;
+    void rollback_to(std::size_t mark) override;
+    void keep(std::size_t mark) override;
+    std::unique_ptr<SideRecord> commit(std::size_t mark) override;
+    std::unique_ptr<SideRecord> replay(std::unique_ptr<SideRecord> record) override;
 
 private:
     static std::uint64_t key(VertexId a, VertexId b);
@@ -254,9 +267,23 @@ private:
     void mark_outside_selection(const Mesh& mesh, std::span<const ElementId> star_u, VertexId u, VertexId v,
                                 const Mark& mark);
     void settle_pending();
-    std::vector<ElementId> m_incomplete;
-    std::vector<ElementId> m_pending;
-    std::vector<ElementId> m_look_again;
+    // What the next selection reads besides the marks.
+    struct Lists {
+        std::vector<ElementId> incomplete, pending, look_again;
+    };
+    Lists m_lists;
+    // The open steps (mark()): how many marks, snapped nodes and sweeps there were, and the lists
+    // as they were, copied when they first change inside the step (the degeneracy removal's
+    // many inner steps change none of them, and copy nothing).
+    struct Opened {
+        std::size_t marks = 0, snapped = 0, sweeps = 0;
+        std::shared_ptr<const Lists> lists;  // null while unchanged since the mark
+    };
+    std::vector<Opened> m_opened;
+    void before_lists_change();
+    // Forgets the marks, snapped nodes and sweeps after the first so many (the newest).
+    void trim(std::size_t marks, std::size_t snapped, std::size_t sweeps);
+    struct Record;
 };
 
 // Where the blade has swept: the sweeps so far (those of `marks`) and the rest of the movement

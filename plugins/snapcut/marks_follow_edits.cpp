@@ -13,13 +13,16 @@ void CutMarks::mark_outside_selection(const Mesh& mesh, std::span<const ElementI
                                       const Mark& mark) {
     if (m_marks.contains(key(u, v))) return;
     add_mark(u, v, mark);
+    before_lists_change();
     for (const ElementId t : star_u)
-        if (mesh.simplex(t).contains(v)) m_pending.push_back(t);
+        if (mesh.simplex(t).contains(v)) m_lists.pending.push_back(t);
 }
 
 void CutMarks::settle_pending() {
-    std::sort(m_pending.begin(), m_pending.end());
-    m_pending.erase(std::unique(m_pending.begin(), m_pending.end()), m_pending.end());
+    before_lists_change();
+    std::vector<ElementId>& pending = m_lists.pending;
+    std::sort(pending.begin(), pending.end());
+    pending.erase(std::unique(pending.begin(), pending.end()), pending.end());
 }
 
 void CutMarks::carry_to_copies(const Mesh& mesh, std::span<const std::pair<VertexId, VertexId>> copies) {

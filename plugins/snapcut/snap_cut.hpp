@@ -66,6 +66,7 @@ namespace sxk::snapcut {
 struct Scalpel {
     Point handle{};
     Point tip{};
+    bool operator==(const Scalpel&) const = default;
 };
 
 // The pose a ToolFactory user passes for a scalpel: position = tip, axes[2] along the blade
@@ -224,7 +225,6 @@ public:
 
 protected:
     Outcome<Done> apply(const ToolPose& pose, StepReport& report) override;
-    void step_taken_back() override;
 
 private:
     // `ahead`: the sweeps of the same movement that come after this one; `blade`: the blade
@@ -265,16 +265,18 @@ private:
     std::unique_ptr<MovedNodes> m_moves;  // moved since the selection last looked (CutMarks::radius)
     double m_element_volume = 0;  // the mean element volume when the session began (reference)
     double m_split_beyond = 0;    // Options::split_beyond in lengths (0: never split)
-    CutMarks m_marks;
-    std::optional<Scalpel> m_scalpel;
+    CutMarks m_marks;  // a side log of the session's journal, as m_beside
+    // The scalpel beside the mesh, and the number of kept steps: every step then has a record, and
+    // its undo or redo makes the blade track start over (m_beside.on_restore).
+    struct Beside {
+        std::optional<Scalpel> scalpel;
+        std::uint64_t steps = 0;
+        bool operator==(const Beside&) const = default;
+    };
+    SnapshotLog<Beside> m_beside;
+    std::optional<Scalpel>& m_scalpel = m_beside.edit().scalpel;
     std::optional<Scalpel> m_exact;  // cut()'s scalpel, used by apply instead of the pose's
     std::optional<Sweep> m_swept;    // sweep()'s triangle, swept by apply instead of a movement
-    // per kept step: what to restore when it is taken back
-    struct Undo {
-        std::optional<Scalpel> scalpel;
-        CutMarks::Checkpoint marks;
-    };
-    std::vector<Undo> m_undo;
     CutStepReport m_last;
     std::vector<std::vector<ElementId>> m_loose;  // the step's loose pieces (kept ones)
     std::vector<ElementId> m_seeds;                // the step's elements on both sides of its cut faces

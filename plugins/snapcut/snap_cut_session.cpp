@@ -214,6 +214,10 @@ SnapCutSession::SnapCutSession(Mesh& mesh, const Options& options, const CutServ
                          : 0) {
     // the far field's rims are measured only for a session that relaxes them
     if (services.simulation != nullptr) services.simulation->follow_far_field(options.far_vertices > 0);
+    // new logs, attached nowhere else: the marks and the scalpel go back and forth with the mesh
+    (void)keep_beside(m_marks);
+    (void)keep_beside(m_beside);
+    m_beside.on_restore([this](const Beside&) { m_track->forget(); });  // the blade is elsewhere
 }
 
 SnapCutSession::~SnapCutSession() = default;
@@ -234,14 +238,6 @@ Outcome<StepReport> SnapCutSession::sweep(const Point& a, const Point& b, const 
     return result;
 }
 
-void SnapCutSession::step_taken_back() {
-    m_track->forget();  // the blade goes back to where it was, the mesh with it
-    if (m_undo.empty()) return;
-    m_marks.restore(m_undo.back().marks);
-    m_scalpel = m_undo.back().scalpel;
-    m_undo.pop_back();
-}
-
 Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     const auto start = Clock::now();
     const Scalpel next = m_exact ? *m_exact : scalpel_of(pose);
@@ -250,7 +246,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             return Refusal{RefusalCode::bad_argument, "snapcut: the scalpel's coordinates must be finite"};
     m_last = {};
     m_loose.clear();
-    Undo undo{m_scalpel, m_marks.checkpoint()};
+    // a refusal below: the journal takes the mesh, the marks and the scalpel back together
     if (m_scalpel || m_swept) {
         // the movement's sweep: (h, t, t') then (h, t', h'), or sweep()'s triangle alone; a
         // sweep with collinear corners (the scalpel stood still, or slid along itself) sweeps no
@@ -276,8 +272,6 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             }
             if (Outcome<Done> done = cut_sweep(sweep, std::span<const Sweep>(sweeps).subspan(i + 1), blade, report);
                 !done) {
-                m_track->forget();
-                m_marks.restore(undo.marks);
                 m_seeds.clear();
                 m_cut_pairs.clear();
                 m_last.seconds = seconds_since(start);
@@ -285,8 +279,6 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             }
         }
         if (Outcome<Done> settled = settle_loose_pieces(); !settled) {
-            m_track->forget();
-            m_marks.restore(undo.marks);
             m_last.seconds = seconds_since(start);
             return settled.refusal();
         }
@@ -295,7 +287,7 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     }
     relax(report);
     m_scalpel = next;
-    m_undo.push_back(std::move(undo));
+    ++m_beside.edit().steps;
     m_last.elements = mesh().element_count();
     m_last.vertices = mesh().vertex_count();
     m_last.incomplete = m_marks.incomplete().size();

@@ -71,12 +71,12 @@ TEST(SnapCutMarks, ADissectionCopyTakesTheMarksOfItsOriginalsEdges) {
     ASSERT_FALSE(marks.pending().empty());
     for (const ElementId t : marks.pending()) EXPECT_TRUE(mesh.is_element(t));
     EXPECT_TRUE(std::is_sorted(marks.pending().begin(), marks.pending().end()));
-    // and a checkpoint from before takes them back
+    // and a rollback to a mark from before takes them back
     CutMarks again;
-    const auto empty = again.checkpoint();
+    const std::size_t empty = again.mark();
     (void)again.add_sweep(plane_x(1.3));
     again.carry_to_copies(mesh, dissected->new_vertices);
-    again.restore(empty);
+    again.rollback_to(empty);
     EXPECT_TRUE(again.pending().empty());
     EXPECT_TRUE(again.sweeps().empty());
 }

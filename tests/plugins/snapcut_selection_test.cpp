@@ -143,24 +143,67 @@ TEST(SnapCutSelection, TetrahedraWithOneOrTwoMarkedCornersAreIncomplete) {
     EXPECT_LT(selection.faces.size(), 8u);
 }
 
-TEST(SnapCutSelection, ACheckpointTakesBackWhatCameAfterIt) {
+// CutMarks as a side log (sxk/side_log.hpp): a rollback to a mark takes back what came after it;
+// a committed step's record undoes it and redoes it again.
+TEST(SnapCutSelection, AMarkTakesBackWhatCameAfterItAndARecordRedoesIt) {
     const Mesh mesh = make_kuhn_cube(2).value();
+    auto first_cut = [&](CutMarks& marks) {
+        (void)select_plane(mesh, marks, 1.3);
+        marks.add_snapped(mesh, kuhn2_vertex(1, 1, 1), mesh.deformed(kuhn2_vertex(1, 1, 1)));
+    };
+    auto second_cut = [&](CutMarks& marks) {
+        (void)select_plane(mesh, marks, 0.4);
+        marks.add_snapped(mesh, kuhn2_vertex(0, 1, 1), mesh.deformed(kuhn2_vertex(0, 1, 1)));
+    };
+    // the state after the first cut, and after both
+    CutMarks both;
+    first_cut(both);
+    const std::size_t marked = both.mark_count();
+    const std::vector<ElementId> incomplete = both.incomplete();
+    second_cut(both);
+    ASSERT_GT(both.mark_count(), marked);
+    auto expect_first_cut_only = [&](const CutMarks& marks) {
+        EXPECT_EQ(marks.mark_count(), marked);
+        EXPECT_EQ(marks.sweeps().size(), 1u);
+        EXPECT_EQ(marks.incomplete(), incomplete);
+        EXPECT_TRUE(marks.snapped(kuhn2_vertex(1, 1, 1)));
+        EXPECT_FALSE(marks.snapped(kuhn2_vertex(0, 1, 1)));
+        EXPECT_FALSE(marks.mark(kuhn2_vertex(0, 0, 0), kuhn2_vertex(1, 0, 0)));
+    };
+    auto expect_both_cuts = [&](const CutMarks& marks) {
+        EXPECT_EQ(marks.mark_count(), both.mark_count());
+        EXPECT_EQ(marks.sweeps().size(), 2u);
+        EXPECT_EQ(marks.incomplete(), both.incomplete());
+        EXPECT_TRUE(marks.snapped(kuhn2_vertex(0, 1, 1)));
+        for (const ElementId t : elements(mesh)) {
+            const Simplex s = mesh.simplex(t);
+            for (int i = 0; i < 4; ++i)
+                for (int j = i + 1; j < 4; ++j) {
+                    const auto a = both.mark(s.vertex(i), s.vertex(j)), b = marks.mark(s.vertex(i), s.vertex(j));
+                    ASSERT_EQ(a.has_value(), b.has_value());
+                    if (a) {
+                        EXPECT_EQ(a->node, b->node);
+                        EXPECT_EQ(a->sweep, b->sweep);
+                    }
+                }
+        }
+    };
+
     CutMarks marks;
-    (void)select_plane(mesh, marks, 1.3);
-    marks.add_snapped(mesh, kuhn2_vertex(1, 1, 1), mesh.deformed(kuhn2_vertex(1, 1, 1)));
-    const CutMarks::Checkpoint checkpoint = marks.checkpoint();
-    const std::size_t marked = marks.mark_count();
-    const std::vector<ElementId> incomplete = marks.incomplete();
-    (void)select_plane(mesh, marks, 0.4);
-    marks.add_snapped(mesh, kuhn2_vertex(0, 1, 1), mesh.deformed(kuhn2_vertex(0, 1, 1)));
-    ASSERT_GT(marks.mark_count(), marked);
-    marks.restore(checkpoint);
-    EXPECT_EQ(marks.mark_count(), marked);
-    EXPECT_EQ(marks.sweeps().size(), 1u);
-    EXPECT_EQ(marks.incomplete(), incomplete);
-    EXPECT_TRUE(marks.snapped(kuhn2_vertex(1, 1, 1)));
-    EXPECT_FALSE(marks.snapped(kuhn2_vertex(0, 1, 1)));
-    EXPECT_FALSE(marks.mark(kuhn2_vertex(0, 0, 0), kuhn2_vertex(1, 0, 0)));
+    first_cut(marks);
+    const std::size_t step = marks.mark();
+    second_cut(marks);
+    marks.rollback_to(step);
+    expect_first_cut_only(marks);
+
+    const std::size_t committed = marks.mark();
+    second_cut(marks);
+    std::unique_ptr<SideRecord> record = marks.commit(committed);
+    ASSERT_NE(record, nullptr);
+    record = marks.replay(std::move(record));  // undo
+    expect_first_cut_only(marks);
+    record = marks.replay(std::move(record));  // redo
+    expect_both_cuts(marks);
 }
 
 }  // namespace

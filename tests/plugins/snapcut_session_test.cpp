@@ -8,6 +8,7 @@
 #include "core/fixtures.hpp"
 #include "simulation.hpp"
 #include "snapcut_fixture.hpp"
+#include "sxk/edit_journal.hpp"
 #include "sxk/components.hpp"
 #include "sxk/plugin_host.hpp"
 #include "sxk/traversal.hpp"
@@ -221,7 +222,7 @@ TEST(SnapCut, UndoingEveryStepRestoresTheMeshExactly) {
 }
 
 TEST(SnapCut, AStepUndoneAndTakenAgainCutsAsBefore) {
-    // the session's marks and scalpel go back with the mesh (ToolSession::step_taken_back)
+    // the session's marks and scalpel go back with the mesh (side logs of its journal)
     Mesh straight = make_kuhn_cube(8).value();
     Mesh again = straight;
     auto one = SnapCutSession::make(straight, {}, {degeneracy_service()}).value();
@@ -237,6 +238,50 @@ TEST(SnapCut, AStepUndoneAndTakenAgainCutsAsBefore) {
     }
     expect_same_state(again, straight);
     expect_valid(again);
+}
+
+// The application's own journal (issue 48, "one undo"): undoing and redoing a step through it takes
+// the marks, the snapped nodes, the sweeps and the scalpel with the mesh, and the cut then goes on
+// as if nothing had been undone.
+TEST(SnapCut, TheApplicationsUndoAndRedoTakeTheMarksAndTheScalpelWithTheMesh) {
+    Mesh straight = make_kuhn_cube(8).value();
+    Mesh mesh = straight;
+    EditJournal journal(mesh);
+    auto one = SnapCutSession::make(straight, {}, {degeneracy_service()}).value();
+    auto two = SnapCutSession::make(mesh, {}, {degeneracy_service()}).value();
+    const std::vector<Scalpel> path = grid_plane_path();
+    ASSERT_GT(path.size(), 6u);
+    for (std::size_t i = 0; i < 5; ++i) {
+        ASSERT_TRUE(one->cut(path[i]));
+        ASSERT_TRUE(two->cut(path[i]));
+    }
+    const Mesh before = mesh;
+    const std::size_t marks_before = two->marks().mark_count(), sweeps_before = two->marks().sweeps().size();
+    ASSERT_TRUE(two->cut(path[5]));
+    ASSERT_GT(two->last_step().faces_dissected, 0u) << "the step cuts nothing: the test proves nothing";
+    const Mesh after = mesh;
+    const std::size_t marks_after = two->marks().mark_count(), sweeps_after = two->marks().sweeps().size();
+    ASSERT_GT(marks_after, marks_before);
+
+    ASSERT_TRUE(journal.undo().ok());
+    expect_same_state(mesh, before);
+    EXPECT_EQ(two->marks().mark_count(), marks_before);
+    EXPECT_EQ(two->marks().sweeps().size(), sweeps_before);
+    EXPECT_EQ(two->scalpel(), std::optional<Scalpel>(path[4]));
+    ASSERT_TRUE(journal.redo().ok());
+    expect_same_state(mesh, after);
+    EXPECT_EQ(two->marks().mark_count(), marks_after);
+    EXPECT_EQ(two->marks().sweeps().size(), sweeps_after);
+    EXPECT_EQ(two->scalpel(), std::optional<Scalpel>(path[5]));
+    ASSERT_TRUE(journal.undo().ok());
+
+    for (std::size_t i = 5; i < path.size(); ++i) {
+        ASSERT_TRUE(one->cut(path[i]));
+        ASSERT_TRUE(two->cut(path[i]));
+    }
+    expect_same_state(mesh, straight);
+    EXPECT_EQ(two->marks().mark_count(), one->marks().mark_count());
+    expect_valid(mesh);
 }
 
 TEST(SnapCut, ARefusedStepLeavesTheMeshAndTheSessionAsTheyWere) {
