@@ -2,8 +2,9 @@
 // parsed (docs/formats.md "Tool paths") or refused with InputError, and a path that parses is
 // replayed through a tool session. Every step must complete or be refused with the mesh bit for bit
 // as before; after each the mesh validates (ValidateOptions the tool promises). A sample whose time
-// has an odd whole part takes the last step back (undo_step) instead. At the end every step is
-// undone and the mesh must be what it was before the session, bit for bit. A broken rule is a
+// has an odd whole part takes the last step back (undo_step) instead, then takes it again
+// (redo_step) and back once more: the mesh bit for bit as after the step, then as before it. At
+// the end every step is undone and the mesh must be what it was before the session, bit for bit. A broken rule is a
 // finding (oracle.hpp): printed, then abort.
 #pragma once
 
@@ -52,8 +53,16 @@ void replay_tool_path(ToolSession& session, const Mesh& mesh, const Mesh& origin
         ++index;
         // fmod, not a cast to an integer: a time of 1e69 is a finite time the reader accepts
         if (std::fmod(std::floor(sample.time), 2.0) != 0 && session.steps() > 0) {
+            const auto stepped = ops_driver::snapshot(mesh);
             if (auto undone = session.undo_step(); !undone) finding("undo_step: " + undone.reason());
             check(index, "undo");
+            const auto undone = ops_driver::snapshot(mesh);
+            if (auto redone = session.redo_step(); !redone) finding("redo_step: " + redone.reason());
+            if (!(ops_driver::snapshot(mesh) == stepped))
+                finding("step " + std::to_string(index) + ": the redo did not give the mesh of the step back");
+            if (auto again = session.undo_step(); !again) finding("undo_step after redo_step: " + again.reason());
+            if (!(ops_driver::snapshot(mesh) == undone))
+                finding("step " + std::to_string(index) + ": undoing the redo did not give the mesh back");
             continue;
         }
         const auto before = ops_driver::snapshot(mesh);

@@ -88,6 +88,7 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
         return applied.refusal();
     }
     m_kept.push_back(!outermost ? Kept::application_step : recorded ? Kept::history_entry : Kept::nothing);
+    m_undone.clear();  // a new step: what was undone is no longer ahead
     m_revision = m_mesh.revision();
     report.elements = std::move(watcher.elements);
     sort_unique(report.elements);
@@ -114,8 +115,8 @@ Outcome<Done> ToolSession::undo_step() {
         return Refusal{RefusalCode::not_applicable,
                        "undo_step: the step is part of the application's open step"};
     if (m_kept.back() == Kept::nothing) {
+        m_undone.push_back(Kept::nothing);
         m_kept.pop_back();
-        step_taken_back();
         return Done{};
     }
     if (m_mesh.revision() != m_revision)
@@ -123,9 +124,27 @@ Outcome<Done> ToolSession::undo_step() {
                        "undo_step: the mesh changed since the session's last step"};
     if (Outcome<Done> undone = m_journal.journal().undo(); !undone)
         return undone.refusal().prefixed("undo_step: ");
+    m_undone.push_back(Kept::history_entry);
     m_kept.pop_back();
     m_revision = m_mesh.revision();
-    step_taken_back();
+    return Done{};
+}
+
+Outcome<Done> ToolSession::redo_step() {
+    if (m_undone.empty())
+        return Refusal{RefusalCode::not_applicable, "redo_step: the session has no undone step to redo"};
+    if (m_undone.back() == Kept::nothing) {
+        m_kept.push_back(Kept::nothing);
+        m_undone.pop_back();
+        return Done{};
+    }
+    if (m_mesh.revision() != m_revision)
+        return Refusal{RefusalCode::stale, "redo_step: the mesh changed since the session's last undo"};
+    if (Outcome<Done> redone = m_journal.journal().redo(); !redone)
+        return redone.refusal().prefixed("redo_step: ");
+    m_kept.push_back(Kept::history_entry);
+    m_undone.pop_back();
+    m_revision = m_mesh.revision();
     return Done{};
 }
 

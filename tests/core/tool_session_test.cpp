@@ -120,6 +120,48 @@ TEST(ToolSession, UndoingAStepThatChangedNothingTakesBackNothing) {
     EXPECT_TRUE(mesh.validate().ok());
 }
 
+// redo_step takes again what undo_step took back, newest undone first, steps that changed nothing
+// included; a new step leaves nothing to redo; and an edit by someone else refuses it.
+TEST(ToolSession, RedoTakesAgainWhatUndoTookBack) {
+    Mesh mesh = test::planar_grid(2);
+    const auto start = snapshot(mesh);
+    SometimesTool tool(mesh);
+    ToolPose right, left;
+    right.position = {1, 0, 0};
+    left.position = {-1, 0, 0};
+    EXPECT_EQ(tool.redo_step().reason(), "redo_step: the session has no undone step to redo");
+    EXPECT_EQ(tool.redo_step().code(), RefusalCode::not_applicable);
+    ASSERT_TRUE(tool.step(right).ok());
+    const auto after_split = snapshot(mesh);
+    ASSERT_TRUE(tool.step(left).ok());  // changes nothing
+    ASSERT_TRUE(tool.undo_step().ok());
+    ASSERT_TRUE(tool.undo_step().ok());
+    EXPECT_TRUE(snapshot(mesh) == start);
+    ASSERT_TRUE(tool.redo_step().ok());
+    EXPECT_TRUE(snapshot(mesh) == after_split);
+    EXPECT_EQ(tool.steps(), 1u);
+    ASSERT_TRUE(tool.redo_step().ok());  // the step that changed nothing
+    EXPECT_EQ(tool.steps(), 2u);
+    EXPECT_TRUE(snapshot(mesh) == after_split);
+    EXPECT_EQ(tool.redo_step().reason(), "redo_step: the session has no undone step to redo");
+
+    // a new step: nothing ahead to redo
+    ASSERT_TRUE(tool.undo_step().ok());
+    ASSERT_TRUE(tool.step(left).ok());
+    EXPECT_EQ(tool.redo_step().reason(), "redo_step: the session has no undone step to redo");
+
+    // an edit made by someone else since the undo
+    ASSERT_TRUE(tool.undo_step().ok());
+    ASSERT_TRUE(tool.undo_step().ok());
+    const std::array<VertexId, 1> v{8};  // the corner (2, 2)
+    const std::array<Point, 1> p{Point{2.01, 2, 0}};
+    ASSERT_TRUE(mesh.move_vertices(v, p, PositionSet::deformed).ok());
+    const auto redo = tool.redo_step();
+    EXPECT_EQ(redo.reason(), "redo_step: the mesh changed since the session's last undo");
+    EXPECT_EQ(redo.code(), RefusalCode::stale);
+    EXPECT_TRUE(mesh.validate().ok());
+}
+
 TEST(ToolSession, CancelTakesBackEveryStep) {
     Mesh mesh = test::planar_grid(4);
     const auto start = snapshot(mesh);

@@ -69,6 +69,10 @@ public:
     // that step was part of an application's open step (the application undoes it), or when
     // the mesh changed since (another tool or the application edited it).
     Outcome<Done> undo_step();
+    // Takes again the newest step undo_step took back, as it was: the mesh and the tool's side
+    // logs (the journal's redo). Refuses when there is none, when a step was taken since, or when
+    // the mesh changed since.
+    Outcome<Done> redo_step();
     // Takes back every kept step of this session, newest first; stops at the first that cannot
     // be (the reason says how many were).
     Outcome<Done> cancel();
@@ -82,16 +86,11 @@ protected:
     // What the tool does at `pose`: any Mesh calls and operations, adding what it did to
     // `report.actions` (step() fills in elements and vertices). A refusal takes it all back.
     virtual Outcome<Done> apply(const ToolPose& pose, StepReport& report) = 0;
-    // Called after undo_step (or cancel) took back a step apply() had completed, newest first:
-    // a tool that keeps state from step to step (a cutter's incomplete cuts, the scalpel's last
-    // pose) restores its state of before that step. A refused apply() restores its own state
-    // before it returns.
-    virtual void step_taken_back() {}
     // State the tool keeps between steps, attached to the session's journal (side_log.hpp): every
-    // step marks it, a refused step takes it back, and undo_step (or an application's undo) takes
-    // it back with the mesh, so the tool needs no stack of its own nor step_taken_back(). Call it
-    // from the tool's constructor; the log, a member of the tool, detaches itself when destroyed.
-    // Refuses a log attached to another journal.
+    // step marks it, a refused step takes it back, and undo_step and redo_step (or an
+    // application's undo and redo) take it back and forth with the mesh, so the tool needs no
+    // stack of its own. Call it from the tool's constructor; the log, a member of the tool,
+    // detaches itself when destroyed. Refuses a log attached to another journal.
     Outcome<Done> keep_beside(SideLog& log);
     // Inside apply(): the elements the step's edits have changed or added so far, in the order of
     // their events (an id may repeat, and may have been removed since). It only grows during a
@@ -112,6 +111,7 @@ private:
     // the mesh or a side log (the journal keeps no entry for it; undoing it is taking back nothing)
     enum class Kept : std::uint8_t { history_entry, application_step, nothing };
     std::vector<Kept> m_kept;
+    std::vector<Kept> m_undone;  // taken back by undo_step, newest last: what redo_step takes again
     std::uint64_t m_revision = 0;  // the mesh's revision after this session's last change
     const std::vector<ElementId>* m_step_elements = nullptr;  // the step watcher's, during apply()
     const std::vector<VertexId>* m_step_vertices = nullptr;   // the same
