@@ -4,25 +4,11 @@
 #include <algorithm>
 #include <limits>
 
+#include "sxk/step_events.hpp"
+
 namespace sxk {
 
 namespace {
-
-// What a step's edits did, as their events tell it.
-class StepWatcher final : public Watcher {
-public:
-    void element_changed(const Mesh&, ElementId t, const Simplex&) override { elements.push_back(t); }
-    void element_added(const Mesh&, ElementId t) override {
-        elements.push_back(t);
-        added.push_back(t);
-    }
-    void vertices_moved(const Mesh&, std::span<const VertexId> moved, PositionSet) override {
-        vertices.insert(vertices.end(), moved.begin(), moved.end());
-    }
-    std::vector<ElementId> elements;
-    std::vector<VertexId> vertices;
-    std::vector<ElementId> added;
-};
 
 template <class T>
 void sort_unique(std::vector<T>& ids) {
@@ -64,13 +50,15 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     const std::size_t elements_before = m_mesh.element_count();
     const bool in_step = m_mesh.revision() == m_revision;  // nothing changed since our last step
     StepReport report;
-    StepWatcher watcher;
+    // what the step's edits did, rolled-back inner steps included (a tool may have read their
+    // elements, which are dead or remade since)
+    StepEvents watcher;
     Outcome<Done> applied = Done{};
     {
         EditStep step(journal);
         const ScopedWatcher watching(m_mesh, watcher);
-        m_step_elements = &watcher.elements;
-        m_step_vertices = &watcher.vertices;
+        m_step_elements = &watcher.touched();
+        m_step_vertices = &watcher.moved();
         struct Forget {  // also when apply throws: the watcher's lists go out of scope with it
             const std::vector<ElementId>*& elements;
             const std::vector<VertexId>*& vertices;
@@ -90,15 +78,14 @@ Outcome<StepReport> ToolSession::step(const ToolPose& pose) {
     m_kept.push_back(!outermost ? Kept::application_step : recorded ? Kept::history_entry : Kept::nothing);
     m_undone.clear();  // a new step: what was undone is no longer ahead
     m_revision = m_mesh.revision();
-    report.elements = std::move(watcher.elements);
-    sort_unique(report.elements);
-    std::erase_if(report.elements, [&](ElementId t) { return !m_mesh.is_element(t); });
+    report.elements = watcher.created_since(m_mesh, StepEvents::Mark{});
     // after = before - removed + made, counting only the made elements still there
-    sort_unique(watcher.added);
+    std::vector<ElementId> added = watcher.added();
+    sort_unique(added);
     const auto made = static_cast<std::size_t>(
-        std::count_if(watcher.added.begin(), watcher.added.end(), [&](ElementId t) { return m_mesh.is_element(t); }));
+        std::count_if(added.begin(), added.end(), [&](ElementId t) { return m_mesh.is_element(t); }));
     report.elements_removed = elements_before + made - m_mesh.element_count();
-    report.vertices = std::move(watcher.vertices);
+    report.vertices = watcher.moved();
     for (std::size_t v = vertices_before; v < m_mesh.vertex_count(); ++v)
         report.vertices.push_back(static_cast<VertexId>(v));
     sort_unique(report.vertices);

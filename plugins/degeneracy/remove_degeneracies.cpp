@@ -226,18 +226,11 @@ private:
 
     // Marks the corners of every element the kept edits since `events_before` removed, changed or
     // made: their stars changed at this attempt (a rolled-back move left no events, move_step.hpp).
-    void note_changes(std::size_t events_before) {
-        auto mark = [&](const Simplex& s) {
-            for (const VertexId v : s.vertices()) {
-                if (v >= m_star_changed.size()) m_star_changed.resize(std::size_t{v} + 1, 0);
-                m_star_changed[v] = m_attempts;
-            }
-        };
-        for (std::size_t i = events_before; i < m_log.events.size(); ++i) {
-            const detail::MoveLog::Event& e = m_log.events[i];
-            if (e.kind != detail::MoveLog::Event::Kind::added) mark(e.was);
-            if (e.kind != detail::MoveLog::Event::Kind::removed) mark(e.now);
-        }
+    void note_changes(const StepEvents::Mark& events_before) {
+        m_log.for_changed_stars(events_before, [&](VertexId v) {
+            if (v >= m_star_changed.size()) m_star_changed.resize(std::size_t{v} + 1, 0);
+            m_star_changed[v] = m_attempts;
+        });
     }
 
     bool degenerate(ElementId t) const {
@@ -261,7 +254,7 @@ private:
         p.elements_before = m_mesh.element_count();
         p.vertices_before = report.passes.empty() ? report.vertices_before : report.passes.back().vertices_after;
         for (const ElementId t : list) ++p.found[static_cast<std::size_t>(detail::classify_element(m_mesh, t, m_options))];
-        m_log.truncate(0, 0);  // no move is open between passes
+        m_log.clear();  // no move is open between passes
         detail::Tally tally;
         std::vector<ElementId> next;
         if (kind == PassReport::Kind::cut_free) {
@@ -285,7 +278,7 @@ private:
                 const ElementId t = detail::element_with(m_mesh, vertices);
                 if (t == invalid_id || !degenerate(t)) continue;
                 if (kind == PassReport::Kind::collapse && fails_again(vertices)) continue;
-                const std::size_t events_before = m_log.events.size();
+                const StepEvents::Mark events_before = m_log.mark();
                 detail::Refused why;
                 if (kind == PassReport::Kind::peel) {
                     why = detail::peel_off_boundary(m_mesh, t, m_options);
@@ -314,7 +307,7 @@ private:
             }
             for (const Simplex& vertices : keys)
                 if (const ElementId t = detail::element_with(m_mesh, vertices); t != invalid_id) next.push_back(t);
-            for (const ElementId t : m_log.touched)
+            for (const ElementId t : m_log.touched())
                 if (in_region(t)) next.push_back(t);
             next = degenerates_among(next);
         }
@@ -386,8 +379,8 @@ private:
             std::sort(shapes.begin(), shapes.end());
             walk(shapes, [](ElementId) { return true; });
         } else {
-            for (const ElementId t : m_log.touched) m_made.insert(t);
-            m_touched_ever.insert(m_log.touched.begin(), m_log.touched.end());
+            for (const ElementId t : m_log.touched()) m_made.insert(t);
+            m_touched_ever.insert(m_log.touched().begin(), m_log.touched().end());
             std::erase_if(m_made, [&](ElementId t) { return !m_mesh.is_element(t); });
             for (const ElementId t : m_made)
                 shapes.emplace_back(detail::element_aspect_ratio(m_mesh, t, m_options.positions), t);
@@ -404,7 +397,7 @@ private:
     Mesh& m_mesh;
     const Options& m_options;
     bool m_whole_mesh;
-    detail::MoveLog m_log;
+    StepEvents m_log;  // what the run's kept edits did (rolled-back moves forget theirs)
     detail::MoveStep* m_move = nullptr;       // a removal move (run() owns it)
     detail::MoveStep* m_follow_up = nullptr;  // the follow-up moves inside it
     detail::Effort m_effort = detail::Effort::paying;
