@@ -5,35 +5,15 @@
 #include <array>
 #include <utility>
 
+#include "cycle_around.hpp"
 #include "star_walk.hpp"
 
 namespace sxk {
 
 std::vector<ElementId> cycle_around(const Mesh& mesh, FaceId entry, int j) {
-    // The thesis' loop. Invariant: f == invalid_id or f's simplex is sigma plus v, with
-    // sigma = face_simplex(entry).subn(j). Enter e through f, leave through the face of e
-    // opposite v (sigma plus e's remaining vertex), continue in that face's mate.
-    auto walk = [&](FaceId start, VertexId v, FaceId stop, std::vector<ElementId>& out) {
-        for (FaceId f = start; f != invalid_id;) {
-            const ElementId e = mesh.face_element(f);
-            const FaceId exit = mesh.opposite_face(e, v);
-            v = mesh.opposite_vertex(e, f);
-            out.push_back(e);
-            f = mesh.mate(exit);
-            if (f == stop) return true;  // closed ring
-        }
-        return false;  // reached the boundary
-    };
-    const VertexId v0 = mesh.face_simplex(entry).vertex(j);
     std::vector<ElementId> ring;
-    if (walk(entry, v0, entry, ring)) return ring;
-    // sigma is on the boundary: the thesis stops here; walk the other way too, entering the
-    // neighbour behind entry through entry's mate, so the ring is complete.
-    std::vector<ElementId> back;
-    walk(mesh.mate(entry), v0, invalid_id, back);
-    std::reverse(back.begin(), back.end());
-    back.insert(back.end(), ring.begin(), ring.end());
-    return back;
+    detail::cycle_around_into(mesh, entry, j, ring);
+    return ring;
 }
 
 void collect_star(const Mesh& mesh, VertexId v, ElementId start, std::vector<ElementId>& out) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cycle_around.hpp"
 #include "mesh_checks.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/ops/flip_options.hpp"
@@ -95,35 +96,6 @@ struct EdgeRing {
     std::size_t size = 0;
     std::span<const ElementId> span() const { return {elements.data(), size}; }
 };
-
-// cycle_around(mesh, entry, j) without allocating: the same walk, the same order (thesis
-// cycle-around; at the boundary it walks the other way from entry's mate too).
-inline void cycle_around_into(const Mesh& mesh, FaceId entry, int j, SmallVector<ElementId, 64>& ring) {
-    auto opposite_vertex = [&](ElementId e, FaceId f) {
-        for (int i = 0; i < 4; ++i)
-            if (mesh.face(e, i) == f) return mesh.simplex(e).vertex(i);
-        return invalid_id;
-    };
-    auto walk = [&](FaceId start, VertexId v, FaceId stop, SmallVector<ElementId, 64>& out) {
-        for (FaceId f = start; f != invalid_id;) {
-            const ElementId e = mesh.face_element(f);
-            const FaceId exit = mesh.face(e, mesh.simplex(e).index(v));
-            v = opposite_vertex(e, f);
-            out.push_back(e);
-            f = mesh.mate(exit);
-            if (f == stop) return true;
-        }
-        return false;
-    };
-    const VertexId v0 = mesh.face_simplex(entry).vertex(j);
-    if (walk(entry, v0, entry, ring)) return;
-    SmallVector<ElementId, 64> back;
-    walk(mesh.mate(entry), v0, invalid_id, back);
-    std::reverse(back.begin(), back.end());
-    for (const ElementId t : ring) back.push_back(t);
-    ring.clear();
-    for (const ElementId t : back) ring.push_back(t);
-}
 
 // The ring of tetrahedra around the interior edge face_simplex(entry).subn(j), which must have
 // exactly `degree` of them (3 for flip_32, 4 for flip_44); a refusal otherwise.
