@@ -266,8 +266,9 @@ private:
     double m_element_volume = 0;  // the mean element volume when the session began (reference)
     double m_split_beyond = 0;    // Options::split_beyond in lengths (0: never split)
     CutMarks m_marks;  // a side log of the session's journal, as m_beside
-    // The scalpel beside the mesh, and the number of kept steps: every step then has a record, and
-    // its undo or redo makes the blade track start over (m_beside.on_restore).
+    // The scalpel beside the mesh, and the number of steps taken: every step changes it, so that
+    // its rollback, undo or redo makes the blade track start over (m_beside.on_restore), and the
+    // removal's inner steps, which change neither, leave the track alone.
     struct Beside {
         std::optional<Scalpel> scalpel;
         std::uint64_t steps = 0;

@@ -246,7 +246,9 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
             return Refusal{RefusalCode::bad_argument, "snapcut: the scalpel's coordinates must be finite"};
     m_last = {};
     m_loose.clear();
-    // a refusal below: the journal takes the mesh, the marks and the scalpel back together
+    // a refusal below: the journal takes the mesh, the marks and the scalpel back together, and
+    // the step's count, changed here, makes the blade track start over (m_beside.on_restore)
+    ++m_beside.edit().steps;
     if (m_scalpel || m_swept) {
         // the movement's sweep: (h, t, t') then (h, t', h'), or sweep()'s triangle alone; a
         // sweep with collinear corners (the scalpel stood still, or slid along itself) sweeps no
@@ -287,7 +289,6 @@ Outcome<Done> SnapCutSession::apply(const ToolPose& pose, StepReport& report) {
     }
     relax(report);
     m_scalpel = next;
-    ++m_beside.edit().steps;
     m_last.elements = mesh().element_count();
     m_last.vertices = mesh().vertex_count();
     m_last.incomplete = m_marks.incomplete().size();

@@ -97,15 +97,20 @@ protected:
     }
 };
 
+// SometimesTool's poses: right of x = 0 it edits, left of it it does not.
+ToolPose pose_at_x(double x) {
+    ToolPose pose;
+    pose.position = {x, 0, 0};
+    return pose;
+}
+
 // A step that changed nothing leaves no entry in the journal's history: undoing it takes back
 // nothing, and the step before it is undone next (it used to undo that one at once).
 TEST(ToolSession, UndoingAStepThatChangedNothingTakesBackNothing) {
     Mesh mesh = test::planar_grid(2);
     const auto start = snapshot(mesh);
     SometimesTool tool(mesh);
-    ToolPose right, left;
-    right.position = {1, 0, 0};
-    left.position = {-1, 0, 0};
+    const ToolPose right = pose_at_x(1), left = pose_at_x(-1);
     ASSERT_TRUE(tool.step(right).ok());
     const auto after_split = snapshot(mesh);
     const auto idle = tool.step(left);
@@ -126,9 +131,7 @@ TEST(ToolSession, RedoTakesAgainWhatUndoTookBack) {
     Mesh mesh = test::planar_grid(2);
     const auto start = snapshot(mesh);
     SometimesTool tool(mesh);
-    ToolPose right, left;
-    right.position = {1, 0, 0};
-    left.position = {-1, 0, 0};
+    const ToolPose right = pose_at_x(1), left = pose_at_x(-1);
     EXPECT_EQ(tool.redo_step().reason(), "redo_step: the session has no undone step to redo");
     EXPECT_EQ(tool.redo_step().code(), RefusalCode::not_applicable);
     ASSERT_TRUE(tool.step(right).ok());

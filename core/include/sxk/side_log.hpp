@@ -73,9 +73,10 @@ public:
     const T& get() const { return m_value; }
     // The value to change (inside a step, for the change to be taken back with it).
     T& edit() { return m_value; }
-    // Called after a rollback, an undo or a redo has put a value back, with the value it replaced:
-    // for what must follow the value outside the mesh (the needle holds the body's nodes its
-    // value lists, and releases those it no longer does).
+    // Called after a rollback, an undo or a redo has changed the value, with the value it
+    // replaced: for what must follow the value outside the mesh (the needle holds the body's nodes
+    // its value lists, and releases those it no longer does). A rollback that finds the value as
+    // it was calls nothing (the many inner steps a removal tries and rolls back).
     void on_restore(std::function<void(const T& replaced)> follow) { m_follow = std::move(follow); }
 
     std::size_t mark() override {
@@ -83,9 +84,10 @@ public:
         return m_saved.size() - 1;
     }
     void rollback_to(std::size_t mark) override {
+        const bool changed = !(m_value == m_saved[mark]);
         T replaced = std::exchange(m_value, std::move(m_saved[mark]));
         m_saved.resize(mark);
-        if (m_follow) m_follow(replaced);
+        if (m_follow && changed) m_follow(replaced);
     }
     void keep(std::size_t mark) override { m_saved.resize(mark); }
     std::unique_ptr<SideRecord> commit(std::size_t mark) override {

@@ -232,7 +232,7 @@ private:
         std::string stale_reason;
     };
     std::vector<Opened> m_opened;
-    struct Record;  // a committed step's writes, and the staleness before it
+    struct Record;  // a committed step's writes, and the staleness on either side of it
     // writes a mark, logging the one it replaces (both rules' replays go through here)
     void write_marking(ElementId t, const TetMarking& marking);
 };
