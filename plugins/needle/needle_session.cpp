@@ -135,8 +135,12 @@ Outcome<Done> NeedleSession::apply(const ToolPose& pose, StepReport& report) {
     if (mesh().ambient_dimension() == 2) needle.base[2] = needle.tip[2] = 0;
     if (!finite(needle.base) || !finite(needle.tip) || !(pose.length > 0))
         return Refusal{RefusalCode::bad_argument, "needle: the pose is not a needle (length > 0, finite)"};
-    // a refusal: the journal takes the mesh, the marks and the state back together (follow())
-    return step_to(needle, report);
+    // a refusal: the journal takes the mesh, the marks and the state back together (follow(),
+    // when the state changed); the body, which the step may have solved even so, reads its
+    // displacements from the mesh before the next step
+    Outcome<Done> stepped = step_to(needle, report);
+    if (!stepped) m_resync = true;
+    return stepped;
 }
 
 Outcome<Done> NeedleSession::hold(const NeedleNode& node, const Needle& needle) {
