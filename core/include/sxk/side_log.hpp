@@ -84,10 +84,11 @@ public:
         return m_saved.size() - 1;
     }
     void rollback_to(std::size_t mark) override {
-        const bool changed = !(m_value == m_saved[mark]);
+        // compared only for a follower: the planar cutters roll back a snapshot per tried flip
+        const bool follow = m_follow && !(m_value == m_saved[mark]);
         T replaced = std::exchange(m_value, std::move(m_saved[mark]));
         m_saved.resize(mark);
-        if (m_follow && changed) m_follow(replaced);
+        if (follow) m_follow(replaced);
     }
     void keep(std::size_t mark) override { m_saved.resize(mark); }
     std::unique_ptr<SideRecord> commit(std::size_t mark) override {
