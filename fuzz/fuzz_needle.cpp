@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "needle.hpp"
 #include "simulation.hpp"
 #include "sxk/generators.hpp"
@@ -26,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     sxk::Mesh mesh = original;
     std::vector<std::string> words{"--fix", "x>0.0999", "--E", "34e3", "--nu", "0.34", "--tol", "0.01"};
     if (planar) words.insert(words.end(), {"--thickness", "0.01"});
-    auto body = sxk::elasticity::simulate(mesh, words);
+    auto body = sxk::elasticity::simulate(mesh, sxk::cli::body_options(words).value());
     if (!body) sxk::fuzz::finding("simulate: " + body.reason());
     sxk::needle::Options options;
     options.h_ref = planar ? 0.1 / 16 : 0.1 / 8;

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "degeneracy_plugin.hpp"
-#include "degeneracy_service.hpp"
+#include "sxk/plugins/degeneracy.hpp"
 #include "snap_cut.hpp"
 #include "sxk/generators.hpp"
 #include "tool_replay.hpp"

@@ -120,6 +120,26 @@ struct PluginHost::State final : Services {
                            " offers " + std::string(service_id)};
     }
 
+    // PluginHost::tool, here for the same reason
+    Outcome<ToolFactory*> find_tool(std::string_view name) const override {
+        std::vector<std::string> offered;
+        for (const auto& entry : entries) {
+            const ServiceOffer offer = entry.loaded.plugin->offer(ToolFactory::service_id);
+            if (offer.object == nullptr || offer.version != ToolFactory::service_version) continue;
+            auto* factory = static_cast<ToolFactory*>(offer.object);
+            for (const ToolFactory::Tool& tool : factory->tools()) {
+                if (tool.name == name) return factory;
+                offered.emplace_back(tool.name);
+            }
+        }
+        std::sort(offered.begin(), offered.end());
+        std::string known;
+        for (const std::string& tool : offered) known += (known.empty() ? "" : ", ") + tool;
+        return Refusal{RefusalCode::not_found,
+                       "no tool called " + std::string(name) +
+                           (known.empty() ? "; no loaded plug-in offers a tool" : "; the plug-ins offer: " + known)};
+    }
+
     void refuse(const fs::path& path, std::string reason) {
         diagnostics.push_back({path, std::move(reason)});
     }
@@ -333,6 +353,8 @@ Outcome<void*> PluginHost::find_service(std::string_view service_id, std::uint32
                                         std::string_view plugin) const {
     return m_state->find_service(service_id, version, plugin);
 }
+
+Outcome<ToolFactory*> PluginHost::tool(std::string_view name) const { return m_state->find_tool(name); }
 
 FoundCommand PluginHost::find_command(std::span<const std::string> args) const {
     FoundCommand best;

@@ -32,7 +32,7 @@
 #include "mesh_surface.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
-#include "render_service.hpp"
+#include "sxk/plugins/render.hpp"
 #include "sxk/io.hpp"
 #include "sxk/ops/dissect.hpp"
 #include "triangular_patch.hpp"

@@ -359,7 +359,10 @@ private:
         static_cast<Outcome<Report> (*)(Mesh&, std::span<const ElementId>, const Options&)>(
             &remove_degeneracies),
         &classify};
-    ToolFactory m_tools{&brush_tools, &begin_brush};
+    ToolFactoryOf<BrushOptions> m_tools{
+        [](Mesh& mesh, const BrushOptions& brush, const ToolContext&) -> Outcome<std::unique_ptr<ToolSession>> {
+            return std::unique_ptr<ToolSession>(std::make_unique<DegeneracyBrush>(mesh, brush.radius, brush.removal));
+        }};
 };
 
 }  // namespace

@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "degeneracy_service.hpp"
+#include "sxk/plugins/degeneracy.hpp"
 #include "remove_degeneracies.hpp"
 #include "sxk/plugin.hpp"
 

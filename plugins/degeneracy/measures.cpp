@@ -1,7 +1,6 @@
 // Shape measures in the measured positions (thesis §3.2.3): aspect ratio and class.
 #include <algorithm>
 #include <array>
-#include <numeric>
 
 #include "removal_steps.hpp"
 #include "sxk/quality.hpp"
@@ -48,17 +47,6 @@ Foot foot_on_line(const Point& a, const Point& b, const Point& p) {
 
 }  // namespace detail
 
-std::size_t PassReport::found_total() const { return std::accumulate(found.begin(), found.end(), std::size_t{0}); }
-
-const char* to_string(PassReport::Kind kind) {
-    switch (kind) {
-        case PassReport::Kind::collapse: return "collapse";
-        case PassReport::Kind::flip: return "flip";
-        case PassReport::Kind::peel: return "peel";
-        case PassReport::Kind::cut_free: return "cut free";
-    }
-    return "?";
-}
 
 DegenerateClass classify(const Mesh& mesh, ElementId t, const Options& options) {
     return detail::classify_element(mesh, t, options);

@@ -29,21 +29,7 @@ void sort_unique(std::vector<ElementId>& ids) {
 }
 
 std::optional<Refusal> check(const Mesh& mesh, const Options& options) {
-    if (!(options.aspect_ratio > 0 && options.aspect_ratio < 1))
-        return Refusal{RefusalCode::bad_argument,
-                       "remove_degeneracies: aspect ratio threshold must be in (0, 1), not " +
-                std::to_string(options.aspect_ratio)};
-    if (!(options.large_angle > pi / 2 && options.large_angle < pi))
-        return Refusal{RefusalCode::bad_argument,
-                       "remove_degeneracies: large angle must be in (pi/2, pi) radians, not " +
-                std::to_string(options.large_angle)};
-    if (!(options.boundary_tolerance >= 0 && options.boundary_tolerance < 1))
-        return Refusal{RefusalCode::bad_argument,
-                       "remove_degeneracies: boundary tolerance must be in [0, 1), not " +
-                std::to_string(options.boundary_tolerance)};
-    if (options.max_passes == 0)
-        return Refusal{RefusalCode::bad_argument,
-                       "remove_degeneracies: max passes must be at least 1"};
+    if (auto checked = options.check(); !checked) return checked.refusal();
     if (mesh.topological_dimension() != 2 && mesh.topological_dimension() != 3)
         return Refusal{RefusalCode::wrong_dimension,
                        "remove_degeneracies: not a triangle or tetrahedral mesh"};

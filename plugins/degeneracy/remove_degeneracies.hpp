@@ -68,76 +68,9 @@
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
 #include "sxk/quality.hpp"
+#include "sxk/plugins/degeneracy.hpp"
 
 namespace sxk::degeneracy {
-
-// How far a run is, told between two elements of a pass: `done` of the `listed` degenerates of
-// pass `pass` (from 1) have been handled. A pass may make new degenerates, so the next pass's
-// list may be longer; the passes end when it no longer shrinks (see the header comment).
-struct Progress {
-    std::size_t pass = 0;
-    const char* stage = "";  // "collapse", "flip", "peel" or "cut free" (to_string of the kind)
-    std::size_t done = 0, listed = 0;
-};
-
-struct Options {
-    double aspect_ratio = 0.01;      // thesis aspect ratio below this: degenerate (0 < a < 1)
-    double large_angle = 0.99 * pi;  // a dihedral (triangle) angle above this is large (pi/2 < x < pi)
-    bool flips = true;               // try crack-free flips before cutting free
-    bool peel = true;                // remove flat elements lying on the boundary (no crack)
-    bool cut_free = true;            // cut free and remove what no collapse, flip or peel removed
-    // A boundary face whose vertex a collapse moves may leave its plane (line) by at most this
-    // times its longest edge (0: exactly in the plane, which the snapped positions of a cut
-    // rarely allow). The default matches aspect_ratio: a collapse may move the boundary by no
-    // more than the height of the flat element it removes.
-    double boundary_tolerance = 0.01;
-    std::size_t max_passes = 64;     // collapse passes in all (the list must also shrink)
-    // Shapes are measured in these positions. Reference by default: the reference shape makes
-    // the stiffness matrix (thesis §3.2.3: flat elements give unbounded condition numbers), and
-    // a snap cut moves the reference positions (§3.2.2).
-    Positions positions = Positions::reference;
-    // Called on the caller's thread between elements (a command's progress line: the femur at
-    // aspect ratio 0.2 lists 16,234 elements and takes minutes); nothing when empty. It must
-    // not edit the mesh.
-    std::function<void(const Progress&)> progress;
-};
-
-// One pass over the list of degenerates.
-struct PassReport {
-    enum class Kind { collapse, flip, peel, cut_free };
-    Kind kind = Kind::collapse;
-    // degenerates on the list at the start of the pass, by DegenerateClass (index = enum value;
-    // triangles use needle and cap)
-    std::array<std::size_t, 5> found{};
-    std::size_t collapses = 0;
-    std::size_t splits = 0;       // kept splits (undone ones are not counted)
-    std::size_t flips = 0;
-    std::size_t peeled = 0;       // flat elements removed from the boundary (no crack)
-    std::size_t cut_free = 0;     // elements cut free and removed (cracks)
-    std::size_t elements_before = 0, elements_after = 0;
-    std::size_t vertices_before = 0, vertices_after = 0;  // vertices in some element
-    // over the whole mesh after the pass, in options.positions
-    double min_aspect_ratio_after = 0;
-    double min_angle_after = 0, max_angle_after = 0;  // dihedral angles (triangles: angles), radians
-    std::size_t found_total() const;
-};
-const char* to_string(PassReport::Kind kind);
-
-struct Report {
-    std::vector<PassReport> passes;
-    std::size_t found = 0;         // degenerates on the first list
-    std::size_t remaining = 0;     // degenerates left at the end (0 unless cut_free is off)
-    std::size_t cut_free = 0;      // cracks: elements cut free and removed
-    std::size_t collapses = 0, splits = 0, flips = 0, peeled = 0;
-    std::size_t elements_before = 0, elements_after = 0;
-    std::size_t vertices_before = 0, vertices_after = 0;
-    // The elements still degenerate at the end (when remaining > 0), and why their last
-    // attempt was refused (one reason per element, same order): the refusal of each pass that
-    // tried, and the code of the first of them (none for an element that was not tried).
-    std::vector<ElementId> remaining_elements;
-    std::vector<std::string> remaining_reasons;
-    std::vector<std::optional<RefusalCode>> remaining_codes;
-};
 
 // Finds every degenerate element of the mesh and removes them. Refuses (mesh untouched) when
 // an option is out of range: "remove_degeneracies: aspect ratio threshold must be in (0, 1),

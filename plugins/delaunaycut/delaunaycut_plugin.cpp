@@ -35,10 +35,6 @@ namespace sxk::delaunaycut {
 
 namespace {
 
-// The host's services (Plugin::attach), for --frames (the bezier plug-in's renderer). A global as
-// in the snapcut plug-in: a process loads the plug-in once, the last host to attach it is used.
-const sxk::Services* plugin_host = nullptr;
-
 struct CommandOptions {
     std::string input, path, output, svg, histogram, undo;
     RecordingOptions recording;  // --frames, --animation, --series (tool_frames.hpp)
@@ -90,6 +86,9 @@ nlohmann::ordered_json step_json(const ReplayedStep& step) {
 
 class CutDelaunayCommand final : public PluginCommand {
 public:
+    // `host`: the plug-in's, set when the host attaches it
+    explicit CutDelaunayCommand(const sxk::Services* const& host) : m_host(host) {}
+
     std::string_view name() const override { return "cut delaunay"; }
     std::string_view summary() const override {
         return "cut a planar triangle mesh along a recorded point-scalpel path, or a triangle surface in space "
@@ -224,7 +223,7 @@ public:
         WriteOptions writing;
         writing.drop_unused_vertices = true;  // removals and contractions leave vertices in no element
         auto recording = ToolRecording::open(
-            plugin_host, *mesh, options.recording,
+            m_host, *mesh, options.recording,
             {"cut delaunay", path.samples.size(),
              {"--colour", "piece", "--cut-label", std::to_string(options.cut.cut_label)}, {}, writing},
             err);
@@ -372,22 +371,14 @@ public:
         out << line << options.input << " -> " << options.output << '\n';
         return 0;
     }
+
+private:
+    const sxk::Services* const& m_host;
 };
 
-std::span<const std::string_view> delaunaycut_tools() {
-    static constexpr std::array<std::string_view, 1> tools{"delaunaycut"};
-    return tools;
-}
-
-Outcome<std::unique_ptr<ToolSession>> begin_delaunaycut(std::string_view tool, Mesh& mesh,
-                                                        std::span<const std::string> words) {
-    if (tool != "delaunaycut")
-        return Refusal{RefusalCode::not_found,
-                       "no tool called " + std::string(tool) + " in delaunaycut (it has: delaunaycut)"};
-    CLI::App app("delaunaycut session", "delaunaycut");
-    Options options;
-    add_cut_options(app, options);
-    if (auto refused = parse_tool_words(app, words, "delaunaycut")) return *refused;
+// The tool "delaunaycut": the planar cutter on a planar mesh, the surface cutter on a surface in
+// space.
+Outcome<std::unique_ptr<ToolSession>> begin_delaunaycut(Mesh& mesh, const Options& options, const ToolContext&) {
     if (mesh.ambient_dimension() == 3) {
         auto surface = SurfaceCutSession::make(mesh, options);
         if (!surface) return surface.refusal();
@@ -405,19 +396,13 @@ public:
         if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
         return {};
     }
-    void attach(const sxk::Services& services) override {
-        m_attached = &services;
-        plugin_host = &services;
-    }
-    ~DelaunaycutPlugin() override {
-        if (plugin_host == m_attached) plugin_host = nullptr;
-    }
+    void attach(const sxk::Services& services) override { m_host = &services; }
 
 private:
-    const sxk::Services* m_attached = nullptr;
-    CutDelaunayCommand m_cut;
+    const sxk::Services* m_host = nullptr;  // the host's services, which outlive the plug-in
+    CutDelaunayCommand m_cut{m_host};
     PluginCommand* m_commands[1] = {&m_cut};
-    ToolFactory m_tools{&delaunaycut_tools, &begin_delaunaycut};
+    ToolFactoryOf<Options> m_tools{&begin_delaunaycut};
 };
 
 }  // namespace

@@ -36,39 +36,18 @@
 #include <vector>
 
 #include "scalpel_reach.hpp"
+#include "sxk/plugins/delaunaycut.hpp"
 #include "sxk/locate.hpp"
 #include "sxk/side_log.hpp"
 #include "sxk/tool_session.hpp"
 
 namespace sxk::delaunaycut {
 
-enum class Method { delaunay, subdivision };
+// Method and Options: sxk/plugins/delaunaycut.hpp (installed).
 std::string_view method_name(Method method);
 
-struct Options {
-    Method method = Method::delaunay;
-    // The thesis' thresholds (§5.4), in mean edge lengths of the mesh (deformed positions,
-    // measured when the session begins): an interior node nearer the active node than eps_edge is
-    // removed; the incision is made once the active node is eps_entry from where the scalpel
-    // entered; the cut is finished once the scalpel's extrapolated movement meets the boundary
-    // within eps_exit. The thesis' defaults: h/3, h/6, h/6. Delaunay cutting only.
-    double eps_edge = 1.0 / 3;
-    // Thesis §5.5's scale-independent criterion instead of eps_edge, when > 0 (degrees): an interior
-    // node next to the active node is removed when the edge between them is "too short", every
-    // angle opposite that edge in its two triangles below this.
-    double short_angle = 0;
-    double eps_entry = 1.0 / 6;
-    double eps_exit = 1.0 / 6;
-    // The nodes an incision split (Fig. 5.5) and the entry fix-up insert, one on each side of the
-    // incision, are moved this fraction of the way from the scalpel's path towards the node
-    // opposite them ("dilated slightly", so that the incision's two sides never touch).
-    double dilation = 0.05;
-    // The face label of the cut (DissectOptions::cut_label).
-    int cut_label = 9999;
-};
 
-// The thresholds' refusals (not positive and finite, out of range) and a mesh with no triangle:
-// what both sessions' make() check first.
+// Options::check and a mesh with no triangle: what both sessions' make() check first.
 Outcome<Done> check_options(const Mesh& mesh, const Options& options);
 
 // Where the scalpel is, as far as the session knows.

@@ -26,17 +26,7 @@ std::string_view phase_name(Phase phase) {
 
 Outcome<Done> check_options(const Mesh& mesh, const Options& options) {
     if (mesh.element_count() == 0) return Refusal{RefusalCode::bad_argument, "delaunaycut: the mesh has no triangle"};
-    for (const auto& [name, value] : {std::pair{"eps-edge", options.eps_edge},
-                                      std::pair{"eps-entry", options.eps_entry},
-                                      std::pair{"eps-exit", options.eps_exit}})
-        if (!(value > 0) || !std::isfinite(value))
-            return Refusal{RefusalCode::bad_argument,
-                           std::string("delaunaycut: --") + name + " must be positive and finite"};
-    if (!(options.dilation >= 0 && options.dilation < 0.5))
-        return Refusal{RefusalCode::bad_argument, "delaunaycut: --dilation must be in [0, 0.5)"};
-    if (!(options.short_angle >= 0 && options.short_angle < 90))
-        return Refusal{RefusalCode::bad_argument, "delaunaycut: --short-angle must be in [0, 90)"};
-    return Done{};
+    return options.check();
 }
 
 void describe(const CutStepReport& step, StepReport& report) {

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "body_setup.hpp"
+#include "body_words.hpp"
 #include "command_line.hpp"
 #include "elastic_body.hpp"
 #include "line_plot.hpp"
@@ -23,17 +24,17 @@
 namespace sxk::elasticity {
 namespace {
 
-struct Options {
+struct CommandOptions {
     std::string input, output;
     ReadOptions reading;
-    BodySetup body;
+    cli::BodyWords body;
     std::string plot;
     bool json = false;
 };
 
-std::optional<Options> parse(std::span<const std::string> args, std::ostream& out,
+std::optional<CommandOptions> parse(std::span<const std::string> args, std::ostream& out,
                              std::ostream& err, int& code) {
-    Options o;
+    CommandOptions o;
     CLI::App app(
         "Deforms a tetrahedral mesh, or a triangle mesh in the plane as a slab in plane stress, by "
         "linear "
@@ -45,7 +46,7 @@ std::optional<Options> parse(std::span<const std::string> args, std::ostream& ou
     app.add_option("OUT", o.output,
                    "Output mesh file, format by extension (" + std::string(known_mesh_extensions()) + ")")
         ->required();
-    add_body_options(app, o.body);
+    cli::add_body_options(app, o.body);
     app.add_flag("--json", o.json,
                  "Print one JSON object (with the residual history) instead of the summary");
     app.add_option(
@@ -69,13 +70,20 @@ std::string_view DeformCommand::summary() const {
 
 int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std::ostream& err) {
     int code = 0;
-    const std::optional<Options> options = parse(args, out, err, code);
+    const std::optional<CommandOptions> options = parse(args, out, err, code);
     if (!options)
         return code;
-    const Options& o = *options;
-    const std::optional<ParsedBody> parsed = parse_body_setup(o.body, err);
-    if (!parsed)
+    const CommandOptions& o = *options;
+    // the options alone before the mesh is read: a mistake in the words is said at once
+    const Outcome<Options> setup = cli::body_options(o.body);
+    if (!setup) {
+        err << "sxk: " << setup.reason() << '\n';
         return 2;
+    }
+    if (auto checked = check_body(*setup); !checked) {
+        err << "sxk: " << checked.reason() << '\n';
+        return 2;
+    }
     if (const auto unknown = unknown_output_format(o.output)) {
         err << "sxk: " << *unknown << '\n';
         return 2;
@@ -87,9 +95,11 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
     if (!mesh)
         return 2;
-    std::optional<BuiltBody> built = build_body(*mesh, o.input, o.body, *parsed, err);
-    if (!built)
+    Outcome<BuiltBody> built = build_body(*mesh, o.input, *setup);
+    if (!built) {
+        err << "sxk: " << built.reason() << '\n';
         return 2;
+    }
     ElasticBody* body = built->body.get();
     const bool planar = built->planar;
     const Model model = built->model;

@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 
 #include "sxk/mesh.hpp"
+#include "sxk/plugins/elasticity.hpp"
 #include "sxk/outcome.hpp"
 #include "sxk/watcher.hpp"
 
@@ -49,11 +50,7 @@ Lame lame(const Material& material);
 // 2 mu lambda / (lambda + 2 mu) = E nu / (1 - nu^2).
 Lame plane_stress_lame(const Material& material);
 
-// The material model of a body.
-enum class Model : std::uint8_t {
-    linear,      // linear elasticity (§3.1; eq. 6.3 for triangles)
-    neohookean,  // compressible neo-Hookean (eq. 4.6; eq. 6.4's 2D analogue for triangles)
-};
+// The material model of a body: Model (sxk/plugins/elasticity.hpp).
 
 struct BodyOptions {
     Model model = Model::linear;

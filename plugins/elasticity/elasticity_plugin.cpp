@@ -1,5 +1,5 @@
 // The elasticity plug-in's entry: `sxk deform`, and the service "sxk.elasticity"
-// (elasticity_service.hpp) through which other plug-ins run a simulation. Programs that link the
+// (sxk/plugins/elasticity.hpp) through which other plug-ins run a simulation. Programs that link the
 // plug-in in may use its library (elastic_body.hpp, solve.hpp) directly.
 #include <span>
 

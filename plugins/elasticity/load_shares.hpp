@@ -6,13 +6,9 @@
 
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
+#include "sxk/plugins/elasticity.hpp"  // Share
 
 namespace sxk::elasticity {
-
-enum class Share {
-    equal,  // every selected vertex the same part
-    area,   // by the boundary area around each (a traction spread evenly over the loaded surface)
-};
 
 // The parts (summing to 1) of `vertices` (sorted, in elements) in a total force. By area: each
 // boundary face whose corners are all selected (a triangle of a tetrahedral mesh, an edge of a

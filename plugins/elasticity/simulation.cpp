@@ -1,4 +1,4 @@
-// The elasticity service's simulation (elasticity_service.hpp): a body from `sxk deform`'s
+// The elasticity service's simulation (sxk/plugins/elasticity.hpp): a body from `sxk deform`'s
 // options, attached to its mesh, relaxed a bounded number of CG iterations per call.
 #include <algorithm>
 #include <chrono>
@@ -9,8 +9,6 @@
 #include <utility>
 
 #include "body_setup.hpp"
-#include "command_line.hpp"
-#include "elasticity_service.hpp"
 #include "local_relaxation.hpp"
 #include "simulation.hpp"
 #include "solve.hpp"
@@ -283,33 +281,14 @@ private:
 
 }  // namespace
 
-Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, std::span<const std::string> words) {
-    BodySetup setup;
-    CLI::App app("elasticity simulation", "deform");
-    add_body_options(app, setup);
-    std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
-    try {
-        app.parse(arguments);
-    } catch (const CLI::ParseError& error) {
-        return Refusal{RefusalCode::bad_argument, std::string("deform: ") + error.what()};
-    }
-    // the command's messages, without its "sxk: " and line end
-    std::ostringstream messages;
-    auto refused = [&messages] {
-        std::string text = messages.str();
-        if (text.rfind("sxk: ", 0) == 0) text.erase(0, 5);
-        while (!text.empty() && text.back() == '\n') text.pop_back();
-        return Refusal{RefusalCode::bad_argument, text};
-    };
-    const std::optional<ParsedBody> parsed = parse_body_setup(setup, messages);
-    if (!parsed) return refused();
-    std::optional<BuiltBody> built = build_body(mesh, "", setup, *parsed, messages);
-    if (!built) return refused();
-    const SolveOptions options{.tolerance = setup.tolerance,
-                               .max_iterations = setup.max_iterations,
-                               .stop = setup.stop == "external" ? StopCriterion::external_force
-                                                                : StopCriterion::with_reactions,
-                               .rounding = setup.rounding};
+Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, const Options& body) {
+    Outcome<BuiltBody> built = build_body(mesh, "", body);
+    if (!built) return built.refusal();
+    const SolveOptions options{.tolerance = body.tolerance,
+                               .max_iterations = body.max_iterations,
+                               .stop = body.stop == Stop::external ? StopCriterion::external_force
+                                                                   : StopCriterion::with_reactions,
+                               .rounding = body.rounding};
     auto simulation = std::make_unique<BodySimulation>(mesh, std::move(*built), options);
     // attached, the body heard init() and would compute every rest shape again at the first
     // solve: here, at setup, rather than inside a tool's first step (47 ms on a million triangles)

@@ -1,14 +1,12 @@
-// The elasticity service's function (elasticity_service.hpp), for the plug-in's entry and tests.
+// The elasticity service's function (sxk/plugins/elasticity.hpp), for the plug-in's entry and tests.
 #pragma once
 
 #include <memory>
-#include <span>
-#include <string>
 
-#include "elasticity_service.hpp"
+#include "sxk/plugins/elasticity.hpp"
 
 namespace sxk::elasticity {
 
-Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, std::span<const std::string> options);
+Outcome<std::unique_ptr<Simulation>> simulate(Mesh& mesh, const Options& options);
 
 }  // namespace sxk::elasticity

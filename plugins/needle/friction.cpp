@@ -6,20 +6,6 @@
 
 namespace sxk::needle {
 
-double Friction::density(double s) const {
-    if (s >= tip_length || tip_length <= 0) return shaft;
-    return tip + (shaft - tip) * std::max(s, 0.0) / tip_length;
-}
-
-double Friction::force(double s0, double s1) const {
-    s0 = std::max(s0, 0.0);
-    s1 = std::max(s1, s0);
-    // the profile is linear on [0, tip_length] and constant beyond: the trapezoid rule on each part
-    // is exact
-    const double knee = std::clamp(tip_length, s0, s1);
-    return 0.5 * (density(s0) + density(knee)) * (knee - s0) + shaft * (s1 - knee);
-}
-
 void share_thresholds(std::vector<NeedleNode>& nodes, const Friction& friction, double spacing) {
     std::vector<std::size_t> order(nodes.size());
     std::iota(order.begin(), order.end(), std::size_t{0});

@@ -42,74 +42,15 @@
 #include <string>
 #include <vector>
 
-#include "elasticity_service.hpp"
+#include "sxk/plugins/elasticity.hpp"
+#include "sxk/plugins/needle.hpp"
 #include "sxk/locate.hpp"
 #include "sxk/ops/tet_bisection.hpp"
 #include "sxk/tool_session.hpp"
 
 namespace sxk::needle {
 
-// Where the needle is: the end held (base) and the tip, in the deformed positions (the world the
-// needle moves in). A planar mesh ignores z.
-struct Needle {
-    Point base{0, 0, 0};
-    Point tip{0, 0, 0};
-    bool operator==(const Needle&) const = default;
-};
-
-// The friction along the shaft (thesis Fig. 6.4, after DiMaio and Salcudean): the dynamic
-// friction force per length of shaft, in N/m, at distance s behind the tip: `tip` at the tip,
-// falling linearly to `shaft` at s = tip_length (the bulge that stands for the cutting force),
-// `shaft` further back. The thesis gives the curve only as a picture; these defaults are ours
-// (docs/needle.md). The static threshold is static_ratio times the dynamic one (§6.8.1: twice).
-struct Friction {
-    double shaft = 20;
-    double tip = 60;
-    double tip_length = 0.005;
-    double static_ratio = 2;
-    // N/m at s >= 0 behind the tip.
-    double density(double s) const;
-    // The force of the stretch [s0, s1] behind the tip (0 <= s0 <= s1), in N.
-    double force(double s0, double s1) const;
-};
-
-struct Options {
-    // Refinement around the tip's path to elements of this size (the thesis' h_ref; sizes as in
-    // shaft_refinement.hpp: the spacing of a uniform grid of such elements), in the mesh's units
-    // (reference positions). The default is the thesis' h6 on its 0.1 m slab.
-    double h_ref = 0.1 / 64;
-    Friction friction;
-    // Intercepted nodes are moved onto the needle (thesis §6.8.6: "nodes selected as needle nodes
-    // are projected orthogonally onto the needle"): both positions shift by -d_perp, so that the
-    // displacement stays, and d_perp = 0. A move that would invert or flatten an element in either
-    // position set, or halve the aspect ratio of one (thesis §6.4: relocation "can easily lead to
-    // flattened elements"), is not made (the node keeps its offset; the step report counts it). Off by
-    // default, as in the thesis (§6.4: "nodes are not moved within the mesh", which keeps the
-    // bisection's triangles congruent).
-    bool relocate = false;
-    // The needle's radius, in the mesh's units. 0: a line, the thesis' 2D needle (§6.4), whose
-    // nodes are the nearest node of each edge (face) the tip enters. Above 0 (thesis Fig. 6.14: a
-    // 1 mm needle in a 10 cm cube, "represented in the mesh by a jagged surface"): every node
-    // within the radius of the tip's path becomes a needle node too, keeping its offset from the
-    // axis, and the refinement reaches across the radius (shaft_refinement.hpp). Friction is still
-    // shared along the axis (friction.hpp): the nodes at one cross-section split its stretch.
-    // With `relocate`, a node outside the radius goes onto the needle's surface, one inside stays.
-    double radius = 0;
-    // Solve and rearrange at most this many times per step (the thesis' loop: once).
-    std::size_t rearrangements = 1;
-    // CG iterations per solve, at most (a frame's budget; the body's options bound them too).
-    std::size_t iterations = 100000;
-    // Solve only around the needle: its nodes and their neighbours ring by ring, up to this many
-    // vertices, the rest of the body held where it is (Simulation::relax_near): the solve's cost is
-    // bounded by this, whatever the mesh's size, and the far field lags behind until a solve over
-    // the whole body (docs/needle.md "Local solve"). 0: every step solves the whole body, as the
-    // thesis does.
-    std::size_t local_vertices = 0;
-    // With local_vertices: after the step's local solve, one block of up to this many vertices of
-    // the far field where it is most out of balance (Simulation::relax_far): the far field follows
-    // the needle over the frames, at a bounded cost per step. 0: the far field waits for settle().
-    std::size_t far_vertices = 0;
-};
+// Needle, Friction and Options: sxk/plugins/needle.hpp (installed).
 
 enum class Grip : std::uint8_t { stick, slip };
 
@@ -153,15 +94,12 @@ struct NeedleStepReport {
 class NeedleSession final : public ToolSession {
 public:
     // A session on a planar triangle mesh or a tetrahedral mesh. `simulation` (the elasticity
-    // plug-in's, on this mesh, may be null: geometry only) must outlive the session. Refuses
+    // plug-in's or the application's, on this mesh; null: geometry only, and the first step's
+    // actions say so) must outlive the session. Refuses
     // another kind of mesh and options out of range, with the reason. A tetrahedral mesh gets its
     // bisection marks here (Maubach's on a Kuhn mesh, else AMP's: O(n), once).
     static Outcome<std::unique_ptr<NeedleSession>> make(Mesh& mesh, const Options& options,
-                                                        elasticity::Simulation* simulation = nullptr);
-    // The same with a simulation the session owns (null: geometry only, and the first step's
-    // actions say that the elasticity plug-in is not there).
-    static Outcome<std::unique_ptr<NeedleSession>> make(Mesh& mesh, const Options& options,
-                                                        std::unique_ptr<elasticity::Simulation> simulation);
+                                                        Simulation* simulation = nullptr);
     ~NeedleSession() override;
 
     // One movement (a step): the first places the needle. Refuses a needle of zero length or with
@@ -185,7 +123,7 @@ protected:
     Outcome<Done> apply(const ToolPose& pose, StepReport& report) override;
 
 private:
-    NeedleSession(Mesh& mesh, const Options& options, elasticity::Simulation* simulation);
+    NeedleSession(Mesh& mesh, const Options& options, Simulation* simulation);
 
     // The needle and its nodes, beside the mesh: taken back, undone and redone with it
     // (m_beside, a side log of the session's journal).
@@ -206,8 +144,7 @@ private:
     bool relocate(VertexId v, const Point& offset);
 
     Options m_options;
-    std::unique_ptr<elasticity::Simulation> m_owned_simulation;  // the ToolFactory's sessions' body
-    elasticity::Simulation* m_simulation;
+    Simulation* m_simulation;
     bool m_say_geometry_only = false;  // the first step tells that there is no body
     std::unique_ptr<SpatialIndex> m_reference_index, m_deformed_index;
     // tetrahedral meshes: the bisection's marks (Maubach's on a Kuhn mesh, AMP's otherwise), a

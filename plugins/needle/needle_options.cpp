@@ -5,12 +5,11 @@
 
 namespace sxk::needle {
 
-void add_needle_options(CLI::App& app, Options& options, std::string* deform) {
-    if (deform != nullptr)
-        app.add_option("--deform,--material", *deform,
-                       "The body: `sxk deform`'s options in one word, e.g. \"--fix x>0.0999 --E 34e3 --nu 0.34 "
-                       "--thickness 0.01 --tol 0.01 --rounding 1e-8\" (the elasticity plug-in). Without it the "
-                       "needle only refines and tracks its nodes (geometry only)");
+void add_needle_options(CLI::App& app, Options& options, std::string& deform) {
+    app.add_option("--deform,--material", deform,
+                   "The body: `sxk deform`'s options in one word, e.g. \"--fix x>0.0999 --E 34e3 --nu 0.34 "
+                   "--thickness 0.01 --tol 0.01 --rounding 1e-8\" (the elasticity plug-in). Without it the "
+                   "needle only refines and tracks its nodes (geometry only)");
     app.add_option("--h-ref", options.h_ref,
                    "Element size around the needle: the mesh is bisected along the tip's path until the "
                    "elements there are of this size (the spacing of a uniform grid of them; thesis h_ref)")

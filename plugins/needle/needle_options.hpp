@@ -1,5 +1,5 @@
-// The needle's options on a command line: `sxk needle` and the ToolFactory tool "needle" read the
-// same words (docs/cli.md "sxk needle").
+// The needle's options on `sxk needle`'s command line (docs/cli.md "sxk needle"), read into the
+// tool's Options (sxk/plugins/needle.hpp).
 #pragma once
 
 #include <string>
@@ -10,8 +10,8 @@
 
 namespace sxk::needle {
 
-// The session's options, and --deform (--material) into `deform` when given: the body as
-// `sxk deform`'s words in one word.
-void add_needle_options(CLI::App& app, Options& options, std::string* deform = nullptr);
+// The session's options, and --deform (--material) into `deform`: the body as `sxk deform`'s
+// words in one word.
+void add_needle_options(CLI::App& app, Options& options, std::string& deform);
 
 }  // namespace sxk::needle

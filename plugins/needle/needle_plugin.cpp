@@ -15,8 +15,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "body_words.hpp"
 #include "command_line.hpp"
-#include "elasticity_service.hpp"
+#include "sxk/plugins/elasticity.hpp"
 #include "line_plot.hpp"
 #include "needle.hpp"
 #include "needle_options.hpp"
@@ -34,10 +35,6 @@ extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_needle();
 namespace sxk::needle {
 
 namespace {
-
-// The host's services (Plugin::attach); see the snapcut plug-in: a process loads the plug-in once,
-// and the last host to attach it is the one whose services its sessions use.
-const sxk::Services* plugin_host = nullptr;
 
 struct CommandOptions {
     std::string input, path, output, deform, plot;
@@ -77,6 +74,9 @@ void draw_profile(const std::string& file, const NeedleSession& session) {
 
 class NeedleCommand final : public PluginCommand {
 public:
+    // `host`: the plug-in's, set when the host attaches it
+    explicit NeedleCommand(const sxk::Services* const& host) : m_host(host) {}
+
     std::string_view name() const override { return "needle"; }
     std::string_view summary() const override {
         return "insert a needle along a recorded path: refine around it, stick-slip friction, solve "
@@ -100,7 +100,7 @@ public:
         app.add_option("--h-start", o.h_start,
                        "Refine the whole mesh to elements of this size first (thesis h_start; not a step)")
             ->check(number_in(0, false, 1e300, true, "(0, 1e300]"));
-        add_needle_options(app, o.needle, &o.deform);
+        add_needle_options(app, o.needle, o.deform);
         add_recording_options(app, o.recording);  // a planar mesh's pictures show the needle's nodes too
         app.add_option("--plot", o.plot,
                        "Draw the forces along the needle after the replay (PNG): per needle node, and "
@@ -195,16 +195,21 @@ public:
             }
             record.start_bisections = *refined;
         }
-        std::unique_ptr<elasticity::Simulation> simulation;
+        std::unique_ptr<Simulation> simulation;
         if (!o.deform.empty()) {
-            auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
+            auto elasticity = m_host ? m_host->service<elasticity::ElasticityService>()
                                           : Outcome<elasticity::ElasticityService*>(
                                                 Refusal{RefusalCode::not_found, "no plug-in host"});
             if (!elasticity) {
                 err << "sxk: needle: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
                 return 2;
             }
-            auto made = (*elasticity)->simulate(*mesh, words_of(o.deform));
+            const Outcome<elasticity::Options> body = cli::body_options(words_of(o.deform));
+            if (!body) {
+                err << "sxk: needle: --deform: " << body.reason() << '\n';
+                return 2;
+            }
+            auto made = (*elasticity)->simulate(*mesh, *body);
             if (!made) {
                 err << "sxk: needle: --deform: " << made.reason() << '\n';
                 return 2;
@@ -236,7 +241,7 @@ public:
                 pictures::write_png(file, pictures::draw(planar_picture(*mesh, **session, view, title)));
             };
         }
-        auto recording = ToolRecording::open(plugin_host, *mesh, o.recording,
+        auto recording = ToolRecording::open(m_host, *mesh, o.recording,
                                              {"needle", steps, {"--colour", "piece"}, planar_drawer, {}}, err);
         if (!recording) return 2;
         // the needle at a sample: base to tip
@@ -315,41 +320,10 @@ public:
         }
         return 0;
     }
+
+private:
+    const sxk::Services* const& m_host;
 };
-
-std::span<const std::string_view> needle_tools() {
-    static constexpr std::array<std::string_view, 1> tools{"needle"};
-    return tools;
-}
-
-// The tool "needle", options as add_needle_options reads them. With --deform and the elasticity
-// plug-in in the host, the session owns a simulation of the body (solved to rest before the first
-// step); without the plug-in it is geometry only and its first step says so.
-Outcome<std::unique_ptr<ToolSession>> begin_needle(std::string_view tool, Mesh& mesh,
-                                                   std::span<const std::string> words) {
-    if (tool != "needle")
-        return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " in needle (it has: needle)"};
-    CLI::App app("needle session", "needle");
-    Options options;
-    std::string deform;
-    add_needle_options(app, options, &deform);
-    if (auto refused = parse_tool_words(app, words, "needle")) return *refused;
-    std::unique_ptr<elasticity::Simulation> body;
-    if (!deform.empty()) {
-        if (auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
-                                          : Outcome<elasticity::ElasticityService*>(
-                                                Refusal{RefusalCode::not_found, "no plug-in host"})) {
-            auto made = (*elasticity)->simulate(mesh, words_of(deform));
-            if (!made) return made.refusal().prefixed("needle: --deform: ");
-            body = std::move(*made);
-            if (auto settled = body->relax(std::numeric_limits<std::size_t>::max()); !settled)
-                return settled.refusal().prefixed("needle: --deform: ");
-        }
-    }
-    auto session = NeedleSession::make(mesh, options, std::move(body));
-    if (!session) return session.refusal();
-    return std::unique_ptr<ToolSession>(std::move(*session));
-}
 
 class NeedlePlugin final : public Plugin {
 public:
@@ -358,19 +332,19 @@ public:
         if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
         return {};
     }
-    void attach(const sxk::Services& services) override {
-        m_attached = &services;
-        plugin_host = &services;
-    }
-    ~NeedlePlugin() override {
-        if (plugin_host == m_attached) plugin_host = nullptr;
-    }
+    void attach(const sxk::Services& services) override { m_host = &services; }
 
 private:
-    const sxk::Services* m_attached = nullptr;
-    NeedleCommand m_command;
+    const sxk::Services* m_host = nullptr;  // the host's services, which outlive the plug-in
+    NeedleCommand m_command{m_host};
     PluginCommand* m_commands[1] = {&m_command};
-    ToolFactory m_tools{&needle_tools, &begin_needle};
+    // the tool "needle": the body is the application's simulation (none: geometry only)
+    ToolFactoryOf<Options> m_tools{
+        [](Mesh& mesh, const Options& options, const ToolContext& context) -> Outcome<std::unique_ptr<ToolSession>> {
+            auto session = NeedleSession::make(mesh, options, context.simulation);
+            if (!session) return session.refusal();
+            return std::unique_ptr<ToolSession>(std::move(*session));
+        }};
 };
 
 }  // namespace

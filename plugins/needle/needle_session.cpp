@@ -28,7 +28,7 @@ double seconds_since(Clock::time_point start) {
 
 bool finite(const Point& p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
-elasticity::Vector3 vector3(const Eigen::Vector3d& v) { return {v[0], v[1], v[2]}; }
+Vector3 vector3(const Eigen::Vector3d& v) { return {v[0], v[1], v[2]}; }
 
 Outcome<Done> check_options(const Mesh& mesh, const Options& options) {
     const bool planar = mesh.topological_dimension() == 2 && mesh.ambient_dimension() == 2;
@@ -39,22 +39,7 @@ Outcome<Done> check_options(const Mesh& mesh, const Options& options) {
                            std::to_string(mesh.topological_dimension()) + "-simplices in " +
                            std::to_string(mesh.ambient_dimension()) + "D)"};
     if (mesh.element_count() == 0) return Refusal{RefusalCode::bad_argument, "needle: the mesh has no element"};
-    auto positive = [](double x) { return std::isfinite(x) && x > 0; };
-    auto at_least_zero = [](double x) { return std::isfinite(x) && x >= 0; };
-    const Friction& f = options.friction;
-    if (!positive(options.h_ref))
-        return Refusal{RefusalCode::bad_argument,
-                       "needle: h_ref = " + std::to_string(options.h_ref) + " is not a positive number"};
-    if (!at_least_zero(options.radius))
-        return Refusal{RefusalCode::bad_argument,
-                       "needle: radius = " + std::to_string(options.radius) + " is not a number >= 0"};
-    if (!at_least_zero(f.shaft) || !at_least_zero(f.tip) || !at_least_zero(f.tip_length))
-        return Refusal{RefusalCode::bad_argument, "needle: friction forces and the tip length must be >= 0"};
-    if (!(std::isfinite(f.static_ratio) && f.static_ratio >= 1))
-        return Refusal{RefusalCode::bad_argument, "needle: the static friction ratio must be >= 1 (static >= dynamic)"};
-    if (options.rearrangements < 1 || options.iterations < 1)
-        return Refusal{RefusalCode::bad_argument, "needle: rearrangements and iterations must be >= 1"};
-    return Done{};
+    return options.check();
 }
 
 }  // namespace
@@ -73,7 +58,7 @@ ToolPose NeedleSession::pose_of(const Needle& needle) {
 }
 
 Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Options& options,
-                                                            elasticity::Simulation* simulation) {
+                                                            Simulation* simulation) {
     if (auto checked = check_options(mesh, options); !checked) return checked.refusal();
     std::unique_ptr<NeedleSession> session(new NeedleSession(mesh, options, simulation));
     if (mesh.topological_dimension() == 3) {
@@ -85,19 +70,11 @@ Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Op
     }
     (void)session->keep_beside(session->m_beside);
     session->m_beside.on_restore([raw = session.get()](const State& replaced) { raw->follow(replaced); });
+    session->m_say_geometry_only = simulation == nullptr;
     return session;
 }
 
-Outcome<std::unique_ptr<NeedleSession>> NeedleSession::make(Mesh& mesh, const Options& options,
-                                                            std::unique_ptr<elasticity::Simulation> simulation) {
-    auto session = make(mesh, options, simulation.get());
-    if (!session) return session.refusal();
-    (*session)->m_say_geometry_only = simulation == nullptr;
-    (*session)->m_owned_simulation = std::move(simulation);
-    return session;
-}
-
-NeedleSession::NeedleSession(Mesh& mesh, const Options& options, elasticity::Simulation* simulation)
+NeedleSession::NeedleSession(Mesh& mesh, const Options& options, Simulation* simulation)
     : ToolSession(mesh),
       m_options(options),
       m_simulation(simulation),
@@ -147,7 +124,7 @@ Outcome<Done> NeedleSession::hold(const NeedleNode& node, const Needle& needle) 
     if (m_simulation == nullptr) return Done{};
     const Frame frame(needle);
     const Eigen::Vector3d target = vec(frame.place(node.along, node.perp));
-    const elasticity::Vector3 displacement = vector3(target - vec(mesh().reference(node.vertex)));
+    const Vector3 displacement = vector3(target - vec(mesh().reference(node.vertex)));
     if (node.grip == Grip::stick) {
         if (auto held = m_simulation->hold(node.vertex, displacement); !held) return held;
         return m_simulation->set_tool_force(node.vertex, {0, 0, 0});
@@ -214,7 +191,7 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
     // where a node is now: the body's solution (the mesh shows it only when it inverts nothing)
     auto position = [&](VertexId v) {
         if (m_simulation == nullptr) return mesh.deformed(v);
-        const elasticity::Vector3 u = m_simulation->displacement(v);
+        const Vector3 u = m_simulation->displacement(v);
         const Point& x = mesh.reference(v);
         return Point{x[0] + u[0], x[1] + u[1], x[2] + u[2]};
     };
@@ -395,7 +372,7 @@ Outcome<Done> NeedleSession::step_to(const Needle& needle, StepReport& words) {
     report.vertices = mesh.vertices_in_elements();
     report.seconds = seconds_since(start);
     if (m_say_geometry_only) {
-        words.actions.push_back("geometry only: no elastic body (the elasticity plug-in is not loaded, or no "
+        words.actions.push_back("geometry only: no elastic body (no simulation given to the session, or no "
                                 "--deform): nothing follows the needle");
         m_say_geometry_only = false;
     }

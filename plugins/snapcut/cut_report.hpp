@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "elasticity_service.hpp"
+#include "sxk/simulation.hpp"
 #include "snap_cut.hpp"
 
 namespace sxk::snapcut {
@@ -30,7 +30,7 @@ struct ReplayStep {
 struct ReplayRecord {
     std::vector<ReplayStep> steps;
     bool deformed = false;                    // --deform: a simulation ran
-    elasticity::RelaxReport initial_relax;    // its solve before the first step
+    RelaxReport initial_relax;    // its solve before the first step
     bool initial_solved = false;              // initial_relax holds the solve's figures (not refused)
     // why the cut did not start: the solve before it was refused, or its shape could not be shown
     // (the JSON's initial_relax.refusal; the command then exits 1 and writes nothing)

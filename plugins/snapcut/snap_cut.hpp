@@ -48,6 +48,8 @@
 #include <vector>
 
 #include "face_selection.hpp"
+#include "sxk/plugins/snapcut.hpp"
+#include "sxk/simulation.hpp"
 #include "sxk/locate.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/tool_session.hpp"
@@ -55,78 +57,15 @@
 namespace sxk::degeneracy {
 struct DegeneracyService;
 }
-namespace sxk::elasticity {
-class Simulation;
-struct RelaxReport;
-}
 
 namespace sxk::snapcut {
 
-// The scalpel: a line segment from the handle end to the tip (deformed positions).
-struct Scalpel {
-    Point handle{};
-    Point tip{};
-    bool operator==(const Scalpel&) const = default;
-};
-
-// The pose a ToolFactory user passes for a scalpel: position = tip, axes[2] along the blade
-// (handle to tip), length = the blade's length. (A zero-length blade gives axes[2] = z.)
-ToolPose to_pose(const Scalpel& scalpel);
-Scalpel scalpel_of(const ToolPose& pose);
+// The scalpel, its pose and the options: sxk/plugins/snapcut.hpp (installed).
 // The same handle and tip, exactly.
 bool same_blade(const Scalpel& a, const Scalpel& b);
 // The pose a fraction s of the way from `from` to `to` (handle and tip interpolated linearly;
 // s = 1 gives `to` exactly): a recorded path's movement replayed in smaller steps.
 Scalpel between(const Scalpel& from, const Scalpel& to, double s);
-
-struct Options {
-    bool snap = true;                  // move the selected faces' corners onto the sweep (§3.2.2)
-    bool remove_degeneracies = true;   // through the degeneracy service, when there is one
-    // Shape thresholds of the degeneracy removal (thesis §3.3: 0.01 and 0.99 pi).
-    double aspect_ratio = 0.01;
-    double large_angle = 0.99 * pi;
-    // A snap is refused (the node stays) when it would make an element of its star inverted or
-    // flat in either position set, or give it an aspect ratio below this (0: only inverted and
-    // flat are refused; degeneracy removal then deals with the thin elements, as in the thesis).
-    double min_snap_aspect_ratio = 0;
-    // Crumbs: a step does not cut loose a piece of at most this many elements (0: any piece may
-    // come loose). Where the incision folds around a tetrahedron or two at its rim, one of the
-    // faces about to open stays closed instead (loose_pieces.hpp, keep_crumbs_attached; so it does
-    // for a film of up to largest_layer elements with every corner snapped, "Layers"). A piece
-    // that comes loose all the same with no more material than this many elements of the mean
-    // volume, and fewer than a hundredth of the mesh's elements (a layer of flat elements along
-    // the cut, or a crumb the degeneracy removal cut loose), is removed and counted as cut free.
-    std::size_t largest_crumb = 4;
-    // Long edges: an edge the sweep crosses whose nearer end is farther than this from where the
-    // blade has swept, in mean edge lengths of the mesh (deformed, measured when the session
-    // begins), is split where the sweep crosses it before the selection (split_far_crossings.hpp):
-    // the cut runs through the new node instead of a node the snapping may not be able to move
-    // that far, or would put beyond where the blade went. The bound is half an edge, and
-    // at 0.5 the deforming femur's cut stays within it (docs/snapcut.md "The femur"). 0: never
-    // split (the thesis' snap cut, which only moves nodes). Only with `snap`.
-    double split_beyond = 0.5;
-    // The face label of the cut surface (DissectOptions::cut_label).
-    int cut_label = 9999;
-    // Remove the pieces a step cuts loose (they are reported either way). A simulation fixes
-    // them instead (thesis §3.3: every unfixed component is fixed on a face).
-    bool remove_loose_pieces = false;
-    // With a simulation: CG iterations after each step (a frame's worth; warm started).
-    std::size_t relax_iterations = 100;
-    // With a simulation: relax only around what the step changed (the vertices of the elements it
-    // edited and the nodes it moved, then their neighbours ring by ring, up to this many
-    // vertices), the rest of the body held (Simulation::relax_near): a step's relaxation then
-    // costs the same on any mesh size, and the far field lags until a whole-body relaxation (the
-    // needle's Options::local_vertices, docs/elasticity.md "Local relaxation"). 0: the whole
-    // body every step.
-    std::size_t local_vertices = 0;
-    // With local_vertices: after each step's relaxation one more block of at most this many
-    // vertices where the far field is most out of balance (Simulation::relax_far). 0: none.
-    std::size_t far_vertices = 0;
-    // Find a sweep's elements from those the blade lay in before it (blade_track.hpp); false:
-    // ask the spatial index along the whole blade every sweep. The cut is the same either way
-    // (tests/plugins/snapcut_track_test.cpp); following costs less on large meshes.
-    bool follow_blade = true;
-};
 
 // What one step did (thesis §3.3's figures, per step).
 struct CutStepReport {
@@ -183,10 +122,10 @@ struct CutStepReport {
 // What the session offers besides the kernel: other plug-ins' services (nullptr: not loaded).
 struct CutServices {
     const degeneracy::DegeneracyService* degeneracy = nullptr;
-    // A running simulation of the mesh (the elasticity plug-in's, elasticity_service.hpp), owned
+    // A running simulation of the mesh (sxk/simulation.hpp: the elasticity plug-in's, or the application's), owned
     // by the caller: after each step the session holds the pieces that came loose and relaxes
     // it (Options::relax_iterations), so the next sweep meets the new deformed shape.
-    elasticity::Simulation* simulation = nullptr;
+    Simulation* simulation = nullptr;
 };
 
 class BladeTrack;  // blade_track.hpp
@@ -256,7 +195,7 @@ private:
     // With a simulation: hold the step's loose pieces and relax.
     void relax(StepReport& report);
     // Options::local_vertices: the simulation's relax_near around what the step changed.
-    Outcome<elasticity::RelaxReport> relax_near_step();
+    Outcome<RelaxReport> relax_near_step();
 
     Options m_options;
     CutServices m_services;

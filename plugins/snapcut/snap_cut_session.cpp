@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "blade_track.hpp"
-#include "degeneracy_service.hpp"
-#include "elasticity_service.hpp"
+#include "sxk/plugins/degeneracy.hpp"
+#include "sxk/simulation.hpp"
 #include "loose_pieces.hpp"
 #include "moved_nodes.hpp"
 #include "node_snapping.hpp"
@@ -146,7 +146,7 @@ void SnapCutSession::relax(StepReport& report) {
 
 // Around what the step changed: the corners of the elements it edited that are still there, and
 // the nodes it moved (snapped).
-Outcome<elasticity::RelaxReport> SnapCutSession::relax_near_step() {
+Outcome<RelaxReport> SnapCutSession::relax_near_step() {
     std::vector<VertexId> seeds(vertices_moved_in_step().begin(), vertices_moved_in_step().end());
     for (const ElementId t : elements_edited_in_step())
         if (mesh().is_element(t))
@@ -158,17 +158,6 @@ Outcome<elasticity::RelaxReport> SnapCutSession::relax_near_step() {
 
 bool same_blade(const Scalpel& a, const Scalpel& b) { return a.handle == b.handle && a.tip == b.tip; }
 
-ToolPose to_pose(const Scalpel& scalpel) {
-    ToolPose pose;
-    pose.position = scalpel.tip;
-    pose.length = length(scalpel.handle, scalpel.tip);
-    if (pose.length > 0)
-        for (int i = 0; i < 3; ++i)
-            pose.axes[2][static_cast<std::size_t>(i)] =
-                (scalpel.tip[static_cast<std::size_t>(i)] - scalpel.handle[static_cast<std::size_t>(i)]) / pose.length;
-    return pose;
-}
-
 Scalpel between(const Scalpel& from, const Scalpel& to, double s) {
     if (s == 1) return to;
     Scalpel pose;
@@ -179,25 +168,11 @@ Scalpel between(const Scalpel& from, const Scalpel& to, double s) {
     return pose;
 }
 
-Scalpel scalpel_of(const ToolPose& pose) {
-    Scalpel scalpel{pose.position, pose.position};
-    for (std::size_t i = 0; i < 3; ++i) scalpel.handle[i] -= pose.length * pose.axes[2][i];
-    return scalpel;
-}
-
 Outcome<std::unique_ptr<SnapCutSession>> SnapCutSession::make(Mesh& mesh, const Options& options,
                                                                const CutServices& services) {
     if (mesh.topological_dimension() != 3 || mesh.ambient_dimension() != 3)
         return Refusal{RefusalCode::not_applicable, "snapcut: the snap cutter cuts tetrahedral meshes in space"};
-    if (!(options.aspect_ratio > 0 && options.aspect_ratio < 1))
-        return Refusal{RefusalCode::bad_argument,
-                       "snapcut: aspect ratio threshold must be in (0, 1), not " + std::to_string(options.aspect_ratio)};
-    if (!(options.min_snap_aspect_ratio >= 0 && options.min_snap_aspect_ratio < 1))
-        return Refusal{RefusalCode::bad_argument, "snapcut: the snap's aspect ratio limit must be in [0, 1), not " +
-                                                      std::to_string(options.min_snap_aspect_ratio)};
-    if (!(options.split_beyond >= 0 && std::isfinite(options.split_beyond)))
-        return Refusal{RefusalCode::bad_argument, "snapcut: the distance beyond which crossings are split must be "
-                                                  "finite and >= 0, not " + std::to_string(options.split_beyond)};
+    if (auto checked = options.check(); !checked) return checked.refusal();
     return std::make_unique<SnapCutSession>(mesh, options, services);
 }
 

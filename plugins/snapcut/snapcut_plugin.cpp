@@ -1,7 +1,7 @@
 // The snapcut plug-in: `sxk cut snap IN PATH OUT` replays a recorded scalpel path through a
 // SnapCutSession (snap_cut.hpp), and the plug-in's ToolFactory offers the session as the tool
-// "snapcut". The degeneracy removal comes from the degeneracy plug-in's service, found through
-// the host (Plugin::attach): no plug-in links another.
+// "snapcut" (options: sxk/plugins/snapcut.hpp). The degeneracy removal comes from the degeneracy
+// plug-in's service, found through the host (Plugin::attach): no plug-in links another.
 #include <algorithm>
 #include <array>
 #include <filesystem>
@@ -14,11 +14,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "body_words.hpp"
 #include "command_line.hpp"
 #include "cut_options.hpp"
 #include "cut_report.hpp"
-#include "degeneracy_service.hpp"
-#include "elasticity_service.hpp"
+#include "sxk/plugins/degeneracy.hpp"
+#include "sxk/plugins/elasticity.hpp"
 #include "snap_cut.hpp"
 #include "tool_frames.hpp"
 #include "sxk/io.hpp"
@@ -31,11 +32,6 @@ extern "C" SXK_PLUGIN_EXPORT const sxk_plugin_info* sxk_plugin_entry_snapcut();
 namespace sxk::snapcut {
 
 namespace {
-
-// The host's services (Plugin::attach). A global because ToolFactory::begin is a plain function;
-// a process loads the plug-in once (dlopen shares the module between hosts), and the last host to
-// attach it is the one whose services its sessions use.
-const sxk::Services* plugin_host = nullptr;
 
 // The services the plug-in's sessions use, looked up when a session begins.
 CutServices services_from(const sxk::Services* host) {
@@ -89,6 +85,9 @@ void warn_unshown_relaxations(std::ostream& err, const ReplayRecord& record) {
 
 class CutSnapCommand final : public PluginCommand {
 public:
+    // `host`: the plug-in's, set when the host attaches it
+    explicit CutSnapCommand(const sxk::Services* const& host) : m_host(host) {}
+
     std::string_view name() const override { return "cut snap"; }
     std::string_view summary() const override {
         return "cut a tetrahedral mesh along a recorded scalpel path: select, snap, dissect, remove "
@@ -169,21 +168,26 @@ public:
             err << "sxk: " << options.input << ":0: the snap cutter cuts tetrahedral meshes in space\n";
             return 2;
         }
-        CutServices services = services_from(plugin_host);
+        CutServices services = services_from(m_host);
         if (options.cut.remove_degeneracies && services.degeneracy == nullptr)
             err << "sxk: warning: the degeneracy plug-in is not loaded: flat elements stay\n";
         ReplayRecord record;
-        std::unique_ptr<elasticity::Simulation> simulation;
+        std::unique_ptr<Simulation> simulation;
         std::vector<Point> unloaded;  // with --deform: IN's deformed positions, before the first solve
         if (!options.deform.empty()) {
-            auto elasticity = plugin_host ? plugin_host->service<elasticity::ElasticityService>()
+            auto elasticity = m_host ? m_host->service<elasticity::ElasticityService>()
                                           : Outcome<elasticity::ElasticityService*>(
                                                 Refusal{RefusalCode::not_found, "no plug-in host"});
             if (!elasticity) {
                 err << "sxk: cut snap: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
                 return 2;
             }
-            auto made = (*elasticity)->simulate(*mesh, words_of(options.deform));
+            const Outcome<elasticity::Options> body = cli::body_options(words_of(options.deform));
+            if (!body) {
+                err << "sxk: cut snap: --deform: " << body.reason() << '\n';
+                return 2;
+            }
+            auto made = (*elasticity)->simulate(*mesh, *body);
             if (!made) {
                 err << "sxk: cut snap: --deform: " << made.reason() << '\n';
                 return 2;
@@ -224,7 +228,7 @@ public:
         WriteOptions writing;
         writing.drop_unused_vertices = true;  // collapses leave vertices in no element
         auto recording = ToolRecording::open(
-            plugin_host, *mesh, options.recording,
+            m_host, *mesh, options.recording,
             {"cut snap", path.size(), {"--colour", "piece", "--cut-label", std::to_string(options.cut.cut_label)}, {},
              writing},
             err);
@@ -284,26 +288,10 @@ public:
         }
         return 0;
     }
+
+private:
+    const sxk::Services* const& m_host;
 };
-
-// The plug-in's tool: "snapcut", options as add_cut_options reads them.
-std::span<const std::string_view> snapcut_tools() {
-    static constexpr std::array<std::string_view, 1> tools{"snapcut"};
-    return tools;
-}
-
-Outcome<std::unique_ptr<ToolSession>> begin_snapcut(std::string_view tool, Mesh& mesh,
-                                                    std::span<const std::string> words) {
-    if (tool != "snapcut")
-        return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " in snapcut (it has: snapcut)"};
-    CLI::App app("snapcut session", "snapcut");
-    Options options;
-    add_cut_options(app, options);
-    if (auto refused = parse_tool_words(app, words, "snapcut")) return *refused;
-    auto session = SnapCutSession::make(mesh, options, services_from(plugin_host));
-    if (!session) return session.refusal();
-    return std::unique_ptr<ToolSession>(std::move(*session));
-}
 
 class SnapcutPlugin final : public Plugin {
 public:
@@ -312,19 +300,21 @@ public:
         if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
         return {};
     }
-    void attach(const sxk::Services& services) override {
-        m_attached = &services;
-        plugin_host = &services;
-    }
-    ~SnapcutPlugin() override {
-        if (plugin_host == m_attached) plugin_host = nullptr;
-    }
+    void attach(const sxk::Services& services) override { m_host = &services; }
 
 private:
-    const sxk::Services* m_attached = nullptr;
-    CutSnapCommand m_cut;
+    const sxk::Services* m_host = nullptr;  // the host's services, which outlive the plug-in
+    CutSnapCommand m_cut{m_host};
     PluginCommand* m_commands[1] = {&m_cut};
-    ToolFactory m_tools{&snapcut_tools, &begin_snapcut};
+    // the tool "snapcut": the degeneracy removal from the host, the simulation from the application
+    ToolFactoryOf<Options> m_tools{
+        [this](Mesh& mesh, const Options& options, const ToolContext& context) -> Outcome<std::unique_ptr<ToolSession>> {
+            CutServices services = services_from(m_host);
+            services.simulation = context.simulation;
+            auto session = SnapCutSession::make(mesh, options, services);
+            if (!session) return session.refusal();
+            return std::unique_ptr<ToolSession>(std::move(*session));
+        }};
 };
 
 }  // namespace

@@ -476,7 +476,7 @@ TEST(DegeneracyService, AServiceOfAnotherVersionIsRefused) {
     PluginHost host;
     host.load_folder(SXK_PLUGIN_BUILD_DIR);
     EXPECT_EQ(host.service<OldDegeneracyService>().reason(),
-              "plug-in degeneracy offers sxk.degeneracy version 4, not version 1");
+              "plug-in degeneracy offers sxk.degeneracy version 5, not version 1");
     EXPECT_EQ(host.service<CutterService>().reason(), "no plug-in offers sxk.cutter");
     EXPECT_EQ(host.service<degeneracy::DegeneracyService>("stats").reason(), "plug-in stats offers sxk.degeneracy");
     EXPECT_EQ(host.service<degeneracy::DegeneracyService>("nothing").reason(), "no plug-in called nothing");
@@ -504,32 +504,30 @@ TEST(DegeneracyService, TheCommandEditsAMeshInMemoryAsOneStep) {
     EXPECT_TRUE(mesh.validate().ok());
 }
 
-// The plug-in's ToolFactory: a brush session found through the host, each step one undoable
-// transaction, refusals with their reasons.
-TEST(DegeneracyService, TheBrushIsAToolSessionOfItsToolFactory) {
+// The plug-in's tool: a brush session found through the host, each step one undoable transaction,
+// refusals with their reasons.
+TEST(DegeneracyService, TheBrushIsAToolOfTheHost) {
     PluginHost host;
     host.load_folder(SXK_PLUGIN_BUILD_DIR);
-    const auto factory = host.service<ToolFactory>("degeneracy");
+    const auto factory = host.tool("degeneracies");
     ASSERT_TRUE(factory.ok()) << factory.reason();
     const auto tools = (*factory)->tools();
     ASSERT_EQ(tools.size(), 1u);
-    EXPECT_EQ(tools[0], "degeneracies");
+    EXPECT_EQ(tools[0].name, "degeneracies");
     std::istringstream text(cap_mesh);
     Mesh mesh = read_mesh(text, Format::medit, "cap.mesh");
     const Mesh before = mesh;
 
-    const std::vector<std::string> no_radius;
-    EXPECT_EQ((*factory)->begin("snapcut", mesh, no_radius).reason(),
-              "no tool called snapcut in degeneracy (it has: degeneracies)");
-    const auto missing = (*factory)->begin("degeneracies", mesh, no_radius);
+    degeneracy::BrushOptions options;
+    const auto missing = host.begin_tool(mesh, options);
     EXPECT_EQ(missing.code(), RefusalCode::bad_argument);
-    EXPECT_EQ(missing.reason(), "degeneracies brush: --radius is required");
-    const std::vector<std::string> negative{"--radius", "-1"};
-    EXPECT_EQ((*factory)->begin("degeneracies", mesh, negative).reason(),
-              "degeneracies brush: --radius must be positive, not -1.000000");
+    EXPECT_EQ(missing.reason(), "degeneracies: radius 0 is not in (0, 1e+300]");
+    options.radius = 0.2;
+    options.removal.aspect_ratio = 1;
+    EXPECT_EQ(host.begin_tool(mesh, options).reason(), "remove_degeneracies: aspect_ratio 1 is not in (0, 1)");
 
-    const std::vector<std::string> options{"--radius", "0.2"};
-    auto brush = (*factory)->begin("degeneracies", mesh, options);
+    options.removal = {};
+    auto brush = host.begin_tool(mesh, options);
     ASSERT_TRUE(brush.ok()) << brush.reason();
     ToolPose far;
     far.position = {5, 5, 5};
@@ -582,7 +580,7 @@ TEST(DegeneracyService, RemovesTheCapInProcess) {
     const Outcome<degeneracy::Report> refused = service->remove(mesh, bad);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.reason(),
-              "remove_degeneracies: aspect ratio threshold must be in (0, 1), not 2.000000");
+              "remove_degeneracies: aspect_ratio 2 is not in (0, 1)");
     EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
     expect_same_state(mesh, before);
     EXPECT_TRUE(mesh.validate().ok());

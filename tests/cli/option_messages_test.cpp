@@ -1,5 +1,5 @@
 // One message style for the numbers in options (docs/cli.md "Numbers in options"): whole numbers
-// checked by plugins/command_line.hpp's whole_number and whole_number_in, not CLI11's own
+// checked by cli/command_line.hpp's whole_number and whole_number_in, not CLI11's own
 // conversion or range messages, which issue 47 found on `dissect --cut-label nan` and
 // `needle --iterations 0`.
 #include <gtest/gtest.h>

@@ -60,7 +60,7 @@ TEST(SxkPlugins, RefusesBadPluginsAndGoesOn) {
         "sxk: warning: " + unresolved.string() + ": cannot load: " + unresolved.string() +
         ": undefined symbol: sxk_test_undefined_function";
     EXPECT_EQ(run.err.rfind(expected_start, 0), 0u) << run.err;
-    EXPECT_NE(run.err.find("\n" + warning(bad_plugins / "wrong_abi.so", "plug-in ABI version 999, this host needs 3") +
+    EXPECT_NE(run.err.find("\n" + warning(bad_plugins / "wrong_abi.so", "plug-in ABI version 999, this host needs 4") +
                            "sxk: warning: " + (folder / "garbage.so").string() + ": cannot load: "),
               std::string::npos)
         << run.err;

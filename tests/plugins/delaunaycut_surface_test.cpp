@@ -142,16 +142,15 @@ TEST(DelaunayCutSurface, ATipEntryCutsASlitInTheMiddleOfTheSurface) {
     EXPECT_GE(cut_edges, 6u);  // both sides of a slit about four cells long
 }
 
-// The plug-in's ToolFactory makes the surface session for a surface in space; a ToolPose is the
-// blade: its tip at the position, the handle `length` back along axes[2].
+// The plug-in's tool is the surface session for a surface in space; a ToolPose is the blade: its
+// tip at the position, the handle `length` back along axes[2].
 TEST(DelaunayCutSurface, TheHostOffersTheSurfaceCutterForASurface) {
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_delaunaycut(), "linked-in delaunaycut"));
-    auto factory = host.service<ToolFactory>("delaunaycut");
-    ASSERT_TRUE(factory) << factory.reason();
     Mesh mesh = bell();
-    const std::vector<std::string> options{"--eps-edge", "0.25"};
-    auto session = (*factory)->begin("delaunaycut", mesh, options);
+    Options options;
+    options.eps_edge = 0.25;
+    auto session = host.begin_tool(mesh, options);
     ASSERT_TRUE(session) << session.reason();
     auto* cutter = dynamic_cast<SurfaceCutSession*>(session->get());
     ASSERT_NE(cutter, nullptr);
@@ -166,8 +165,9 @@ TEST(DelaunayCutSurface, TheHostOffersTheSurfaceCutterForASurface) {
     EXPECT_EQ(cutter->last_step().incisions, 0u);
     EXPECT_EQ(connected_components(mesh).count, 2u);
     EXPECT_TRUE(mesh.validate().ok());
-    const std::vector<std::string> planar_only{"--method", "subdivision"};
-    auto subdivision = (*factory)->begin("delaunaycut", mesh, planar_only);
+    Options planar_only;
+    planar_only.method = Method::subdivision;
+    auto subdivision = host.begin_tool(mesh, planar_only);
     ASSERT_FALSE(subdivision);
     EXPECT_EQ(subdivision.code(), RefusalCode::bad_argument);
 }
@@ -242,7 +242,7 @@ TEST(DelaunayCutSurface, RefusesPlanarMeshesTheSubdivisionMethodAndFlatTriangles
                                 "the delaunay method");
     Options bad;
     bad.eps_exit = 0;
-    EXPECT_EQ(SurfaceCutSession::make(surface, bad).reason(), "delaunaycut: --eps-exit must be positive and finite");
+    EXPECT_EQ(SurfaceCutSession::make(surface, bad).reason(), "delaunaycut: eps_exit 0 is not in (0, 10]");
     Mesh flat(2, 3);
     for (const Point& p : {Point{0, 0, 0}, Point{1, 0, 0}, Point{2, 0, 0}}) flat.add_vertex(p);
     const std::array<Simplex, 1> triangle{Simplex(+1, {0, 1, 2})};

@@ -269,7 +269,7 @@ TEST(PlanarCut, RefusesMeshesItCannotCutAndPositionsThatAreNotFinite) {
     bad.eps_exit = 0;
     auto refused = PlanarCutSession::make(square, bad);
     ASSERT_FALSE(refused.ok());
-    EXPECT_EQ(refused.reason(), "delaunaycut: --eps-exit must be positive and finite");
+    EXPECT_EQ(refused.reason(), "delaunaycut: eps_exit 0 is not in (0, 10]");
     auto session = PlanarCutSession::make(square, Options{});
     ASSERT_TRUE(session.ok());
     ASSERT_TRUE((*session)->cut({-1, 1, 0}).ok());
@@ -309,18 +309,19 @@ TEST(DelaunayCut, CutsTheDeformedShapeAndMapsNewNodesBackToTheReference) {
     }
 }
 
-// The plug-in's ToolFactory makes sessions from the command's option words; a ToolPose's position is
-// the scalpel.
-TEST(PlanarCut, TheHostOffersTheToolWithTheCommandsOptions) {
+// The host begins the plug-in's tool from its typed options; a ToolPose's position is the scalpel.
+TEST(PlanarCut, TheHostOffersTheToolWithItsOptions) {
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_delaunaycut(), "linked-in delaunaycut"));
-    auto factory = host.service<ToolFactory>("delaunaycut");
+    auto factory = host.tool("delaunaycut");
     ASSERT_TRUE(factory) << factory.reason();
     ASSERT_EQ((*factory)->tools().size(), 1u);
-    EXPECT_EQ((*factory)->tools()[0], "delaunaycut");
+    EXPECT_EQ((*factory)->tools()[0].name, "delaunaycut");
     Mesh mesh = square_grid(5);
-    const std::vector<std::string> options{"--method", "subdivision", "--eps-exit", "0.25"};
-    auto session = (*factory)->begin("delaunaycut", mesh, options);
+    Options options;
+    options.method = Method::subdivision;
+    options.eps_exit = 0.25;
+    auto session = host.begin_tool(mesh, options);
     ASSERT_TRUE(session) << session.reason();
     auto* cutter = dynamic_cast<PlanarCutSession*>(session->get());
     ASSERT_NE(cutter, nullptr);
@@ -333,13 +334,13 @@ TEST(PlanarCut, TheHostOffersTheToolWithTheCommandsOptions) {
     }
     EXPECT_EQ(connected_components(mesh).count, 2u);
     EXPECT_TRUE(mesh.validate(ValidateOptions{true, true}).ok());
-    const std::vector<std::string> bad{"--eps-edge", "-1"};
-    const auto refused = (*factory)->begin("delaunaycut", mesh, bad);
+    Options bad;
+    bad.eps_edge = -1;
+    const auto refused = host.begin_tool(mesh, bad);
     ASSERT_FALSE(refused);
     EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
-    EXPECT_EQ(refused.reason(), "delaunaycut: --eps-edge: '-1' is not in (0, 10]");
-    EXPECT_EQ((*factory)->begin("scalpel", mesh, {}).reason(),
-              "no tool called scalpel in delaunaycut (it has: delaunaycut)");
+    EXPECT_EQ(refused.reason(), "delaunaycut: eps_edge -1 is not in (0, 10]");
+    EXPECT_EQ(host.tool("scalpel").reason(), "no tool called scalpel; the plug-ins offer: delaunaycut");
 }
 
 // A random mesh: a jittered grid made Delaunay by flips.

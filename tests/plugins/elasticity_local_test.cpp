@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "elastic_body.hpp"
 #include "element_kernels.hpp"
 #include "local_relaxation.hpp"
@@ -328,7 +329,7 @@ TEST(ElasticityLocal, ServiceRelaxNearWritesTheRegionAndRelaxSettlesTheRest) {
     Mesh mesh = *make_triangle_grid({16, 16}, {0.1 / 16, 0.1 / 16});
     const std::vector<std::string> words{"--fix", "x>0.0999", "--E",   "34e3",  "--nu",
                                          "0.34",  "--thickness", "0.01", "--tol", "1e-8"};
-    auto made = simulate(mesh, words);
+    auto made = simulate(mesh, sxk::cli::body_options(words).value());
     ASSERT_TRUE(made.ok()) << made.reason();
     Simulation& body = **made;
     const VertexId pulled = 8 * 17 + 8;  // (0.05, 0.05)
@@ -365,7 +366,7 @@ TEST(ElasticityLocal, RelaxFarBlocksBringTheFarFieldToTheWholeBodysSolution) {
     const std::vector<std::string>& words = far_field_slab_words;
     Mesh mesh = far_field_slab();
     Mesh whole_mesh = mesh;
-    auto made = simulate(mesh, words), whole = simulate(whole_mesh, words);
+    auto made = simulate(mesh, sxk::cli::body_options(words).value()), whole = simulate(whole_mesh, sxk::cli::body_options(words).value());
     ASSERT_TRUE(made.ok() && whole.ok());
     const VertexId pulled = 8 * 17 + 8;  // (0.05, 0.05)
     ASSERT_TRUE((*made)->hold(pulled, {-0.001, 0.0005, 0}).ok());
@@ -405,7 +406,7 @@ TEST(ElasticityLocal, ABodyThatDoesNotFollowTheFarFieldRemembersNoRim) {
     const std::vector<std::string>& words = far_field_slab_words;
     Mesh mesh = far_field_slab();
     Mesh following_mesh = mesh;
-    auto made = simulate(mesh, words), following = simulate(following_mesh, words);
+    auto made = simulate(mesh, sxk::cli::body_options(words).value()), following = simulate(following_mesh, sxk::cli::body_options(words).value());
     ASSERT_TRUE(made.ok() && following.ok());
     (*made)->follow_far_field(false);
     const VertexId pulled = 8 * 17 + 8;  // (0.05, 0.05)
@@ -428,7 +429,7 @@ TEST(ElasticityLocal, ABodyThatDoesNotFollowTheFarFieldRemembersNoRim) {
 TEST(ElasticityLocal, ANeoHookeanBodyRelaxesWholeAndHasNoFarField) {
     Mesh mesh = *make_triangle_grid({4, 4}, {0.025, 0.025});
     const std::vector<std::string> words{"--fix", "x>0.0999", "--material", "neohookean", "--tol", "1e-8"};
-    auto made = simulate(mesh, words);
+    auto made = simulate(mesh, sxk::cli::body_options(words).value());
     ASSERT_TRUE(made.ok()) << made.reason();
     ASSERT_TRUE((*made)->hold(VertexId{12}, {-0.001, 0, 0}).ok());
     const VertexId seeds[] = {VertexId{12}};
@@ -447,7 +448,7 @@ TEST(ElasticityLocal, ANeoHookeanBodyRelaxesWholeAndHasNoFarField) {
 TEST(ElasticityLocal, ServiceRefusalsAboutTheMeshNameNoFile) {
     Mesh surface = *make_gaussian_bell({4, 4}, {1, 1}, 1, 1);
     const std::vector<std::string> words{"--fix", "x<0.5"};
-    auto made = simulate(surface, words);
+    auto made = simulate(surface, sxk::cli::body_options(words).value());
     ASSERT_FALSE(made.ok());
     EXPECT_EQ(made.reason(),
               "elasticity: the mesh has 2-dimensional elements in 3-dimensional space; the body needs "

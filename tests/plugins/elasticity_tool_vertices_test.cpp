@@ -1,4 +1,4 @@
-// The elasticity service's vertices a tool holds (elasticity_service.hpp, version 2; the needle's
+// The elasticity service's vertices a tool holds (sxk/simulation.hpp; the needle's
 // stick-slip friction): hold, hold_on_line, release, set_tool_force, forces_at and
 // displacements_from_mesh on the thesis' slab, with the refusals for the vertices the options hold.
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "simulation.hpp"
 #include "sxk/generators.hpp"
 
@@ -19,7 +20,7 @@ struct Slab {
     Slab() {
         const std::vector<std::string> words{"--fix", "x>0.0999", "--E", "34e3", "--nu", "0.34", "--thickness",
                                              "0.01", "--tol", "1e-10"};
-        auto made = simulate(mesh, words);
+        auto made = simulate(mesh, sxk::cli::body_options(words).value());
         EXPECT_TRUE(made.ok()) << made.reason();
         body = std::move(*made);
     }

@@ -96,7 +96,7 @@ TEST(PluginHost, RefusesBadPluginsWithExactReasonsAndGoesOn) {
     EXPECT_EQ(diagnostics[1].reason, "cannot load: " + (bad_folder / "unresolved.so").string() +
                                          ": undefined symbol: sxk_test_undefined_function");
     EXPECT_EQ(diagnostics[2].path, bad_folder / "wrong_abi.so");
-    EXPECT_EQ(diagnostics[2].reason, "plug-in ABI version 999, this host needs 3");
+    EXPECT_EQ(diagnostics[2].reason, "plug-in ABI version 999, this host needs 4");
 #if SXK_HAVE_STATS
     ASSERT_EQ(host.plugins().size(), built_plugins());
     EXPECT_NE(loaded(host, "stats"), nullptr);
@@ -165,7 +165,7 @@ TEST(PluginHost, RefusesStaticInfoWithAnotherAbi) {
     PluginHost host;
     EXPECT_FALSE(host.add_static(&info, "patched"));
     ASSERT_EQ(host.diagnostics().size(), 1u);
-    EXPECT_EQ(host.diagnostics()[0].reason, "plug-in ABI version 4, this host needs 3");
+    EXPECT_EQ(host.diagnostics()[0].reason, "plug-in ABI version 5, this host needs 4");
     EXPECT_FALSE(host.add_static(nullptr, "null"));
 }
 #endif

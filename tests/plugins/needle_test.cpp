@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
+#include "body_words.hpp"
 #include "core/fixtures.hpp"
 #include "needle.hpp"
 #include "simulation.hpp"
@@ -38,13 +39,13 @@ const std::vector<std::string> cube_body{"--fix", "x>0.0999", "--E", "34e3", "--
 struct Insertion {
     Mesh mesh;
     Mesh before{mesh};
-    std::unique_ptr<elasticity::Simulation> simulation;
+    std::unique_ptr<Simulation> simulation;
     std::unique_ptr<NeedleSession> session;
 
     Insertion(Mesh start, const std::vector<std::string>& body, Options options = {})
         : mesh(std::move(start)), before(mesh) {
         if (!body.empty()) {
-            auto made = elasticity::simulate(mesh, body);
+            auto made = elasticity::simulate(mesh, sxk::cli::body_options(body).value());
             EXPECT_TRUE(made.ok()) << made.reason();
             simulation = std::move(*made);
         }
@@ -394,7 +395,7 @@ TEST(Needle, ANeedleWithARadiusHoldsEveryNodeItsCrossSectionPassedOver) {
     Options bad = thick;
     bad.radius = -1;
     Mesh square = slab();
-    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: radius = -1.000000 is not a number >= 0");
+    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: radius -1 is not in [0, 1e+300]");
 }
 
 TEST(Needle, WithoutABodyRefinesAndTracksNodesButMovesNothing) {
@@ -468,11 +469,10 @@ TEST(Needle, RefusesWhatItCannotDoWithTheReason) {
     Mesh square = slab();
     Options bad;
     bad.h_ref = 0;
-    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: h_ref = 0.000000 is not a positive number");
+    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: h_ref 0 is not in (0, 1e+300]");
     bad = {};
     bad.friction.static_ratio = 0.5;
-    EXPECT_EQ(NeedleSession::make(square, bad).reason(),
-              "needle: the static friction ratio must be >= 1 (static >= dynamic)");
+    EXPECT_EQ(NeedleSession::make(square, bad).reason(), "needle: friction.static_ratio 0.5 is not in [1, 1e+300]");
     auto session = NeedleSession::make(square, {});
     ASSERT_TRUE(session.ok());
     const Mesh before = square;
@@ -483,16 +483,16 @@ TEST(Needle, RefusesWhatItCannotDoWithTheReason) {
     test::expect_same_state(square, before);
 }
 
-TEST(Needle, TheToolFactoryOffersTheNeedle) {
+TEST(Needle, TheHostOffersTheNeedle) {
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_needle(), "linked-in needle"));
-    auto factory = host.service<ToolFactory>("needle");
-    ASSERT_TRUE(factory.ok()) << factory.reason();
     Mesh square = slab();
-    const std::vector<std::string> words{"--h-ref", "0.003", "--relocate"};
-    auto session = (*factory)->begin("needle", square, words);
+    Options options;
+    options.h_ref = 0.003;
+    options.relocate = true;
+    auto session = host.begin_tool(square, options);
     ASSERT_TRUE(session.ok()) << session.reason();
-    // geometry only (no --deform), and the first step says so
+    // geometry only (no simulation given), and the first step says so
     auto first = (*session)->step(NeedleSession::pose_of(along_x(-0.01, 0.05)));
     ASSERT_TRUE(first.ok()) << first.reason();
     ASSERT_FALSE(first->actions.empty());
@@ -500,25 +500,35 @@ TEST(Needle, TheToolFactoryOffersTheNeedle) {
     ASSERT_TRUE((*session)->step(NeedleSession::pose_of(along_x(0.02, 0.05))).ok());
     EXPECT_GT(square.element_count(), 128u);
     EXPECT_TRUE(square.validate().ok());
-    const std::vector<std::string> wrong{"--h-ref", "-1"};
-    auto refused = (*factory)->begin("needle", square, wrong);
+    Options wrong;
+    wrong.h_ref = -1;
+    auto refused = host.begin_tool(square, wrong);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.refusal().code, RefusalCode::bad_argument);
-    EXPECT_NE(refused.reason().find("--h-ref"), std::string::npos) << refused.reason();
+    EXPECT_EQ(refused.reason(), "needle: h_ref -1 is not in (0, 1e+300]");
+    wrong = {};
+    wrong.friction.static_ratio = 0.5;
+    EXPECT_EQ(host.begin_tool(square, wrong).reason(), "needle: friction.static_ratio 0.5 is not in [1, 1e+300]");
 }
 
-// With the elasticity plug-in in the host and --deform, the tool's session owns a body and solves.
-TEST(Needle, TheToolFactorysNeedleSolvesWithTheElasticityPlugin) {
+// With the application's simulation (the elasticity plug-in's) given to the tool, the session solves.
+TEST(Needle, TheHostsNeedleSolvesTheApplicationsSimulation) {
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_elasticity(), "linked-in elasticity"));
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_needle(), "linked-in needle"));
-    auto factory = host.service<ToolFactory>("needle");
-    ASSERT_TRUE(factory.ok()) << factory.reason();
     Mesh square = slab();
     const Mesh before = square;
-    const std::vector<std::string> words{"--deform",
-                                         "--fix x>0.0999 --E 34e3 --nu 0.34 --thickness 0.01 --tol 0.01"};
-    auto session = (*factory)->begin("needle", square, words);
+    auto elasticity = host.service<elasticity::ElasticityService>();
+    ASSERT_TRUE(elasticity.ok()) << elasticity.reason();
+    elasticity::Options slab_body;
+    slab_body.fix = {"x>0.0999"};
+    slab_body.young = 34e3;
+    slab_body.poisson = 0.34;
+    slab_body.thickness = 0.01;
+    slab_body.tolerance = 0.01;
+    auto body = (*elasticity)->simulate(square, slab_body);
+    ASSERT_TRUE(body.ok()) << body.reason();
+    auto session = host.begin_tool(square, Options{}, {.simulation = body->get()});
     ASSERT_TRUE(session.ok()) << session.reason();
     auto* needle = dynamic_cast<NeedleSession*>(session->get());
     ASSERT_NE(needle, nullptr);
@@ -532,11 +542,10 @@ TEST(Needle, TheToolFactorysNeedleSolvesWithTheElasticityPlugin) {
     EXPECT_GT(needle->last_step().axial_force, 0);
     ASSERT_TRUE((*session)->cancel().ok());
     test::expect_same_state(square, before);
-    const std::vector<std::string> bad{"--deform", "--fix x>7"};
-    auto refused = (*factory)->begin("needle", square, bad);
+    slab_body.fix = {"x>7"};
+    auto refused = (*elasticity)->simulate(square, slab_body);
     ASSERT_FALSE(refused.ok());
-    EXPECT_NE(refused.reason().find("needle: --deform: deform: --fix 'x>7' selects no vertex"), std::string::npos)
-        << refused.reason();
+    EXPECT_EQ(refused.reason(), "deform: --fix 'x>7' selects no vertex of the mesh");
 }
 
 // Seeded random needle paths into slabs and cubes, lines and needles with a radius: every step

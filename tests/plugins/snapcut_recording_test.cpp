@@ -1,4 +1,4 @@
-// What `sxk cut snap` records of a replay (plugins/tool_frames.hpp): --series, a ParaView
+// What `sxk cut snap` records of a replay (cli/tool_frames.hpp): --series, a ParaView
 // collection of one .vtu per step, and --frames, pictures in which the cut can be seen growing.
 // The command runs in-process, with the snapcut, degeneracy and bezier plug-ins linked in.
 #include <gtest/gtest.h>

@@ -5,15 +5,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "body_words.hpp"
 #include "core/fixtures.hpp"
 #include "simulation.hpp"
 #include "snapcut_fixture.hpp"
 #include "sxk/edit_journal.hpp"
 #include "sxk/components.hpp"
 #include "sxk/plugin_host.hpp"
+#include "sxk/plugins/elasticity.hpp"
 #include "sxk/traversal.hpp"
 
 extern "C" const sxk_plugin_info* sxk_plugin_entry_snapcut();
+extern "C" const sxk_plugin_info* sxk_plugin_entry_elasticity();
 
 namespace sxk::test {
 namespace {
@@ -187,16 +190,14 @@ TEST(SnapCutSplitting, ANodeAheadOfTheBladeIsNotSnappedBeyondIt) {
     EXPECT_EQ(unmoved, 2u);
 }
 
-TEST(SnapCutSplitting, ADistanceThatIsNotAFiniteNonNegativeNumberIsRefused) {
+TEST(SnapCutSplitting, ADistanceOutOfRangeIsRefused) {
     Mesh mesh = make_kuhn_cube(1).value();
-    for (const double bad : {-1.0, std::nan(""), static_cast<double>(INFINITY)}) {
+    for (const auto& [bad, text] : {std::pair{-1.0, "-1"}, std::pair{std::nan(""), "nan"},
+                                    std::pair{static_cast<double>(INFINITY), "inf"}, std::pair{1001.0, "1001"}}) {
         const auto made = SnapCutSession::make(mesh, {.split_beyond = bad});
         ASSERT_FALSE(made.ok());
         EXPECT_EQ(made.code(), RefusalCode::bad_argument);
-        EXPECT_EQ(made.reason().rfind("snapcut: the distance beyond which crossings are split must be finite and "
-                                      ">= 0, not ", 0),
-                  0u)
-            << made.reason();
+        EXPECT_EQ(made.reason(), "snapcut: split_beyond " + std::string(text) + " is not in [0, 1000]");
     }
 }
 
@@ -308,8 +309,7 @@ TEST(SnapCut, OnlyTetrahedralMeshesInSpaceAreCut) {
     Mesh cube = make_kuhn_cube(2).value();
     snapcut::Options options;
     options.aspect_ratio = 1.5;
-    EXPECT_EQ(SnapCutSession::make(cube, options).reason(),
-              "snapcut: aspect ratio threshold must be in (0, 1), not 1.500000");
+    EXPECT_EQ(SnapCutSession::make(cube, options).reason(), "snapcut: aspect_ratio 1.5 is not in (0, 1)");
 }
 
 TEST(SnapCut, WithoutTheDegeneracyServiceFlatElementsStayAndTheCutStillWorks) {
@@ -342,7 +342,7 @@ TEST(SnapCut, AScalpelThatMissesTheMeshCutsNothing) {
 std::vector<snapcut::CutStepReport> cut_the_deforming_cube(const snapcut::Options& options, int steps) {
     Mesh mesh = make_kuhn_cube(8).value();
     const std::vector<std::string> words{"--fix", "y<0.001", "--force", "y>7.99:0,20000,0", "--E", "1e5"};
-    auto simulation = elasticity::simulate(mesh, words);
+    auto simulation = elasticity::simulate(mesh, sxk::cli::body_options(words).value());
     if (!simulation) {
         ADD_FAILURE() << simulation.reason();
         return {};
@@ -419,13 +419,16 @@ TEST(SnapCut, TheHostOffersTheToolAndItFindsTheDegeneracyRemoval) {
     PluginHost host;
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_snapcut(), "linked-in snapcut"));
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));  // after: looked up late
-    auto factory = host.service<ToolFactory>("snapcut");
+    // the tool by name, whichever plug-in offers it (the degeneracy plug-in offers a tool too)
+    auto factory = host.tool("snapcut");
     ASSERT_TRUE(factory) << factory.reason();
     ASSERT_EQ((*factory)->tools().size(), 1u);
-    EXPECT_EQ((*factory)->tools()[0], "snapcut");
+    EXPECT_EQ((*factory)->tools()[0].name, "snapcut");
+    EXPECT_EQ((*factory)->tools()[0].options_version, snapcut::Options::options_version);
     Mesh mesh = make_kuhn_cube(8).value();
-    const std::vector<std::string> options{"--aspect", "0.02"};
-    auto session = (*factory)->begin("snapcut", mesh, options);
+    snapcut::Options options;
+    options.aspect_ratio = 0.02;
+    auto session = host.begin_tool(mesh, options);
     ASSERT_TRUE(session) << session.reason();
     auto* cutter = dynamic_cast<SnapCutSession*>(session->get());
     ASSERT_NE(cutter, nullptr);
@@ -435,12 +438,69 @@ TEST(SnapCut, TheHostOffersTheToolAndItFindsTheDegeneracyRemoval) {
     expect_valid(mesh);
     EXPECT_EQ(boundary_faces_with_label(mesh, cut_label), 128u);
 
-    const std::vector<std::string> bad{"--aspect", "2"};
-    const auto refused = (*factory)->begin("snapcut", mesh, bad);
+    snapcut::Options bad;
+    bad.aspect_ratio = 2;
+    const auto refused = host.begin_tool(mesh, bad);
     ASSERT_FALSE(refused);
     EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
-    EXPECT_EQ(refused.reason(), "snapcut: --aspect: '2' is not in (0, 1)");
-    EXPECT_EQ((*factory)->begin("scalpel", mesh, {}).reason(), "no tool called scalpel in snapcut (it has: snapcut)");
+    EXPECT_EQ(refused.reason(), "snapcut: aspect_ratio 2 is not in (0, 1)");
+    bad = {};
+    bad.far_vertices = 10;
+    EXPECT_EQ(host.begin_tool(mesh, bad).reason(),
+              "snapcut: far_vertices needs local_vertices > 0 (it relaxes the far field that a local relaxation "
+              "leaves)");
+    EXPECT_EQ(host.tool("scalpel").reason(), "no tool called scalpel; the plug-ins offer: degeneracies, snapcut");
+    // options of another layout than the plug-in reads, and another tool's name
+    EXPECT_EQ((*factory)->begin("snapcut", 99, &options, mesh, {}).reason(),
+              "snapcut: options of version 99, the plug-in reads version 1 (rebuild against its installed header)");
+    EXPECT_EQ((*factory)->begin("needle", 1, &options, mesh, {}).code(), RefusalCode::not_found);
+    expect_valid(mesh);
+}
+
+// The application's simulation given to the tool (ToolContext): the session relaxes the body after
+// every step, and undoing the steps takes the mesh and the session's state back together.
+TEST(SnapCut, TheToolCutsTheApplicationsSimulationAndUndoesIt) {
+    PluginHost host;
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_elasticity(), "linked-in elasticity"));
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_snapcut(), "linked-in snapcut"));
+    ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
+    Mesh mesh = make_kuhn_cube(8).value();
+    auto elasticity = host.service<elasticity::ElasticityService>();
+    ASSERT_TRUE(elasticity) << elasticity.reason();
+    elasticity::Options body;
+    body.fix = {"y<0.001"};
+    body.force = {{"y>7.99", {0, 20000, 0}}};
+    body.young = 1e5;
+    auto simulation = (*elasticity)->simulate(mesh, body);
+    ASSERT_TRUE(simulation) << simulation.reason();
+    ASSERT_TRUE((*simulation)->relax(100000));
+    const Mesh loaded = mesh;
+    snapcut::Options cut;
+    cut.relax_iterations = 50;
+    auto session = host.begin_tool(mesh, cut, {.simulation = simulation->get()});
+    ASSERT_TRUE(session) << session.reason();
+    auto* cutter = dynamic_cast<SnapCutSession*>(session->get());
+    ASSERT_NE(cutter, nullptr);
+    std::size_t relaxed = 0;
+    for (const Scalpel& scalpel : grid_plane_path()) {
+        ASSERT_TRUE((*session)->step(snapcut::to_pose(scalpel)));
+        relaxed += cutter->last_step().relaxed;
+    }
+    EXPECT_EQ(relaxed, grid_plane_path().size());  // every step, the first pose's too
+    expect_valid(mesh);
+    EXPECT_GT(boundary_faces_with_label(mesh, cut_label), 0u);
+    ASSERT_TRUE((*session)->cancel()) << (*session)->cancel().reason();
+    expect_valid(mesh);
+    test::expect_same_state(mesh, loaded);
+
+    elasticity::Options unheld;
+    unheld.force = {{"y>7.99", {0, 1, 0}}};
+    EXPECT_EQ((*elasticity)->simulate(mesh, unheld).reason(),
+              "deform: nothing holds the body (no --fix or --displace), so it can move freely and the problem is "
+              "singular; fix at least three non-collinear vertices of every connected part");
+    elasticity::Options soft = body;
+    soft.poisson = 0.5;
+    EXPECT_EQ((*elasticity)->simulate(mesh, soft).reason(), "elasticity: poisson 0.5 is not in (-1, 0.5)");
 }
 
 }  // namespace

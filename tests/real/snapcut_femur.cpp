@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "core/fixtures.hpp"
 #include "degeneracy_plugin.hpp"
 #include "plugins/snapcut_fixture.hpp"
@@ -95,7 +96,7 @@ void cut_the_deformed_femur(std::size_t relax_iterations, std::size_t local_vert
     ASSERT_TRUE(host.add_static(sxk_plugin_entry_degeneracy(), "linked-in degeneracy"));
     const std::vector<std::string> loads{"--fix", "z<-0.45", "--force", "z>0.45:4,0,0", "--E", "1e6", "--nu", "0.3",
                                          "--tol", "1e-3"};
-    auto simulation = elasticity::simulate(mesh, loads);
+    auto simulation = elasticity::simulate(mesh, sxk::cli::body_options(loads).value());
     ASSERT_TRUE(simulation) << simulation.reason();
     const auto settled = (*simulation)->relax(500);  // deformed by the load (not necessarily at rest)
     ASSERT_TRUE(settled) << settled.reason();

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "figure_line.hpp"
 #include "needle.hpp"
 #include "percentile.hpp"
@@ -69,8 +70,8 @@ Run insert(int k_start, int k_ref, double speed, std::size_t local = 0, int cell
     if (cells == 0) cells = 1 << k_start;
     const double side = cells * h_start, middle = 0.5 * side;
     Mesh mesh = *make_triangle_grid({cells, cells}, {h_start, h_start});
-    auto made = elasticity::simulate(mesh, slab_body(side));
-    std::unique_ptr<elasticity::Simulation> simulation = std::move(*made);
+    auto made = elasticity::simulate(mesh, sxk::cli::body_options(slab_body(side)).value());
+    std::unique_ptr<Simulation> simulation = std::move(*made);
     needle::Options options;
     options.h_ref = h_ref;
     options.local_vertices = local;
@@ -115,11 +116,11 @@ Run insert(int k_start, int k_ref, double speed, std::size_t local = 0, int cell
     if (local > 0) {
         // what the held far field lags behind: the displacements against a solve of the whole body
         const std::size_t n = mesh.vertex_count();
-        std::vector<elasticity::Vector3> before(n);
+        std::vector<Vector3> before(n);
         for (VertexId v = 0; v < n; ++v) before[v] = simulation->displacement(v);
         if (!simulation->relax(1000000)) std::exit(1);
         for (VertexId v = 0; v < n; ++v) {
-            const elasticity::Vector3 u = simulation->displacement(v);
+            const Vector3 u = simulation->displacement(v);
             double change = 0, size = 0;
             for (int k = 0; k < 3; ++k) {
                 change += (u[k] - before[v][k]) * (u[k] - before[v][k]);

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "elastic_body.hpp"
 #include "figure_line.hpp"
 #include "friction.hpp"
@@ -188,8 +189,8 @@ void tables62_63() {
 }
 
 // The elasticity plug-in's simulation of `mesh` with `sxk deform`'s words; exits on a refusal.
-std::unique_ptr<elasticity::Simulation> body_of(Mesh& mesh, const std::vector<std::string>& words) {
-    auto made = elasticity::simulate(mesh, words);
+std::unique_ptr<Simulation> body_of(Mesh& mesh, const std::vector<std::string>& words) {
+    auto made = elasticity::simulate(mesh, sxk::cli::body_options(words).value());
     if (!made) {
         std::fprintf(stderr, "needle_thesis: %s\n", made.reason().c_str());
         std::exit(1);
@@ -211,7 +212,7 @@ Inserted insert(int k_start, int k_ref, double speed, const std::vector<std::str
     Inserted result;
     Mesh& mesh = result.solution.mesh;
     mesh = slab(k_start);
-    std::unique_ptr<elasticity::Simulation> simulation = body_of(mesh, body);
+    std::unique_ptr<Simulation> simulation = body_of(mesh, body);
     needle::Options options;
     options.h_ref = h(k_ref);
     options.friction.shaft *= friction_scale;
@@ -388,7 +389,7 @@ void fig614() {
                          "  radius    tetrahedra  vertices  needle nodes  CG iterations  CPU s  axial force (N)\n");
     for (const double radius : {0.0, 0.001}) {
         Mesh cube = *make_kuhn_cube(8, 0.0125);
-        std::unique_ptr<elasticity::Simulation> simulation = body_of(cube, words);
+        std::unique_ptr<Simulation> simulation = body_of(cube, words);
         needle::Options options;
         options.h_ref = h(7);
         options.radius = radius;

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "figure_line.hpp"
 #include "percentile.hpp"
 #include "degeneracy_plugin.hpp"
@@ -70,12 +71,12 @@ struct Figures {
 };
 
 // The femur deformed as tests/real/snapcut_femur.cpp deforms it, relaxed 500 CG iterations.
-std::unique_ptr<sxk::elasticity::Simulation> deform_femur(Mesh& mesh) {
+std::unique_ptr<sxk::Simulation> deform_femur(Mesh& mesh) {
     const std::vector<std::string> loads{"--fix", "z<-0.45", "--force", "z>0.45:4,0,0", "--E", "1e6", "--nu", "0.3",
                                          "--tol", "1e-3"};
-    auto made = sxk::elasticity::simulate(mesh, loads);
+    auto made = sxk::elasticity::simulate(mesh, sxk::cli::body_options(loads).value());
     if (!made) throw std::runtime_error(made.reason());
-    std::unique_ptr<sxk::elasticity::Simulation> simulation = std::move(*made);
+    std::unique_ptr<sxk::Simulation> simulation = std::move(*made);
     if (auto settled = simulation->relax(500); !settled) throw std::runtime_error(settled.reason());
     return simulation;
 }
@@ -88,7 +89,7 @@ Figures measure(const std::string& name, const Mesh& original, const std::vector
     std::vector<double> step, select, snap, dissect, degeneracy_ms, pieces, per_face, relax;
     for (int run = 0; run < runs; ++run) {
         Mesh mesh = original;
-        std::unique_ptr<sxk::elasticity::Simulation> simulation;
+        std::unique_ptr<sxk::Simulation> simulation;
         if (deformed) simulation = deform_femur(mesh);
         const auto start = std::chrono::steady_clock::now();
         auto session = sxk::snapcut::SnapCutSession::make(mesh, options,

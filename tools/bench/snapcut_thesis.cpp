@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "body_words.hpp"
 #include "degeneracy_plugin.hpp"
 #include "figure_line.hpp"
 #include "simulation.hpp"
@@ -149,7 +150,7 @@ std::size_t incision_pieces(const Mesh& mesh, int label) {
 
 // Every component not held yet is held on a face (hold_piece leaves held ones alone): a free
 // piece makes the problem singular.
-void hold_every_piece(const Mesh& mesh, sxk::elasticity::Simulation& simulation) {
+void hold_every_piece(const Mesh& mesh, sxk::Simulation& simulation) {
     const sxk::Components components = sxk::connected_components(mesh);
     std::vector<std::vector<sxk::ElementId>> pieces(components.count);
     for (const sxk::ElementId t : sxk::elements(mesh)) pieces[components.element_component[t]].push_back(t);
@@ -166,7 +167,7 @@ const std::vector<std::string> cube_loads{"--fix", "y<0.001", "--force", "y>7.99
 // by the cut").
 std::size_t iterations_after_cut(bool remove_degeneracies, Mesh* keep) {
     Mesh mesh = sxk::make_kuhn_cube(8).value();
-    auto simulation = sxk::elasticity::simulate(mesh, cube_loads).value();
+    auto simulation = sxk::elasticity::simulate(mesh, sxk::cli::body_options(cube_loads).value()).value();
     (void)simulation->relax(100000).value();
     sxk::snapcut::Options options;
     options.remove_degeneracies = remove_degeneracies;
@@ -183,7 +184,7 @@ void write_opened(const Mesh& cut_mesh, const std::filesystem::path& file) {
     Mesh mesh = cut_mesh;
     std::vector<std::string> loads = cube_loads;
     loads[3] = "y>7.999:0,2000000,0";
-    auto simulation = sxk::elasticity::simulate(mesh, loads).value();
+    auto simulation = sxk::elasticity::simulate(mesh, sxk::cli::body_options(loads).value()).value();
     hold_every_piece(mesh, *simulation);
     (void)simulation->relax(20000).value();
     sxk::write_mesh(mesh, file, {.drop_unused_vertices = true});

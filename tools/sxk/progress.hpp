@@ -1,5 +1,5 @@
 // The built-in commands' progress line: the spinner the plug-ins' commands use too
-// (plugins/progress_line.hpp, on sxk's include path as command_line.hpp is).
+// (cli/progress_line.hpp, the command-line library).
 #pragma once
 
 #include "progress_line.hpp"

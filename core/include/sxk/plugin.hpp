@@ -35,7 +35,8 @@
 // 2: typed services (Plugin::offer with an interface id and version), run_on_mesh for a mesh
 //    the command may edit.
 // 3: Plugin::attach: a plug-in reaches the other plug-ins' services through its host.
-#define SXK_PLUGIN_ABI_VERSION 3u
+// 4: Services::find_tool; ToolFactory is an object taking typed options (tool_session.hpp).
+#define SXK_PLUGIN_ABI_VERSION 4u
 
 // Entry points must be visible although the project builds with hidden visibility.
 #if defined(_WIN32)
@@ -47,6 +48,7 @@
 namespace sxk {
 
 class Mesh;
+class ToolFactory;  // sxk/tool_session.hpp
 
 // A subcommand a plug-in adds to sxk ("sxk stats MESH", "sxk cut snap ...").
 class PluginCommand {
@@ -126,6 +128,8 @@ public:
     }
     virtual Outcome<void*> find_service(std::string_view service_id, std::uint32_t version,
                                         std::string_view plugin = {}) const = 0;
+    // The factory of the tool called `name`, whichever loaded plug-in offers it (PluginHost::tool).
+    virtual Outcome<ToolFactory*> find_tool(std::string_view name) const = 0;
 
 protected:
     ~Services() = default;

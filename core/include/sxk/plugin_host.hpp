@@ -33,6 +33,7 @@
 #include "sxk/config.hpp"
 #include "sxk/outcome.hpp"
 #include "sxk/plugin.hpp"
+#include "sxk/tool_session.hpp"
 
 namespace sxk {
 
@@ -109,6 +110,24 @@ public:
     // The untyped lookup behind service<Interface>().
     Outcome<void*> find_service(std::string_view service_id, std::uint32_t version,
                                 std::string_view plugin = {}) const;
+
+    // The factory of the tool called `name` (ToolFactory::tools), whichever loaded plug-in offers
+    // it: the first in loading order. Refuses when none does, naming the tools there are ("no
+    // tool called scalpel; the plug-ins offer: degeneracies, delaunaycut, needle, snapcut").
+    Outcome<ToolFactory*> tool(std::string_view name) const;
+    // A session of the tool whose options `options` are (a struct of a plug-in's installed
+    // header, sxk/plugins/NAME.hpp, naming its tool), on `mesh`, with what the application gives
+    // it (a simulation):
+    //
+    //     sxk::snapcut::Options cut;  cut.largest_crumb = 8;
+    //     auto session = host.begin_tool(mesh, cut, {.simulation = simulation.get()});
+    template <class Options>
+    Outcome<std::unique_ptr<ToolSession>> begin_tool(Mesh& mesh, const Options& options,
+                                                     const ToolContext& context = {}) const {
+        auto factory = tool(Options::tool_name);
+        if (!factory) return factory.refusal();
+        return sxk::begin_tool(**factory, mesh, options, context);
+    }
 
 private:
     struct State;

@@ -1,7 +1,7 @@
 // Tool sessions: a cutter, a needle or a brush driven once per frame by an application, each
 // frame one transaction that can be undone.
 //
-//     auto session = factory->begin("snapcut", mesh, options);   // a plug-in's ToolFactory
+//     auto session = host.begin_tool(mesh, snapcut_options);      // a plug-in's tool (plugin_host.hpp)
 //     for each frame:
 //         auto report = (*session)->step(pose);   // completes, or the mesh is as before
 //         if (report) solver.update(report->elements, report->vertices);
@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -118,17 +119,102 @@ private:
     bool m_ended = false;
 };
 
-// The service a plug-in offers for its tools (PluginHost::service<ToolFactory>(), plugin.hpp).
-struct ToolFactory {
-    static constexpr std::string_view service_id = "sxk.tools";
-    static constexpr std::uint32_t service_version = 1;
+class Simulation;  // sxk/simulation.hpp
 
-    // The tools offered, e.g. {"snapcut"}.
-    std::span<const std::string_view> (*tools)();
-    // A session of `tool` on `mesh`, with the tool's options as on its command line
-    // ("--depth", "0.01"); refuses an unknown tool or bad options, with the reason.
-    Outcome<std::unique_ptr<ToolSession>> (*begin)(std::string_view tool, Mesh& mesh,
-                                                   std::span<const std::string> options);
+// What an application gives a session beside the tool's options.
+struct ToolContext {
+    // A simulation of the session's mesh (the elasticity plug-in's, or the application's own),
+    // owned by the application, outliving the session. A tool that works on a deforming body
+    // (the snap cutter relaxes it after every step, the needle holds the nodes on its shaft)
+    // uses it; nullptr: the tool's own default (geometry only, or a body the tool makes from
+    // its options).
+    Simulation* simulation = nullptr;
 };
+
+// The service a plug-in offers for its tools (PluginHost::tool finds a tool by name across the
+// loaded plug-ins; plugin.hpp). A tool's options are a struct of the plug-in's installed header
+// (sxk/plugins/NAME.hpp) that names the tool and the layout it has:
+//
+//     struct Options {
+//         static constexpr std::string_view tool_name = "snapcut";
+//         static constexpr std::uint32_t options_version = 1;  // bumped on any change of layout
+//         ...fields with defaults...
+//         Outcome<Done> check() const;                          // the ranges, with a code
+//     };
+//
+// and begin_tool passes them with that name and version, so a factory never reads options of
+// another layout than it was built with. A factory is an object of its plug-in: it holds the
+// host's services (Plugin::attach) that its sessions use.
+class ToolFactory {
+public:
+    static constexpr std::string_view service_id = "sxk.tools";
+    // 1: a struct of function pointers taking command-line words
+    static constexpr std::uint32_t service_version = 2;
+
+    struct Tool {
+        std::string_view name;
+        std::uint32_t options_version = 0;
+    };
+    // The tools offered, e.g. {{"snapcut", 1}}.
+    virtual std::span<const Tool> tools() const = 0;
+    // A session of `tool` on `mesh`; `options` points to the tool's options struct of layout
+    // `options_version`. Refuses a tool it does not offer (not_found), another layout
+    // (bad_argument), options out of range (their check()) and a mesh the tool cannot work on.
+    // Use begin_tool, which passes the name and version of the struct.
+    virtual Outcome<std::unique_ptr<ToolSession>> begin(std::string_view tool, std::uint32_t options_version,
+                                                        const void* options, Mesh& mesh,
+                                                        const ToolContext& context) = 0;
+
+    // For implementations of begin: the options as `Options` when `tool` and `options_version`
+    // are Options', else the refusal.
+    template <class Options>
+    static Outcome<const Options*> options_of(std::string_view tool, std::uint32_t options_version,
+                                              const void* options) {
+        if (tool != Options::tool_name)
+            return Refusal{RefusalCode::not_found, "no tool called " + std::string(tool) + " here (this factory has " +
+                                                       std::string(Options::tool_name) + ")"};
+        if (options_version != Options::options_version)
+            return Refusal{RefusalCode::bad_argument,
+                           std::string(tool) + ": options of version " + std::to_string(options_version) +
+                               ", the plug-in reads version " + std::to_string(Options::options_version) +
+                               " (rebuild against its installed header)"};
+        if (options == nullptr) return Refusal{RefusalCode::bad_argument, std::string(tool) + ": no options"};
+        return static_cast<const Options*>(options);
+    }
+
+protected:
+    ~ToolFactory() = default;
+};
+
+// The factory of a plug-in that offers one tool, whose options are `Options`: begin checks the
+// name, the layout and the options (Options::check), and hands them to `make`, which a plug-in
+// gives as a lambda holding what its sessions need (the host's services).
+template <class Options>
+class ToolFactoryOf final : public ToolFactory {
+public:
+    using Make = std::function<Outcome<std::unique_ptr<ToolSession>>(Mesh&, const Options&, const ToolContext&)>;
+    explicit ToolFactoryOf(Make make) : m_make(std::move(make)) {}
+
+    std::span<const Tool> tools() const override { return {&m_tool, 1}; }
+    Outcome<std::unique_ptr<ToolSession>> begin(std::string_view tool, std::uint32_t options_version,
+                                                const void* options, Mesh& mesh,
+                                                const ToolContext& context) override {
+        const Outcome<const Options*> typed = options_of<Options>(tool, options_version, options);
+        if (!typed) return typed.refusal();
+        if (Outcome<Done> checked = (*typed)->check(); !checked) return checked.refusal();
+        return m_make(mesh, **typed, context);
+    }
+
+private:
+    Tool m_tool{Options::tool_name, Options::options_version};
+    Make m_make;
+};
+
+// A session of the tool whose options `options` are, from `factory`.
+template <class Options>
+Outcome<std::unique_ptr<ToolSession>> begin_tool(ToolFactory& factory, Mesh& mesh, const Options& options,
+                                                 const ToolContext& context = {}) {
+    return factory.begin(Options::tool_name, Options::options_version, &options, mesh, context);
+}
 
 }  // namespace sxk

@@ -47,7 +47,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bezier/render_service.hpp"
+#include "sxk/plugins/render.hpp"
 #include "command_line.hpp"
 #include "sxk/atomic_write.hpp"
 #include "sxk/io.hpp"

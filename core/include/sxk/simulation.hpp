@@ -1,35 +1,31 @@
-// The elasticity plug-in's service, for the tools that run a simulation while they edit (the snap
-// cutter re-solves after every cut step, thesis §3.3; the needle holds the vertices on its shaft,
-// §6.3.2) and for applications that load
-// elasticity.so at run time:
+// A simulation of a mesh's body, as a tool sees it: what a cutter or a needle asks of the body it
+// edits (thesis §3.3: the snap cutter relaxes the body after every cut step; §6.3.2: the needle
+// holds the vertices on its shaft). The elasticity plug-in implements it (sxk/plugins/elasticity.hpp:
+// ElasticityService::simulate); an application makes one and gives it to a tool session
+// (ToolContext, sxk/tool_session.hpp), so the session keeps the body in step with its cuts.
 //
-//     auto elasticity = host.service<sxk::elasticity::ElasticityService>();
-//     auto simulation = (*elasticity)->simulate(mesh, {"--fix", "z<0.001", "--force", "z>7.99:0,0,-100"});
-//     (*simulation)->relax(100000);     // the loaded shape: mesh.deformed() now shows it
-//     ... edit the mesh (the body follows every edit) ...
-//     (*simulation)->relax(200);        // per frame: a bounded number of CG iterations, warm start
+//     auto simulation = (*elasticity)->simulate(mesh, body_options);
+//     (*simulation)->relax(100000);          // the loaded shape: mesh.deformed() now shows it
+//     auto session = host.begin_tool(mesh, snapcut_options, {.simulation = simulation->get()});
+//     (*session)->step(pose);                 // the cut, then a relaxation of the body
 //
-// The options are `sxk deform`'s (docs/cli.md): --fix, --displace, --force, --share, --gravity,
-// --density, --material, --E, --nu, --thickness, --tol, --max-iterations, --stop. This header carries
-// only the kernel's types.
+// A simulation is attached to its mesh (it follows the mesh's edits, thesis §7.4) and the mesh
+// must stay where it is while the simulation lives.
 #pragma once
 
 #include <array>
 #include <cstddef>
-#include <cstdint>
-#include <memory>
 #include <optional>
 #include <span>
-#include <string>
-#include <string_view>
 #include <vector>
 
-#include "sxk/mesh.hpp"
+#include "sxk/ids.hpp"
 #include "sxk/outcome.hpp"
 
-namespace sxk::elasticity {
+namespace sxk {
 
-using Vector3 = std::array<double, 3>;  // as in elastic_body.hpp
+// A displacement or a force (x, y, z; a planar body ignores z).
+using Vector3 = std::array<double, 3>;
 
 // What one relax call did.
 struct RelaxReport {
@@ -37,18 +33,18 @@ struct RelaxReport {
     bool converged = false;      // the residual reached the stop criterion (eq. 6.9)
     double residual = 0, threshold = 0;
     bool shown = false;  // the deformed positions were written (not when they would invert an element)
-    std::optional<Refusal> not_shown = std::nullopt;  // when not shown: why (ElasticBody::write_deformed's refusal)
+    std::optional<Refusal> not_shown = std::nullopt;  // when not shown: why
     double seconds = 0;
     // relax_near: the vertices solved for, and the elements around them (0, 0: the whole body)
     std::size_t region_vertices = 0, region_elements = 0;
 };
 
 // A body on a mesh, attached to it (it follows the mesh's edits, thesis §7.4), with the
-// constraints and loads of its options.
+// constraints and loads of its options (for the elasticity plug-in's, sxk/plugins/elasticity.hpp).
 class Simulation {
 public:
     virtual ~Simulation() = default;
-    // At most `iterations` more CG iterations (and at most the options' --max-iterations) from the
+    // At most `iterations` more CG iterations (and at most the options' max_iterations) from the
     // current displacements (a warm start), then
     // the deformed positions reference + u written into the mesh (one move_vertices: watchers and
     // an open EditJournal step see it) unless they would invert or flatten an element. Refuses
@@ -85,7 +81,7 @@ public:
 
     // ---- vertices a tool holds (a needle's stick-slip friction, thesis §6.3.2 and §6.6) -------
     // Displacements are from the reference position (metres), forces in newtons; a planar body
-    // ignores z. The vertices the options constrain (--fix, --displace) are not the tool's: hold,
+    // ignores z. The vertices the options constrain (fix, displace) are not the tool's: hold,
     // hold_on_line and release refuse them (bad_argument, "vertex 7 is held by the body's options").
     // Refusals name the vertex; a vertex in no element is not_found.
 
@@ -114,15 +110,4 @@ public:
     virtual Outcome<Done> displacements_from_mesh() = 0;
 };
 
-struct ElasticityService {
-    static constexpr std::string_view service_id = "sxk.elasticity";
-    static constexpr std::uint32_t service_version = 5;  // 2: vertices a tool holds; 3: relax_near, relax_far;
-                                                          // 4: follow_far_field; 5: RelaxReport::not_shown
-
-    // A simulation of `mesh` (which must stay where it is while the simulation lives) set up from
-    // `sxk deform`'s options; refuses bad options and empty selections with `sxk deform`'s
-    // messages ("deform: --fix 'x<9' selects no vertex of the mesh").
-    Outcome<std::unique_ptr<Simulation>> (*simulate)(Mesh& mesh, std::span<const std::string> options);
-};
-
-}  // namespace sxk::elasticity
+}  // namespace sxk
