@@ -96,7 +96,8 @@ public:
     struct Setup {
         std::string command;                     // "cut snap": messages say "sxk: cut snap: --frames: ..."
         std::size_t steps = 0;                   // the path's steps: the pictures say "step i of n"
-        std::vector<std::string> picture_words;  // the renderer's options besides size, camera, tool, title
+        bezier::Colouring colour = bezier::Colouring::piece;  // the renderer's pictures: colouring,
+        int cut_label = 9999;                                  // and the label of the cut faces
         Drawer drawer;                           // set: pictures drawn by the tool, not the renderer
         WriteOptions writing;                    // how the series' files are written (as OUT)
     };
@@ -222,23 +223,12 @@ private:
             }
             return true;
         }
-        std::vector<std::string> words = m_setup.picture_words;
-        words.insert(words.end(), m_view.begin(), m_view.end());
-        words.push_back("--title");
-        words.push_back(title(index, time));
-        if (!tool.empty()) {
-            std::string text;
-            char number[32];
-            for (const Point& p : tool)
-                for (const double x : p) {
-                    std::snprintf(number, sizeof number, "%.17g,", x);
-                    text += number;
-                }
-            text.pop_back();
-            words.push_back("--tool");
-            words.push_back(text);
-        }
-        if (auto drawn = m_renderer->draw_mesh(mesh, file, words); !drawn) {
+        bezier::MeshPicture picture = m_view;
+        picture.colour = m_setup.colour;
+        picture.cut_label = m_setup.cut_label;
+        picture.title = title(index, time);
+        picture.tool.assign(tool.begin(), tool.end());
+        if (auto drawn = m_renderer->draw_mesh(mesh, file, picture); !drawn) {
             err << "sxk: " << m_setup.command << ": --frames: " << drawn.reason() << '\n';
             return false;
         }
@@ -339,7 +329,7 @@ private:
     RecordingOptions m_options;
     Setup m_setup;
     const bezier::RenderService* m_renderer = nullptr;
-    std::vector<std::string> m_view;  // --size and --camera of every picture
+    bezier::MeshPicture m_view;  // the size and camera of every picture
     std::vector<Entry> m_entries;     // the series' files written
     std::size_t m_last = 0;
     double m_last_time = 0;

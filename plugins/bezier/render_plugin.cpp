@@ -121,8 +121,8 @@ struct CommandOptions {
     std::string input;
     std::string output;
     ReadOptions reading;  // --strict (meshes)
-    std::string size = "640x480";
-    std::string camera;  // empty: frame() the scene's box
+    std::array<int, 2> size{640, 480};
+    std::optional<Camera> camera;  // none: frame() the scene's box
     double fov = 40;
     bool tessellate = false;
     int segments = 0;  // when not given: default_segments
@@ -159,6 +159,22 @@ bool is_zero(const Point& a) {
     return a[0] == 0 && a[1] == 0 && a[2] == 0;
 }
 
+// Why the camera cannot see, or nothing: eye and target coincide, up lies along the view, or
+// what the renderer's frame of the camera refuses beyond that (a view direction whose length
+// overflows, an up vector parallel to it after rounding): a bad argument too, refused before the
+// input is read rather than by the render (exit 1).
+std::optional<std::string> camera_problem(const Camera& camera) {
+    if (camera.eye == camera.target) return "eye and target coincide";
+    if (is_zero(cross(minus(camera.target, camera.eye), camera.up)))
+        return "up is zero or parallel to the view direction";
+    try {
+        primary_ray(camera, 1, 1, 0, 0);
+    } catch (const std::invalid_argument& error) {
+        return error.what();
+    }
+    return std::nullopt;
+}
+
 // "ex,ey,ez,tx,ty,tz,ux,uy,uz" as a camera (fov left at its default); the reason otherwise.
 std::variant<Camera, std::string> parse_camera(const std::string& text) {
     const auto list = parse_number_list(text);
@@ -171,18 +187,7 @@ std::variant<Camera, std::string> parse_camera(const std::string& text) {
     camera.eye = {numbers[0], numbers[1], numbers[2]};
     camera.target = {numbers[3], numbers[4], numbers[5]};
     camera.up = {numbers[6], numbers[7], numbers[8]};
-    if (camera.eye == camera.target)
-        return "'" + text + "': eye and target coincide";
-    if (is_zero(cross(minus(camera.target, camera.eye), camera.up)))
-        return "'" + text + "': up is zero or parallel to the view direction";
-    // what the renderer's frame of the camera refuses beyond that (a view direction whose length
-    // overflows, an up vector parallel to it after rounding) is a bad argument too, refused here
-    // rather than by the render after the input is read (exit 1)
-    try {
-        primary_ray(camera, 1, 1, 0, 0);
-    } catch (const std::invalid_argument& error) {
-        return "'" + text + "': " + error.what();
-    }
+    if (const auto problem = camera_problem(camera)) return "'" + text + "': " + *problem;
     return camera;
 }
 
@@ -204,6 +209,7 @@ std::variant<std::vector<Point>, std::string> parse_tool(const std::string& text
 std::optional<CommandOptions> parse(std::span<const std::string> args, bool with_input,
                                     std::ostream& out, std::ostream& err, int& code) {
     CommandOptions options;
+    std::string size = "640x480", camera;
     CLI::App app(
         "Renders triangular Bézier patches (.bpt, Roth's thesis ch. 6: Bézier clipping in an "
         "Embree BVH) or the boundary of a mesh, coloured by element quality or label, to a "
@@ -214,7 +220,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
                        "Patch file (.bpt) or mesh file (" + std::string(known_mesh_extensions()) + ")")
             ->required();
     app.add_option("OUT", options.output, "Output picture (.png)")->required();
-    app.add_option("--size", options.size,
+    app.add_option("--size", size,
                    "Picture size WxH in pixels, each 1.." + std::to_string(max_image_side))
         ->check(CLI::Validator(
             [](std::string& text) {
@@ -224,7 +230,7 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
             },
             "WxH"))
         ->capture_default_str();
-    app.add_option("--camera", options.camera,
+    app.add_option("--camera", camera,
                    "Camera eye,target,up as nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz (default: the "
                    "whole scene framed from direction (1,-2,1.2), z up; planar meshes from +z)")
         ->check(CLI::Validator(
@@ -284,6 +290,8 @@ std::optional<CommandOptions> parse(std::span<const std::string> args, bool with
         code = *done;
         return std::nullopt;
     }
+    options.size = *parse_size(size);
+    if (!camera.empty()) options.camera = std::get<Camera>(parse_camera(camera));
     if (app.count("--cut-label") > 0)
         options.cut_label = cut_label;
     if (!tool.empty()) options.tool = std::get<std::vector<Point>>(parse_tool(tool));
@@ -619,16 +627,16 @@ pictures::Annotation marks_of(const CommandOptions& options, const Drawing& draw
 // Renders, writes and reports; the drawing is made. Returns the exit code.
 int draw(const CommandOptions& options, Drawing& drawing, bool planar,
          double read_and_build_seconds, std::ostream& out, std::ostream& err) {
-    const std::array<int, 2> size = *parse_size(options.size);
+    const std::array<int, 2> size = options.size;
     Camera camera;
-    if (options.camera.empty() && !drawing.fit_points.empty()) {
+    if (!options.camera && !drawing.fit_points.empty()) {
         camera = fit(drawing.fit_points, planar ? planar_view : default_view, planar ? planar_up : default_up,
                      options.fov, static_cast<double>(size[0]) / size[1]);
-    } else if (options.camera.empty()) {
+    } else if (!options.camera) {
         camera = frame(drawing.scene.bounds(), planar ? planar_view : default_view,
                        planar ? planar_up : default_up, options.fov);
     } else {
-        camera = std::get<Camera>(parse_camera(options.camera));
+        camera = *options.camera;
     }
     camera.fov_degrees = options.fov;
 
@@ -687,9 +695,9 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
 // before anything is read.
 bool refuse_options_for(const CommandOptions& options, bool patches, std::ostream& err) {
     std::string why;
-    const std::array<int, 2> size = *parse_size(options.size);
+    const std::array<int, 2> size = options.size;
     if (static_cast<long long>(size[0]) * size[1] > max_pixels) {
-        why = "--size " + options.size + " has " +
+        why = "--size " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " has " +
               std::to_string(static_cast<long long>(size[0]) * size[1]) +
               " pixels, more than the " + std::to_string(max_pixels) + " allowed (8192x8192)";
     } else if (patches && options.colour == "quality") {
@@ -790,20 +798,34 @@ std::string message_of(const std::string& err) {
     return text.empty() ? "render: no picture" : text;
 }
 
-// RenderService::draw_mesh: the command's own path for a mesh in memory (run_on_mesh).
-Outcome<Done> draw_mesh(const Mesh& mesh, const std::filesystem::path& output,
-                        std::span<const std::string> words) {
-    std::vector<std::string> args{output.string()};
-    args.insert(args.end(), words.begin(), words.end());
+// RenderService::draw_mesh: the command's own path for a mesh in memory (run_on_mesh), with the
+// picture's typed options.
+Outcome<Done> draw_mesh(const Mesh& mesh, const std::filesystem::path& output, const MeshPicture& picture) {
+    if (Outcome<Done> checked = picture.check(); !checked) return checked.refusal();
+    CommandOptions options;
+    options.input = "mesh";
+    options.output = output.string();
+    options.size = {picture.width, picture.height};
+    if (picture.camera) {
+        Camera camera;
+        camera.eye = picture.camera->eye;
+        camera.target = picture.camera->target;
+        camera.up = picture.camera->up;
+        if (const auto problem = camera_problem(camera))
+            return Refusal{RefusalCode::bad_argument, "render: camera: " + *problem};
+        options.camera = camera;
+    }
+    options.fov = picture.fov;
+    constexpr std::array<const char*, 4> colourings{"quality", "label", "piece", "plain"};
+    options.colour = colourings[static_cast<std::size_t>(picture.colour)];
+    options.cut_label = picture.cut_label;
+    options.tool = picture.tool;
+    options.title = picture.title;
+    options.explode = picture.explode;
     std::ostringstream out, err;
-    int code = 0;
-    std::optional<CommandOptions> options = parse(args, false, out, err, code);
-    if (!options) return Refusal{RefusalCode::bad_argument, message_of(err.str())};
-    options->input = "mesh";
-    if (refuse_options_for(*options, false, err) || !check_output(options->output, err))
-        return Refusal{RefusalCode::bad_argument, message_of(err.str())};
+    if (!check_output(options.output, err)) return Refusal{RefusalCode::bad_argument, message_of(err.str())};
     try {
-        if (render_mesh(mesh, *options, std::chrono::steady_clock::now(), out, err) != 0)
+        if (render_mesh(mesh, options, std::chrono::steady_clock::now(), out, err) != 0)
             return Refusal{RefusalCode::not_applicable, message_of(err.str())};
     } catch (const std::exception& error) {
         return Refusal{RefusalCode::not_applicable, std::string("render: ") + error.what()};
@@ -820,31 +842,19 @@ std::vector<Point> shown_points(const Mesh& mesh) {
     return points;
 }
 
-// "eye,target,up" as --camera reads it, every coordinate in round-trip precision.
-std::string camera_text(const Camera& camera) {
-    std::string text;
-    char number[32];
-    for (const Point* p : {&camera.eye, &camera.target, &camera.up})
-        for (const double x : *p) {
-            std::snprintf(number, sizeof number, "%.17g,", x);
-            text += number;
-        }
-    text.pop_back();
-    return text;
-}
+View view_of(const Camera& camera) { return View{camera.eye, camera.target, camera.up}; }
 
-std::string default_camera(const Mesh& mesh) {
+View default_camera(const Mesh& mesh) {
     const std::vector<Point> points = shown_points(mesh);
     const bool planar = mesh.ambient_dimension() == 2;
-    const Camera camera = frame(box_of(points), planar ? planar_view : default_view, planar ? planar_up : default_up,
-                                CommandOptions{}.fov);
-    return camera_text(camera);
+    return view_of(frame(box_of(points), planar ? planar_view : default_view, planar ? planar_up : default_up,
+                         CommandOptions{}.fov));
 }
 
 // RenderService::frame_view: one view for every picture of a run, fitted to the mesh as it is
 // (its deformed positions, the vertices in elements) with room for what moves (a margin of 8 %),
 // the picture shaped to the body (width / height within [0.4, 2.5]) with about `pixels` pixels.
-std::vector<std::string> frame_view(const Mesh& mesh, long long pixels) {
+MeshPicture frame_view(const Mesh& mesh, long long pixels) {
     const std::vector<Point> points = shown_points(mesh);
     const bool planar = mesh.ambient_dimension() == 2;
     const Point& from = planar ? planar_view : default_view;
@@ -855,7 +865,11 @@ std::vector<std::string> frame_view(const Mesh& mesh, long long pixels) {
     const auto even = [](double side) { return std::max(2, 2 * static_cast<int>(std::lround(side / 2))); };
     const int width = even(std::sqrt(area * aspect)), height = even(area / std::sqrt(area * aspect));
     const Camera camera = fit(points, from, up, CommandOptions{}.fov, static_cast<double>(width) / height, 0.08);
-    return {"--size", std::to_string(width) + "x" + std::to_string(height), "--camera", camera_text(camera)};
+    MeshPicture picture;
+    picture.width = width;
+    picture.height = height;
+    picture.camera = view_of(camera);
+    return picture;
 }
 
 class BezierPlugin final : public Plugin {

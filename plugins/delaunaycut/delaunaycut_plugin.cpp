@@ -225,7 +225,7 @@ public:
         auto recording = ToolRecording::open(
             m_host, *mesh, options.recording,
             {"cut delaunay", path.samples.size(),
-             {"--colour", "piece", "--cut-label", std::to_string(options.cut.cut_label)}, {}, writing},
+             bezier::Colouring::piece, options.cut.cut_label, {}, writing},
             err);
         if (!recording) return 2;
         // the scalpel at a sample: a blade from handle to tip (surfaces), a point (planar cuts)

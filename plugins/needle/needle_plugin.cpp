@@ -242,7 +242,8 @@ public:
             };
         }
         auto recording = ToolRecording::open(m_host, *mesh, o.recording,
-                                             {"needle", steps, {"--colour", "piece"}, planar_drawer, {}}, err);
+                                             {"needle", steps, bezier::Colouring::piece, 9999, planar_drawer, {}},
+                                             err);
         if (!recording) return 2;
         // the needle at a sample: base to tip
         const auto shaft = [planar](const ToolSample& sample) {

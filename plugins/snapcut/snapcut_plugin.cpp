@@ -229,8 +229,7 @@ public:
         writing.drop_unused_vertices = true;  // collapses leave vertices in no element
         auto recording = ToolRecording::open(
             m_host, *mesh, options.recording,
-            {"cut snap", path.size(), {"--colour", "piece", "--cut-label", std::to_string(options.cut.cut_label)}, {},
-             writing},
+            {"cut snap", path.size(), bezier::Colouring::piece, options.cut.cut_label, {}, writing},
             err);
         if (!recording) return 2;
         // the blade at a step: the scalpel from handle to tip, or the swept triangle
