@@ -9,6 +9,7 @@
 // `nan` or `inf` cannot slip through one command's option while another's refuses it.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -32,6 +33,68 @@
 #include "sxk/tool_session.hpp"
 
 namespace sxk {
+
+namespace cli {
+
+// Exit codes of every command, built-in or a plug-in's (docs/cli.md "Exit codes and messages").
+inline constexpr int exit_success = 0;
+inline constexpr int exit_refused = 1;  // operation refused or result invalid
+inline constexpr int exit_usage = 2;    // usage or input error
+
+// ---- did you mean ----------------------------------------------------------------------------
+
+// The edit distance of a and b: insertions, deletions, substitutions and swaps of two neighbours.
+inline std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// The candidate nearest `word`, when it is near enough to be what was meant: at most a third of
+// the word's letters (at least one) changed, and no other candidate as near.
+inline std::optional<std::string> nearest_word(std::string_view word, std::span<const std::string> candidates) {
+    const std::size_t limit = std::max<std::size_t>(1, word.size() / 3);
+    std::optional<std::string> best;
+    std::size_t best_distance = limit + 1;
+    bool tie = false;
+    for (const std::string& candidate : candidates) {
+        const std::size_t distance = edit_distance(word, candidate);
+        if (distance < best_distance) {
+            best = candidate;
+            best_distance = distance;
+            tie = false;
+        } else if (distance == best_distance && candidate != *best) {
+            tie = true;
+        }
+    }
+    if (tie) return std::nullopt;
+    return best;
+}
+
+// " (did you mean --aspect?)" for the first word of `args` that looks like an option `app` does
+// not have and is near one it has; "" otherwise.
+inline std::string did_you_mean_option(const CLI::App& app, std::span<const std::string> args) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& arg : args) {
+        if (arg.size() < 3 || arg.rfind("--", 0) != 0) continue;
+        const std::string word = arg.substr(0, arg.find('='));
+        if (std::find(names.begin(), names.end(), word) != names.end()) continue;
+        if (const auto near = nearest_word(word, names)) return " (did you mean " + *near + "?)";
+        return "";
+    }
+    return "";
+}
+
+}  // namespace cli
 
 // ---- numbers in options ----------------------------------------------------------------------
 // Every numeric option of every sxk command is checked by one of these before CLI11 converts it.
@@ -135,10 +198,11 @@ inline std::optional<int> parse_command_line(CLI::App& app, std::span<const std:
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0) {  // --help
             out << app.help();
-            return 0;
+            return cli::exit_success;
         }
-        err << "sxk: " << name << ": " << error.what() << "\nRun 'sxk " << name << " --help' for more information.\n";
-        return 2;
+        err << "sxk: " << name << ": " << error.what() << cli::did_you_mean_option(app, args) << "\nRun 'sxk " << name
+            << " --help' for more information.\n";
+        return cli::exit_usage;
     }
     return std::nullopt;
 }
@@ -327,18 +391,18 @@ inline std::variant<std::size_t, int> undo_steps(ToolSession& session, const std
     const std::optional<UndoRequest> request = parse_undo(undo);
     if (!request) {  // add_undo_option's check refuses it first; a caller without it gets the same words
         err << "sxk: " << name << ": --undo: " << not_an_undo_count(undo) << '\n';
-        return 2;
+        return cli::exit_usage;
     }
     const std::size_t kept = session.steps();
     const std::size_t count = request->all ? kept : request->count;
     if (count > kept) {
         err << "sxk: " << name << ": --undo " << undo << ": only " << kept << " steps were taken\n";
-        return 2;
+        return cli::exit_usage;
     }
     for (std::size_t i = 0; i < count; ++i)
         if (auto undone = session.undo_step(); !undone) {
             err << "sxk: " << name << ": " << undone.reason() << '\n';
-            return 1;
+            return cli::exit_refused;
         }
     return count;
 }

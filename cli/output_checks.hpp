@@ -100,12 +100,12 @@ inline std::optional<int> check_outputs(const std::string& command, const std::s
         if (!other.empty()) {
             err << "sxk: " << command << ": " << side.option << ' ' << side.file << ": the same file as " << other
                 << "; name another file\n";
-            return 2;
+            return cli::exit_usage;
         }
         if (std::filesystem::path(side.file).extension() != side.extension) {
             err << "sxk: " << command << ": " << side.option << ' ' << side.file << ": " << side.written
                 << "; name it *" << side.extension << '\n';
-            return 2;
+            return cli::exit_usage;
         }
     }
     std::vector<std::string> files{output};
@@ -114,7 +114,7 @@ inline std::optional<int> check_outputs(const std::string& command, const std::s
     for (const std::string& file : files)
         if (const std::optional<std::string> why = why_unwritable(file)) {
             err << "sxk: " << file << ":0: cannot write: " << *why << '\n';
-            return 1;
+            return cli::exit_refused;
         }
     return std::nullopt;
 }

@@ -654,7 +654,7 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
         write_png(options.output, image);
     } catch (const std::exception& error) {
         err << "sxk: " << write_error_line(options.output, error) << '\n';
-        return 1;
+        return cli::exit_refused;
     }
 
     const double total = read_and_build_seconds + render_seconds;
@@ -681,14 +681,14 @@ int draw(const CommandOptions& options, Drawing& drawing, bool planar,
         seconds["total"] = total;
         json["seconds"] = seconds;
         out << json.dump(2) << '\n';
-        return 0;
+        return cli::exit_success;
     }
     char time[32];
     std::snprintf(time, sizeof time, "%.2f s", total);
     out << options.input << " -> " << options.output << ": " << size[0] << 'x' << size[1] << ", "
         << drawing.summary << ", " << plural(drawing.scene.leaf_count(), "leaf", "leaves") << ", "
         << time << '\n';
-    return 0;
+    return cli::exit_success;
 }
 
 // Options that do not fit the input's kind, or a picture beyond max_pixels: a usage error, found
@@ -726,7 +726,7 @@ int render_mesh(const Mesh& mesh, const CommandOptions& options,
                 std::chrono::steady_clock::time_point start, std::ostream& out, std::ostream& err) {
     if (mesh.element_count() == 0) {
         err << "sxk: " << options.input << ": the mesh has no elements to draw\n";
-        return 1;
+        return cli::exit_refused;
     }
     Drawing drawing = mesh_drawing(mesh, options);
     return draw(options, drawing, mesh.ambient_dimension() == 2, seconds_since(start), out, err);
@@ -748,28 +748,28 @@ public:
         if (!patches && !format_from_extension(options->input)) {
             err << "sxk: " << options->input << ":0: unknown input format (known: .bpt "
                 << known_mesh_extensions() << ")\n";
-            return 2;
+            return cli::exit_usage;
         }
         if (refuse_options_for(*options, patches, err) || !check_output(options->output, err))
-            return 2;
+            return cli::exit_usage;
         const auto start = std::chrono::steady_clock::now();
         try {
             if (patches) {
                 std::optional<Drawing> drawing = patch_drawing(*options, err);
                 if (!drawing)
-                    return 2;
+                    return cli::exit_usage;
                 return draw(*options, *drawing, false, seconds_since(start), out, err);
             }
             const std::optional<Mesh> mesh = load_mesh_for_command(options->input, err, options->reading);
             if (!mesh)
-                return 2;
+                return cli::exit_usage;
             return render_mesh(*mesh, *options, start, out, err);
         } catch (const std::bad_alloc&) {
             err << "sxk: " << options->input << ": out of memory while rendering\n";
         } catch (const std::exception& error) {
             err << "sxk: " << options->input << ": " << error.what() << '\n';
         }
-        return 1;
+        return cli::exit_refused;
     }
 
     bool accepts_mesh() const override { return true; }
@@ -781,13 +781,13 @@ public:
             return code;
         options->input = mesh_name;
         if (refuse_options_for(*options, false, err) || !check_output(options->output, err))
-            return 2;
+            return cli::exit_usage;
         try {
             return render_mesh(mesh, *options, std::chrono::steady_clock::now(), out, err);
         } catch (const std::exception& error) {
             err << "sxk: " << options->input << ": " << error.what() << '\n';
         }
-        return 1;
+        return cli::exit_refused;
     }
 };
 

@@ -255,11 +255,11 @@ public:
             return code;
         if (const auto unknown = unknown_output_format(options->output)) {
             err << "sxk: " << *unknown << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         std::optional<Mesh> mesh = load_mesh_for_command(options->input, err, options->reading);
         if (!mesh)
-            return 2;
+            return cli::exit_usage;
 
         // a spinner with the pass and its count while it works (nothing unless stderr is a
         // terminal), gone before the report
@@ -276,7 +276,7 @@ public:
         }();
         if (!report) {
             err << "sxk: " << options->input << ": " << report.reason() << '\n';
-            return 1;
+            return cli::exit_refused;
         }
         // remove_degeneracies edits by checked transactions only; the writer's validation is
         // the oracle that keeps a broken or empty mesh from being written
@@ -284,10 +284,10 @@ public:
         WriteOptions writing;
         writing.drop_unused_vertices = true;
         if (!save_mesh_for_command(*mesh, options->output, err, writing))
-            return 1;
+            return cli::exit_refused;
 
         print_result(*mesh, *options, *report, options->input + " -> " + options->output, out);
-        return 0;
+        return cli::exit_success;
     }
 
     // The removal on a mesh the application holds: one step of its journal when it has one.
@@ -302,10 +302,10 @@ public:
         const Outcome<Report> report = remove_degeneracies(mesh, options->removal);
         if (!report) {
             err << "sxk: " << mesh_name << ": " << report.reason() << '\n';
-            return 1;
+            return cli::exit_refused;
         }
         print_result(mesh, *options, *report, std::string(mesh_name), out);
-        return 0;
+        return cli::exit_success;
     }
 
 private:

@@ -127,7 +127,7 @@ public:
 
         if (const auto unknown = unknown_output_format(options.output)) {
             err << "sxk: " << *unknown << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         ToolPath path;
         try {
@@ -135,27 +135,27 @@ public:
             path = read_tool_path(options.path, columns);
         } catch (const InputError& error) {
             err << "sxk: " << error.what() << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         std::optional<Mesh> mesh = load_mesh_for_command(options.input, err, options.reading);
-        if (!mesh) return 2;
+        if (!mesh) return cli::exit_usage;
         const bool surface = mesh->topological_dimension() == 2 && mesh->ambient_dimension() == 3;
         const std::size_t first_line = path.samples.front().line;
         if (path.columns == 6 && !surface) {
             err << "sxk: " << options.path << ':' << first_line
                 << ": a line scalpel ('time hx hy hz tx ty tz') cuts triangle surfaces in space (thesis 5.3); "
                 << options.input << " is not one (planar cuts take 'time x y')\n";
-            return 2;
+            return cli::exit_usage;
         }
         if (path.columns == 2 && surface) {
             err << "sxk: " << options.path << ':' << first_line << ": a point scalpel ('time x y') cuts planar meshes; "
                 << options.input << " is a surface in space, cut by a line scalpel ('time hx hy hz tx ty tz')\n";
-            return 2;
+            return cli::exit_usage;
         }
         if (surface && !options.svg.empty()) {
             err << "sxk: --svg draws planar cuts; draw a surface's cut with 'sxk render " << options.output
                 << " PICTURE.png'\n";
-            return 2;
+            return cli::exit_usage;
         }
         // every file this command writes, checked before the cut: OUT is not replaced when a
         // picture cannot be written after it, and no picture overwrites the input or OUT
@@ -178,7 +178,7 @@ public:
             auto made = SurfaceCutSession::make(*mesh, options.cut);
             if (!made) {
                 err << "sxk: " << options.input << ":0: " << made.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             SurfaceCutSession* cutter = made->get();
             h = cutter->mean_edge();
@@ -198,7 +198,7 @@ public:
             auto made = PlanarCutSession::make(*mesh, options.cut);
             if (!made) {
                 err << "sxk: " << options.input << ":0: " << made.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             PlanarCutSession* cutter = made->get();
             h = cutter->mean_edge();
@@ -217,7 +217,7 @@ public:
         for (const ToolSample& sample : path.samples)
             if (const auto far = too_far(sample)) {
                 err << "sxk: " << options.path << ':' << sample.line << ": " << *far << '\n';
-                return 2;
+                return cli::exit_usage;
             }
         // --frames, --series: pictures by piece with the scalpel, and the series' files written as OUT is
         WriteOptions writing;
@@ -227,14 +227,14 @@ public:
             {"cut delaunay", path.samples.size(),
              bezier::Colouring::piece, options.cut.cut_label, {}, writing},
             err);
-        if (!recording) return 2;
+        if (!recording) return cli::exit_usage;
         // the scalpel at a sample: a blade from handle to tip (surfaces), a point (planar cuts)
         const auto scalpel_at = [surface](const ToolSample& sample) {
             const auto& v = sample.values;
             return surface ? std::vector<Point>{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}}
                            : std::vector<Point>{{v[0], v[1], 0}};
         };
-        if (!recording->step(*mesh, 0, path.samples.front().time, scalpel_at(path.samples.front()), err)) return 1;
+        if (!recording->step(*mesh, 0, path.samples.front().time, scalpel_at(path.samples.front()), err)) return cli::exit_refused;
         std::vector<ReplayedStep> steps;
         std::size_t entries = 0;
         double seconds = 0;  // the cut's, without the pictures and files recorded
@@ -243,27 +243,27 @@ public:
             if (auto stepped = step(sample); !stepped) {
                 err << "sxk: " << options.path << ':' << sample.line
                     << ": the step was refused (the mesh is as before it): " << stepped.reason() << '\n';
-                return 1;
+                return cli::exit_refused;
             }
             seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             steps.push_back({sample.time, sample.line, last()});
             entries += steps.back().report.entries;
-            if (!recording->step(*mesh, steps.size(), sample.time, scalpel_at(sample), err)) return 1;
+            if (!recording->step(*mesh, steps.size(), sample.time, scalpel_at(sample), err)) return cli::exit_refused;
         }
         if (entries == 0) {
             err << "sxk: " << options.path << ':' << first_line
                 << (surface ? ": the blade never enters the surface (no movement meets an edge or takes the tip "
                               "through a triangle)\n"
                             : ": the scalpel never enters the mesh (no movement crosses its boundary inwards)\n");
-            return 2;
+            return cli::exit_usage;
         }
-        if (!recording->finish(*mesh, err)) return 1;
+        if (!recording->finish(*mesh, err)) return cli::exit_refused;
         const auto undoing = undo_steps(*session, options.undo, "cut delaunay", err);
         if (const int* code = std::get_if<int>(&undoing)) return *code;
         const std::size_t undone = std::get<std::size_t>(undoing);
         session->end();
 
-        if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
+        if (!save_mesh_for_command(*mesh, options.output, err, writing)) return cli::exit_refused;
         const AngleCounts angles_before = triangle_angle_degrees(before), angles_after = triangle_angle_degrees(*mesh);
         const IncisionDistance incision = surface ? incision_distance(*mesh, blades, options.cut.cut_label)
                                                   : incision_distance(*mesh, scalpel, options.cut.cut_label);
@@ -292,7 +292,7 @@ public:
             }
         } catch (const std::exception& error) {
             err << "sxk: " << write_error_line(writing_now, error) << '\n';
-            return 1;
+            return cli::exit_refused;
         }
         const auto growth =
             static_cast<long long>(mesh->element_count()) - static_cast<long long>(before.element_count());
@@ -337,7 +337,7 @@ public:
             json["incision_mean"] = incision.mean / h;
             json["seconds"] = seconds;
             out << json.dump(2) << '\n';
-            return 0;
+            return cli::exit_success;
         }
         char line[160];
         out << method_name(options.cut.method) << " cut of " << options.input << " along " << options.path << " ("
@@ -369,7 +369,7 @@ public:
         out << line;
         std::snprintf(line, sizeof line, "  %.1f ms in all, slowest step %.3f ms\n", seconds * 1e3, slowest * 1e3);
         out << line << options.input << " -> " << options.output << '\n';
-        return 0;
+        return cli::exit_success;
     }
 
 private:

@@ -78,27 +78,27 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
     const Outcome<Options> setup = cli::body_options(o.body);
     if (!setup) {
         err << "sxk: " << setup.reason() << '\n';
-        return 2;
+        return cli::exit_usage;
     }
     if (auto checked = check_body(*setup); !checked) {
         err << "sxk: " << checked.reason() << '\n';
-        return 2;
+        return cli::exit_usage;
     }
     if (const auto unknown = unknown_output_format(o.output)) {
         err << "sxk: " << *unknown << '\n';
-        return 2;
+        return cli::exit_usage;
     }
     if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {
         err << "sxk: deform: --plot " << o.plot << ": the plot is a PNG picture; name it *.png\n";
-        return 2;
+        return cli::exit_usage;
     }
     std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
     if (!mesh)
-        return 2;
+        return cli::exit_usage;
     Outcome<BuiltBody> built = build_body(*mesh, o.input, *setup);
     if (!built) {
         err << "sxk: " << built.reason() << '\n';
-        return 2;
+        return cli::exit_usage;
     }
     ElasticBody* body = built->body.get();
     const bool planar = built->planar;
@@ -142,7 +142,7 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
                 json["history"] = solved->history;
             out << json.dump(2) << '\n';
         }
-        return 1;
+        return cli::exit_refused;
     };
     const auto report =
         solve(*body, {.tolerance = o.body.tolerance,
@@ -176,7 +176,7 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
             pictures::write_png(o.plot, pictures::draw(plot));
         } catch (const std::exception& e) {
             err << "sxk: " << e.what() << '\n';
-            return 1;
+            return cli::exit_refused;
         }
     }
     if (!report->converged) {
@@ -190,7 +190,7 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
         return refuse(refusal.reason, &*report, &refusal);
     }
     if (!save_mesh_for_command(*mesh, o.output, err))
-        return 1;
+        return cli::exit_refused;
 
     VertexId largest = 0;
     double largest_norm = -1;
@@ -217,7 +217,7 @@ int DeformCommand::run(std::span<const std::string> args, std::ostream& out, std
             << report->energy << ", " << report->seconds << " s\n"
             << "largest displacement " << largest_norm << " at vertex " << largest << '\n';
     }
-    return 0;
+    return cli::exit_success;
 }
 
 }  // namespace sxk::elasticity

@@ -116,11 +116,11 @@ public:
 
         if (const auto unknown = unknown_output_format(o.output)) {
             err << "sxk: " << *unknown << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         if (!o.plot.empty() && std::filesystem::path(o.plot).extension() != ".png") {
             err << "sxk: needle: --plot " << o.plot << ": the plot is a PNG picture; name it *.png\n";
-            return 2;
+            return cli::exit_usage;
         }
         ToolPath path;
         try {
@@ -128,28 +128,28 @@ public:
             path = read_tool_path(o.path, columns);
         } catch (const InputError& error) {
             err << "sxk: " << error.what() << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         std::optional<Mesh> mesh = load_mesh_for_command(o.input, err, o.reading);
-        if (!mesh) return 2;
+        if (!mesh) return cli::exit_usage;
         const bool planar = mesh->topological_dimension() == 2 && mesh->ambient_dimension() == 2;
         const bool solid = mesh->topological_dimension() == 3 && mesh->ambient_dimension() == 3;
         if (!planar && !solid) {
             err << "sxk: " << o.input << ":0: the needle goes into triangle meshes in the plane or tetrahedral "
                 << "meshes\n";
-            return 2;
+            return cli::exit_usage;
         }
         if ((path.columns == 4) != planar) {
             err << "sxk: " << o.path << ':' << path.samples.front().line << ": a "
                 << (path.columns == 4 ? "2D needle path (time bx by tx ty)" : "3D needle path (time bx by bz tx ty tz)")
                 << " does not fit " << o.input << ", a " << (planar ? "planar triangle" : "tetrahedral") << " mesh\n";
-            return 2;
+            return cli::exit_usage;
         }
         for (const ToolSample& sample : path.samples) {
             const int half = path.columns / 2;
             if (std::equal(sample.values.begin(), sample.values.begin() + half, sample.values.begin() + half)) {
                 err << "sxk: " << o.path << ':' << sample.line << ": the needle has zero length (base = tip)\n";
-                return 2;
+                return cli::exit_usage;
             }
         }
         // the refinement the options imply, estimated before any of it is done (refinement_budget.hpp)
@@ -163,7 +163,7 @@ public:
                               "more than the limit of %.0f; take a larger --h-start\n",
                               *o.h_start, o.input.c_str(), start, refinement_element_limit);
                 err << line;
-                return 2;
+                return cli::exit_usage;
             }
             std::vector<Point> tips;
             for (const ToolSample& sample : path.samples) {
@@ -183,7 +183,7 @@ public:
                               o.needle.h_ref, radius, start + along, refinement_element_limit,
                               o.needle.radius > 0 ? " or a smaller --radius" : "");
                 err << line;
-                return 2;
+                return cli::exit_usage;
             }
         }
         Replay record;
@@ -191,7 +191,7 @@ public:
             auto refined = refine_uniformly(*mesh, *o.h_start);
             if (!refined) {
                 err << "sxk: " << o.input << ":0: --h-start: " << refined.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             record.start_bisections = *refined;
         }
@@ -202,23 +202,23 @@ public:
                                                 Refusal{RefusalCode::not_found, "no plug-in host"});
             if (!elasticity) {
                 err << "sxk: needle: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
-                return 2;
+                return cli::exit_usage;
             }
             const Outcome<elasticity::Options> body = cli::body_options(words_of(o.deform));
             if (!body) {
                 err << "sxk: needle: --deform: " << body.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             auto made = (*elasticity)->simulate(*mesh, *body);
             if (!made) {
                 err << "sxk: needle: --deform: " << made.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             simulation = std::move(*made);
             auto settled = simulation->relax(std::numeric_limits<std::size_t>::max());
             if (!settled) {
                 err << "sxk: needle: --deform: " << settled.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
         } else {
             err << "sxk: note: no --deform: geometry only (the mesh is refined and needle nodes are tracked; "
@@ -227,7 +227,7 @@ public:
         auto session = NeedleSession::make(*mesh, o.needle, simulation.get());
         if (!session) {
             err << "sxk: " << o.input << ":0: " << session.reason() << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         // --frames: a planar mesh drawn with its needle (planar_picture.hpp), a tetrahedral one by the
         // renderer; one view for every picture, framing the body before the first step
@@ -244,14 +244,14 @@ public:
         auto recording = ToolRecording::open(m_host, *mesh, o.recording,
                                              {"needle", steps, bezier::Colouring::piece, 9999, planar_drawer, {}},
                                              err);
-        if (!recording) return 2;
+        if (!recording) return cli::exit_usage;
         // the needle at a sample: base to tip
         const auto shaft = [planar](const ToolSample& sample) {
             const auto& v = sample.values;
             return planar ? std::vector<Point>{{v[0], v[1], 0}, {v[2], v[3], 0}}
                           : std::vector<Point>{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
         };
-        if (!recording->step(*mesh, 0, path.samples.front().time, {}, err)) return 1;
+        if (!recording->step(*mesh, 0, path.samples.front().time, {}, err)) return cli::exit_refused;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -264,21 +264,21 @@ public:
             if (!stepped) {
                 err << "sxk: " << o.path << ':' << sample.line << ": the step was refused (the mesh is as before it): "
                     << stepped.reason() << '\n';
-                return 1;
+                return cli::exit_refused;
             }
             record.steps.push_back({sample.time, sample.line, *stepped});
-            if (!recording->step(*mesh, record.steps.size(), sample.time, shaft(sample), err)) return 1;
+            if (!recording->step(*mesh, record.steps.size(), sample.time, shaft(sample), err)) return cli::exit_refused;
         }
         if (o.settle > 0 && (*session)->needle()) {
             const auto settled = (*session)->settle(o.settle);
             if (!settled) {
                 err << "sxk: needle: --settle: the step was refused (the mesh is as before it): " << settled.reason()
                     << '\n';
-                return 1;
+                return cli::exit_refused;
             }
             record.steps.push_back({path.samples.back().time, path.samples.back().line, *settled});
             if (!recording->step(*mesh, record.steps.size(), path.samples.back().time, shaft(path.samples.back()), err))
-                return 1;
+                return cli::exit_refused;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) {
@@ -286,24 +286,24 @@ public:
                          })) {
             err << "sxk: " << o.path << ':' << path.samples.front().line
                 << ": the needle never meets the mesh (its tip is never inside)\n";
-            return 2;
+            return cli::exit_usage;
         }
         if (!o.plot.empty()) {
             try {
                 draw_profile(o.plot, **session);
             } catch (const std::exception& error) {
                 err << "sxk: needle: --plot " << o.plot << ": " << error.what() << '\n';
-                return 1;
+                return cli::exit_refused;
             }
         }
-        if (!recording->finish(*mesh, err)) return 1;
+        if (!recording->finish(*mesh, err)) return cli::exit_refused;
         const auto undone = undo_steps(**session, o.undo, "needle", err);
         if (const int* code = std::get_if<int>(&undone)) return *code;
         record.undone = std::get<std::size_t>(undone);
         (*session)->end();
         record.elements_after = mesh->element_count();
         record.vertices_after = mesh->vertices_in_elements();
-        if (!save_mesh_for_command(*mesh, o.output, err)) return 1;
+        if (!save_mesh_for_command(*mesh, o.output, err)) return cli::exit_refused;
         if (o.json) {
             nlohmann::ordered_json json;
             json["file"] = o.input;
@@ -319,7 +319,7 @@ public:
             print_replay(out, record);
             out << o.input << " -> " << o.output << '\n';
         }
-        return 0;
+        return cli::exit_success;
     }
 
 private:

@@ -123,7 +123,7 @@ public:
         // --deform (or --far without --local) they were once ignored in silence (issue 47)
         auto usage = [&err](const std::string& what) {
             err << "sxk: cut snap: " << what << "\nRun 'sxk cut snap --help' for more information.\n";
-            return 2;
+            return cli::exit_usage;
         };
         if (options.deform.empty())
             for (const char* relaxing : {"--relax-iterations", "--local", "--far"})
@@ -135,7 +135,7 @@ public:
 
         if (const auto unknown = unknown_output_format(options.output)) {
             err << "sxk: " << *unknown << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         // the path's steps: scalpel samples, or swept triangles (an .obj)
         struct Move {
@@ -160,13 +160,13 @@ public:
             }
         } catch (const InputError& error) {
             err << "sxk: " << error.what() << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         std::optional<Mesh> mesh = load_mesh_for_command(options.input, err, options.reading);
-        if (!mesh) return 2;
+        if (!mesh) return cli::exit_usage;
         if (mesh->topological_dimension() != 3 || mesh->ambient_dimension() != 3) {
             err << "sxk: " << options.input << ":0: the snap cutter cuts tetrahedral meshes in space\n";
-            return 2;
+            return cli::exit_usage;
         }
         CutServices services = services_from(m_host);
         if (options.cut.remove_degeneracies && services.degeneracy == nullptr)
@@ -180,17 +180,17 @@ public:
                                                 Refusal{RefusalCode::not_found, "no plug-in host"});
             if (!elasticity) {
                 err << "sxk: cut snap: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
-                return 2;
+                return cli::exit_usage;
             }
             const Outcome<elasticity::Options> body = cli::body_options(words_of(options.deform));
             if (!body) {
                 err << "sxk: cut snap: --deform: " << body.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             auto made = (*elasticity)->simulate(*mesh, *body);
             if (!made) {
                 err << "sxk: cut snap: --deform: " << made.reason() << '\n';
-                return 2;
+                return cli::exit_usage;
             }
             simulation = std::move(*made);
             record.deformed = true;
@@ -212,7 +212,7 @@ public:
             if (record.initial_refusal) {
                 err << "sxk: cut snap: --deform: " << record.initial_refusal->reason << "; nothing cut or written\n";
                 if (options.json) print_json(out, options, services, record);
-                return 1;
+                return cli::exit_refused;
             }
             if (!settled->converged)
                 err << "sxk: warning: --deform: CG did not converge before the cut (|r| = " << settled->residual
@@ -222,7 +222,7 @@ public:
         auto session = SnapCutSession::make(*mesh, options.cut, services);
         if (!session) {
             err << "sxk: " << options.input << ":0: " << session.reason() << '\n';
-            return 2;
+            return cli::exit_usage;
         }
         // --frames, --series: pictures by piece with the blade, and the series' files written as OUT is
         WriteOptions writing;
@@ -231,13 +231,13 @@ public:
             m_host, *mesh, options.recording,
             {"cut snap", path.size(), bezier::Colouring::piece, options.cut.cut_label, {}, writing},
             err);
-        if (!recording) return 2;
+        if (!recording) return cli::exit_usage;
         // the blade at a step: the scalpel from handle to tip, or the swept triangle
         const auto blade = [](const Move& move) {
             return move.triangle ? std::vector<Point>{move.triangle->a, move.triangle->b, move.triangle->c}
                                  : std::vector<Point>{move.scalpel.handle, move.scalpel.tip};
         };
-        if (!recording->step(*mesh, 0, path.front().time, blade(path.front()), err)) return 1;
+        if (!recording->step(*mesh, 0, path.front().time, blade(path.front()), err)) return cli::exit_refused;
 
         record.elements_before = mesh->element_count();
         record.vertices_before = mesh->vertices_in_elements();
@@ -248,18 +248,18 @@ public:
             if (!stepped) {
                 err << "sxk: " << options.path << ':' << move.line << ": the step was refused (the mesh is as "
                     << "before it): " << stepped.reason() << '\n';
-                return 1;
+                return cli::exit_refused;
             }
             record.steps.push_back({move.time, move.line, (*session)->last_step()});
-            if (!recording->step(*mesh, record.steps.size(), move.time, blade(move), err)) return 1;
+            if (!recording->step(*mesh, record.steps.size(), move.time, blade(move), err)) return cli::exit_refused;
         }
         if (std::none_of(record.steps.begin(), record.steps.end(),
                          [](const ReplayStep& step) { return step.report.edges_hit > 0; })) {
             err << "sxk: " << options.path << ':' << path.front().line
                 << ": the scalpel never meets the mesh (no sweep crosses an edge)\n";
-            return 2;
+            return cli::exit_usage;
         }
-        if (!recording->finish(*mesh, err)) return 1;
+        if (!recording->finish(*mesh, err)) return cli::exit_refused;
         const auto undone = undo_steps(**session, options.undo, "cut snap", err);
         if (const int* code = std::get_if<int>(&undone)) return *code;
         record.undone = std::get<std::size_t>(undone);
@@ -271,13 +271,13 @@ public:
             for (VertexId v = 0; v < all.size(); ++v) all[v] = v;
             if (auto back = mesh->move_vertices(all, unloaded, PositionSet::deformed); !back) {
                 err << "sxk: cut snap: --undo: " << back.reason() << '\n';
-                return 1;
+                return cli::exit_refused;
             }
         }
         record.elements_after = mesh->element_count();
         record.vertices_after = mesh->vertices_in_elements();
 
-        if (!save_mesh_for_command(*mesh, options.output, err, writing)) return 1;
+        if (!save_mesh_for_command(*mesh, options.output, err, writing)) return cli::exit_refused;
         warn_unshown_relaxations(err, record);
         if (options.json) {
             print_json(out, options, services, record);
@@ -285,7 +285,7 @@ public:
             print_replay(out, record);
             out << options.input << " -> " << options.output << '\n';
         }
-        return 0;
+        return cli::exit_success;
     }
 
 private:

@@ -158,9 +158,9 @@ public:
         const std::optional<Options> options = parse(args, true, out, err, code);
         if (!options) return code;
         const std::optional<Mesh> mesh = load_mesh_for_command(options->mesh, err, options->reading);
-        if (!mesh) return 2;
+        if (!mesh) return cli::exit_usage;
         print(out, *options, *mesh, quality_histograms(*mesh, options->bins));
-        return 0;
+        return cli::exit_success;
     }
 
     bool accepts_mesh() const override { return true; }
@@ -171,7 +171,7 @@ public:
         if (!options) return code;
         options->mesh = mesh_name;
         print(out, *options, mesh, quality_histograms(mesh, options->bins));
-        return 0;
+        return cli::exit_success;
     }
 };
 

@@ -67,7 +67,7 @@ TEST(SxkPinched, PluginsCommandHasNoStrict) {
 TEST(SxkPinched, ValidateJudgesTheFileAsItIs) {
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"validate", pinched.string()},
-          std::vector<std::string>{"validate", "--strict", pinched.string()}}) {
+          std::vector<std::string>{"validate", "--flat-invalid", pinched.string()}}) {
         const ProcessResult run = sxk(args);
         EXPECT_EQ(run.exit_code, 1) << run.err;
         EXPECT_EQ(run.out, pinched.string() +

@@ -77,9 +77,11 @@ private:
 };
 
 // Runs `program args...`. The child gets this process's environment without SXK_PLUGIN_PATH,
-// plus `environment` (a value of std::nullopt removes the variable).
+// plus `environment` (a value of std::nullopt removes the variable), and `input` as its standard
+// input.
 inline ProcessResult run_program(const std::string& program, const std::vector<std::string>& args,
-                       const std::map<std::string, std::optional<std::string>>& environment = {}) {
+                       const std::map<std::string, std::optional<std::string>>& environment = {},
+                       const fs::path& input = "/dev/null") {
     ScratchFolder capture;
     const fs::path out_file = capture / "stdout", err_file = capture / "stderr";
 
@@ -102,7 +104,7 @@ inline ProcessResult run_program(const std::string& program, const std::vector<s
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, input.c_str(), O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     pid_t pid = 0;
@@ -122,8 +124,9 @@ inline ProcessResult run_program(const std::string& program, const std::vector<s
 }
 
 inline ProcessResult sxk(const std::vector<std::string>& args,
-               const std::map<std::string, std::optional<std::string>>& environment = {}) {
-    return run_program(SXK_EXE, args, environment);
+               const std::map<std::string, std::optional<std::string>>& environment = {},
+               const fs::path& input = "/dev/null") {
+    return run_program(SXK_EXE, args, environment, input);
 }
 
 // ---- hand-drawn meshes (Medit .mesh) ----------------------------------------------------------

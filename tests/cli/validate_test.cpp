@@ -91,16 +91,41 @@ TEST(SxkValidate, InvertedElementIsInvalid) {
     EXPECT_EQ(run.err, "");
 }
 
-TEST(SxkValidate, FlatElementIsReportedAndInvalidWithStrict) {
+TEST(SxkValidate, FlatElementIsReportedAndInvalidWithFlatInvalid) {
     ScratchFolder folder;
     const fs::path mesh = folder / "flat.mesh";
     write_file(mesh, flat_tetrahedron_mesh);
     const ProcessResult run = sxk({"validate", mesh.string()});
     EXPECT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_EQ(run.out, mesh.string() + ": valid (5 vertices, 2 tetrahedra); 1 flat element, first element 1 (--strict: invalid)\n");
-    const ProcessResult strict = sxk({"validate", mesh.string(), "--strict"});
-    EXPECT_EQ(strict.exit_code, 1) << strict.err;
-    EXPECT_EQ(strict.out, mesh.string() + ": invalid: element 1 is flat in the reference positions\n");
+    EXPECT_EQ(run.out, mesh.string() +
+                           ": valid (5 vertices, 2 tetrahedra); 1 flat element, first element 1 (--flat-invalid: invalid)\n");
+    const ProcessResult flat = sxk({"validate", mesh.string(), "--flat-invalid"});
+    EXPECT_EQ(flat.exit_code, 1) << flat.err;
+    EXPECT_EQ(flat.out, mesh.string() + ": invalid: element 1 is flat in the reference positions\n");
+    const ProcessResult json = sxk({"validate", mesh.string(), "--flat-invalid", "--json"});
+    EXPECT_EQ(json.exit_code, 1) << json.err;
+    EXPECT_EQ(json.out, "{\n  \"file\": \"" + mesh.string() +
+                            "\",\n  \"valid\": false,\n  \"vertices\": 5,\n  \"elements\": 2,\n  \"element_kind\": "
+                            "\"tetrahedron\",\n  \"refusal\": {\n    \"code\": \"invalid_mesh\",\n    \"reason\": "
+                            "\"element 1 is flat in the reference positions\"\n  }\n}\n");
+    const ProcessResult valid = sxk({"validate", mesh.string(), "--json"});
+    EXPECT_EQ(valid.exit_code, 0) << valid.err;
+    EXPECT_EQ(valid.out, "{\n  \"file\": \"" + mesh.string() +
+                             "\",\n  \"valid\": true,\n  \"vertices\": 5,\n  \"elements\": 2,\n  \"element_kind\": "
+                             "\"tetrahedron\",\n  \"flat\": 1,\n  \"first_flat\": 1\n}\n");
+}
+
+// --strict means one thing everywhere (refuse what the readers repair); validate repairs nothing.
+TEST(SxkValidate, StrictIsNotValidatesAndSaysWhatIs) {
+    ScratchFolder folder;
+    const fs::path mesh = folder / "flat.mesh";
+    write_file(mesh, flat_tetrahedron_mesh);
+    const ProcessResult run = sxk({"validate", mesh.string(), "--strict"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(run.out, "");
+    EXPECT_EQ(run.err, "sxk: validate: --strict: validate repairs nothing (the file is judged as it is); flat "
+                       "elements are made invalid by --flat-invalid\nRun 'sxk validate --help' for more "
+                       "information.\n");
 }
 
 TEST(SxkValidate, UnreadableExitsTwo) {

@@ -257,7 +257,8 @@ TEST(Readers, MissingFileAndFolder) {
         FAIL();
     } catch (const InputError& error) {
         EXPECT_EQ(error.line(), 0u);
-        EXPECT_EQ(error.reason(), "unknown mesh file extension ''");
+        EXPECT_EQ(error.reason(),
+                  "unknown mesh file extension '' (known: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply)");
     }
     const auto dir = test::scratch_dir();
     std::filesystem::create_directories(dir / "folder.mesh");

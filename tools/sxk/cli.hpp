@@ -12,17 +12,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "command_line.hpp"  // plugins/: number_in and the other checks of numeric options
+#include "command_line.hpp"  // the command-line library: exit codes, number checks, reading and writing
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/plugin_host.hpp"
 
 namespace sxk::cli {
-
-// Exit codes everywhere (docs/cli.md "Exit codes and messages").
-inline constexpr int exit_success = 0;
-inline constexpr int exit_refused = 1;  // operation refused or result invalid
-inline constexpr int exit_usage = 2;    // usage or input error
 
 struct Context {
     std::ostream& out;
@@ -36,7 +31,19 @@ struct Context {
     // --strict, which main.cpp gives every command that reads a mesh: load_mesh refuses pinched
     // vertices instead of splitting them (ReadOptions::split_pinched).
     bool strict = false;
+    // --format, which main.cpp gives every command that reads or writes a mesh: the format of a
+    // mesh read from standard input or written to standard output (the file name "-").
+    std::string format = {};
+    // A mesh went to standard output: what the command reports goes to `err` instead (report()).
+    bool out_taken = false;
+
+    // Where the command's report goes: `out`, unless standard output carries the mesh.
+    std::ostream& report() { return out_taken ? err : out; }
 };
+
+// The message for a mesh file name that names no format: "-" without --format, or an unknown
+// extension ("FILE:0: unknown output format (known: ...)"); nullopt when the format is known.
+std::optional<std::string> unknown_format(const Context& context, const std::string& file, bool output);
 
 void add_info_command(CLI::App& app, Context& context);
 void add_validate_command(CLI::App& app, Context& context);
@@ -50,7 +57,8 @@ void add_refine_command(CLI::App& app, Context& context);
 void add_locate_command(CLI::App& app, Context& context);
 void add_generate_command(CLI::App& app, Context& context);
 
-// Reads a mesh under a progress indicator. On failure prints "sxk: FILE:LINE: reason" to
+// Reads a mesh under a progress indicator ("-": standard input, in context.format). On failure
+// prints "sxk: FILE:LINE: reason" to
 // context.err, sets context.exit_code to 2 and returns nullopt. What the reader repaired is said
 // on context.err ("sxk: warning: FILE: split 2 pinched vertices into 4 (--strict refuses
 // them)", Medit faces listed again with another reference); context.strict refuses pinched
@@ -58,7 +66,8 @@ void add_generate_command(CLI::App& app, Context& context);
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options = {},
                               ReadReport* report = nullptr);
 
-// Writes a mesh under a progress indicator, atomically, and only when it has elements and
+// Writes a mesh under a progress indicator ("-": standard output, in context.format, and the
+// command's report goes to standard error), atomically, and only when it has elements and
 // validates with the orientation check (WriteOptions::refuse_invalid). On failure prints
 // "sxk: FILE:0: reason" to context.err and returns false (the caller exits with exit_refused:
 // the mesh was read, the writer refused it; an existing FILE is left as it was).

@@ -1,7 +1,11 @@
-// sxk convert IN OUT [--reorient] [--reorder] [--gmsh-version 22|41] [--encoding E]: the formats
-// follow the extensions; --reorder renumbers the vertices by reverse Cuthill-McKee and orders the elements by
-// their lowest vertex before writing.
+// sxk convert IN OUT [--reorient] [--reorder] [--gmsh-version 22|41] [--encoding E] [--json]: the
+// formats follow the extensions; --reorder renumbers the vertices by reverse Cuthill-McKee and
+// orders the elements by their lowest vertex before writing. What is reported is what OUT holds: a
+// tetrahedral mesh written to a format of triangles (.off .obj .stl .ply) is its boundary surface.
 #include <memory>
+#include <set>
+
+#include <nlohmann/json.hpp>
 
 #include "cli.hpp"
 #include "progress.hpp"
@@ -17,16 +21,36 @@ struct ConvertOptions {
     bool reorder = false;
     int gmsh_version = 41;
     std::string encoding = "standard";
+    bool json = false;
 };
+
+// What a file of `format` holds of `mesh`: the vertices and elements, or for a tetrahedral mesh in
+// a format of triangles its boundary surface's vertices and triangles.
+struct Written {
+    std::size_t vertices = 0, elements = 0;
+    bool surface = false;  // the boundary of the tetrahedra
+};
+
+Written written_of(const Mesh& mesh, Format format) {
+    const bool triangles_only =
+        format == Format::off || format == Format::obj || format == Format::stl || format == Format::ply;
+    if (!triangles_only || mesh.topological_dimension() != 3) return {mesh.vertex_count(), mesh.element_count(), false};
+    const std::vector<FaceId> boundary = mesh.boundary_faces();
+    std::set<VertexId> on_boundary;
+    for (const FaceId f : boundary)
+        for (const VertexId v : mesh.face_simplex(f).vertices()) on_boundary.insert(v);
+    return {on_boundary.size(), boundary.size(), true};
+}
 
 int run_convert(Context& context, const ConvertOptions& options) {
     // refuse an unknown output format before spending time on the input
-    if (const auto unknown = unknown_output_format(options.output)) {
+    if (const auto unknown = unknown_format(context, options.output, true)) {
         context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
     // a format with one encoding would silently ignore the request
-    const Format format = *format_from_extension(options.output);
+    const Format format = *(options.output == "-" ? format_from_name(context.format)  // checked above
+                                                  : format_from_extension(options.output));
     const bool has_encodings = format == Format::gmsh || format == Format::vtu || format == Format::vtk ||
                                format == Format::stl || format == Format::ply;
     if (options.encoding == "binary" && !has_encodings) {
@@ -51,12 +75,35 @@ int run_convert(Context& context, const ConvertOptions& options) {
     write_options.gmsh_version = options.gmsh_version;
     write_options.encoding = *encoding_from_string(options.encoding);  // checked by CLI11
     if (!save_mesh(context, *mesh, options.output, write_options)) return exit_refused;
-    context.out << options.input << " -> " << options.output << ": " << mesh->vertex_count() << " vertices, "
-                << element_count_text(*mesh);
-    if (options.reorient) context.out << ", " << report.reoriented << " reoriented";
+    const Written written = written_of(*mesh, format);
+    if (options.json) {
+        nlohmann::ordered_json json;
+        json["input"] = options.input;
+        json["output"] = options.output;
+        json["format"] = to_string(format);
+        json["vertices"] = mesh->vertex_count();
+        json["elements"] = mesh->element_count();
+        json["element_kind"] = element_kind(*mesh);
+        json["written"] = {{"vertices", written.vertices},
+                           {"elements", written.elements},
+                           {"element_kind", written.surface ? "triangle" : element_kind(*mesh)},
+                           {"boundary_surface", written.surface}};
+        if (options.reorient) json["reoriented"] = report.reoriented;
+        if (options.reorder) json["bandwidth"] = {{"before", bandwidth_before}, {"after", vertex_bandwidth(*mesh)}};
+        context.report() << json.dump(2) << '\n';
+        return exit_success;
+    }
+    context.report() << options.input << " -> " << options.output << ": ";
+    if (written.surface)
+        context.report() << written.vertices << " vertices, " << written.elements
+                    << (written.elements == 1 ? " triangle" : " triangles") << " (the boundary of "
+                    << element_count_text(*mesh) << ")";
+    else
+        context.report() << mesh->vertex_count() << " vertices, " << element_count_text(*mesh);
+    if (options.reorient) context.report() << ", " << report.reoriented << " reoriented";
     if (options.reorder)
-        context.out << ", bandwidth " << bandwidth_before << " -> " << vertex_bandwidth(*mesh);
-    context.out << '\n';
+        context.report() << ", bandwidth " << bandwidth_before << " -> " << vertex_bandwidth(*mesh);
+    context.report() << '\n';
     return exit_success;
 }
 
@@ -80,6 +127,7 @@ void add_convert_command(CLI::App& app, Context& context) {
                      ".ply binary); ascii; binary (.msh file type 1, .vtu raw appended, .vtk big-endian)")
         ->check(CLI::IsMember({"standard", "ascii", "binary"}))
         ->capture_default_str();
+    command->add_flag("--json", options->json, "Print one JSON object instead of the summary line");
     command->callback([&context, options] { context.exit_code = run_convert(context, *options); });
 }
 

@@ -18,7 +18,7 @@ struct DelaunayFlipOptions {
 };
 
 int run_delaunay_flip(Context& context, const DelaunayFlipOptions& options) {
-    if (const auto unknown = unknown_output_format(options.output)) {
+    if (const auto unknown = unknown_format(context, options.output, true)) {
         context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
@@ -49,10 +49,10 @@ int run_delaunay_flip(Context& context, const DelaunayFlipOptions& options) {
         json["output"] = options.output;
         json["flips"] = *flips;
         json["elements"] = mesh->element_count();
-        context.out << json.dump(2) << '\n';
+        context.report() << json.dump(2) << '\n';
         return exit_success;
     }
-    context.out << options.input << " -> " << options.output << ": " << *flips
+    context.report() << options.input << " -> " << options.output << ": " << *flips
                 << (*flips == 1 ? " flip, " : " flips, ") << element_count_text(*mesh) << '\n';
     return exit_success;
 }

@@ -9,6 +9,8 @@
 #include <charconv>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.hpp"
 #include "progress.hpp"
 #include "sxk/components.hpp"
@@ -23,6 +25,7 @@ struct DissectCommand {
     std::string faces;
     int cut_label = default_cut_label;
     bool no_cut_label = false;
+    bool json = false;
 };
 
 struct FaceList {
@@ -57,7 +60,7 @@ std::optional<FaceList> read_faces(Context& context, const std::string& file, co
 }
 
 int run_dissect(Context& context, const DissectCommand& options) {
-    if (const auto unknown = unknown_output_format(options.output)) {
+    if (const auto unknown = unknown_format(context, options.output, true)) {
         context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
@@ -84,10 +87,24 @@ int run_dissect(Context& context, const DissectCommand& options) {
         return exit_refused;
     }
     if (!save_mesh(context, *mesh, options.output)) return exit_refused;
-    context.out << options.input << " -> " << options.output << ": " << list->faces.size() << " cut faces, "
+    const std::size_t components = connected_components(*mesh).count;
+    if (options.json) {
+        nlohmann::ordered_json json;
+        json["input"] = options.input;
+        json["output"] = options.output;
+        json["faces"] = options.faces;
+        json["cut_faces"] = list->faces.size();
+        json["new_vertices"] = result->new_vertices.size();
+        json["boundary_faces_on_cut"] = result->opened.size();
+        json["components"] = components;
+        json["vertices"] = mesh->vertex_count();
+        json["elements"] = mesh->element_count();
+        context.report() << json.dump(2) << '\n';
+        return exit_success;
+    }
+    context.report() << options.input << " -> " << options.output << ": " << list->faces.size() << " cut faces, "
                 << result->new_vertices.size() << " new vertices, " << result->opened.size()
-                << " boundary faces on the cut, " << connected_components(*mesh).count
-                << " components\n";
+                << " boundary faces on the cut, " << components << " components\n";
     return exit_success;
 }
 
@@ -108,6 +125,7 @@ void add_dissect_command(CLI::App& app, Context& context) {
         ->check(whole_number("LABEL"))
         ->capture_default_str();
     command->add_flag("--no-cut-label", options->no_cut_label, "Leave the faces the cut makes unlabelled");
+    command->add_flag("--json", options->json, "Print one JSON object instead of the summary line");
     command->callback([&context, options] { context.exit_code = run_dissect(context, *options); });
 }
 

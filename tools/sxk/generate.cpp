@@ -50,7 +50,7 @@ int write_generated(Context& context, const Outcome<Mesh>& mesh, const std::stri
         return exit_usage;
     }
     if (!save_mesh(context, *mesh, output)) return exit_refused;
-    context.out << output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
+    context.report() << output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
     return exit_success;
 }
 

@@ -1,3 +1,4 @@
+#include <iostream>
 #include <new>
 #include <sstream>
 
@@ -6,13 +7,55 @@
 
 namespace sxk::cli {
 
+namespace {
+
+// The formats a stream can carry: all but TetGen's set of files.
+std::string stream_formats() {
+    std::string names;
+    for (const Format format : {Format::medit, Format::gmsh, Format::off, Format::obj, Format::vtu, Format::vtk,
+                                Format::stl, Format::ply})
+        names += (names.empty() ? "" : ", ") + std::string(to_string(format));
+    return names;
+}
+
+// The format --format names for "-", or the message.
+std::variant<Format, std::string> stream_format(const Context& context, bool output) {
+    const char* stream = output ? "standard output" : "standard input";
+    if (context.format.empty())
+        return std::string("-:0: ") + stream + " needs --format (" + stream_formats() + ")";
+    const std::optional<Format> format = format_from_name(context.format);
+    if (!format || *format == Format::tetgen)
+        return "-:0: --format " + context.format + ": not a format " + stream + " can carry (" + stream_formats() + ")";
+    return *format;
+}
+
+}  // namespace
+
+std::optional<std::string> unknown_format(const Context& context, const std::string& file, bool output) {
+    if (file == "-") {
+        const auto format = stream_format(context, output);
+        if (const std::string* why = std::get_if<std::string>(&format)) return *why;
+        return std::nullopt;
+    }
+    return output ? unknown_output_format(file) : std::nullopt;  // an input's extension: the reader says
+}
+
 std::optional<Mesh> load_mesh(Context& context, const std::string& file, const ReadOptions& options,
                               ReadReport* report) {
     ReadOptions chosen = options;
     if (context.strict) chosen.split_pinched = chosen.drop_stray_faces = false;
     ReadReport own;
     if (!report) report = &own;
-    std::variant<Mesh, std::string> read = [&] {
+    std::variant<Mesh, std::string> read = [&]() -> std::variant<Mesh, std::string> {
+        if (file == "-") {
+            const auto format = stream_format(context, false);
+            if (const std::string* why = std::get_if<std::string>(&format)) return *why;
+            try {
+                return read_mesh(std::cin, std::get<Format>(format), "-", chosen, report);
+            } catch (const std::exception& error) {
+                return std::string(error.what());
+            }
+        }
         Progress progress("reading " + file);
         return try_read_mesh(file, chosen, *report);
     }();  // the progress line is gone before anything is printed
@@ -26,6 +69,23 @@ std::optional<Mesh> load_mesh(Context& context, const std::string& file, const R
 }
 
 bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options) {
+    if (file == "-") {
+        const auto format = stream_format(context, true);
+        if (const std::string* why = std::get_if<std::string>(&format)) {
+            context.err << "sxk: " << *why << '\n';
+            return false;
+        }
+        WriteOptions checked = options;
+        checked.refuse_invalid = true;
+        try {
+            write_mesh(mesh, context.out, std::get<Format>(format), "-", checked);
+        } catch (const std::exception& error) {
+            context.err << "sxk: " << write_error_line("-", error) << '\n';
+            return false;
+        }
+        context.out_taken = true;
+        return true;
+    }
     const std::optional<std::string> error = [&] {
         Progress progress("writing " + file);
         return try_write_mesh(mesh, file, options);

@@ -68,7 +68,26 @@ std::string plugin_footer(const Context& context) {
     return footer;
 }
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+// The names a mistyped command may have meant: the built-ins, `help`, and the plug-ins' commands
+// (their first words).
+std::vector<std::string> command_names(const Context& context) {
+    std::vector<std::string> names(builtin_commands.begin(), builtin_commands.end());
+    names.emplace_back("help");
+    for (const FoundCommand& found : context.plugin_commands) {
+        const std::string_view name = found.command->name();
+        names.emplace_back(name.substr(0, name.find(' ')));
+    }
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
+}
+
+int run(std::vector<std::string> args, std::ostream& out, std::ostream& err) {
+    // `sxk help [COMMAND...]`: what `sxk [COMMAND...] --help` prints
+    if (!args.empty() && args[0] == "help") {
+        args.erase(args.begin());
+        args.emplace_back("--help");
+    }
     Context context{out, err};
     PluginHost host;
     const bool needs_plugins = args.empty() || (args[0] != "--version" && !(is_builtin(args[0]) && args[0] != "plugins"));
@@ -85,7 +104,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     CLI::App app("simplexkit: simplicial meshes (triangles, tetrahedra) after Nienhuys' thesis ch. 7", "sxk");
     app.set_version_flag("--version", "sxk " SXK_VERSION);
     app.require_subcommand(1);
-    app.footer(plugin_footer(context));
+    app.footer("Run 'sxk help COMMAND' (or 'sxk COMMAND --help') for a command's options.\n" + plugin_footer(context));
     add_info_command(app, context);
     add_validate_command(app, context);
     add_convert_command(app, context);
@@ -103,13 +122,23 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     for (CLI::App* command : app.get_subcommands({}))
         if (command->get_name() != "plugins" && command->get_name() != "validate" && command->get_name() != "generate")
             command->add_flag("--strict", context.strict, strict_reading_help);
+    // One --format for every command that reads or writes a mesh: "-" as a file name is standard
+    // input or output, in this format.
+    for (CLI::App* command : app.get_subcommands({}))
+        if (command->get_name() != "plugins")
+            command->add_option("--format", context.format,
+                                "The format of a mesh read from standard input or written to standard output "
+                                "('-' as its file name): medit, gmsh, off, obj, vtu, vtk, stl or ply (or their "
+                                "extensions)");
 
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_builtin(args[0])) {
         // the command may belong to a plug-in that was not found: say where sxk looked
         std::string searched;
         for (const std::filesystem::path& folder : PluginHost::search_folders())
             searched += (searched.empty() ? "" : ", ") + folder.string();
-        err << "sxk: unknown command '" << args[0] << "' (see sxk --help and sxk plugins; plug-ins searched in "
+        const auto meant = nearest_word(args[0], command_names(context));
+        err << "sxk: unknown command '" << args[0] << "' (" << (meant ? "did you mean " + *meant + "? " : "")
+            << "see sxk --help and sxk plugins; plug-ins searched in "
             << (searched.empty() ? std::string("no folder") : searched) << ")\n";
         return exit_usage;
     }
@@ -120,8 +149,13 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0) return app.exit(error, out, err);  // --help, --version
         std::string command = "sxk";
-        for (const CLI::App* selected : app.get_subcommands()) command += " " + selected->get_name();
-        err << "sxk: " << error.what() << "\nRun '" << command << " --help' for more information.\n";
+        const CLI::App* parsing = &app;
+        for (const CLI::App* selected : app.get_subcommands()) {
+            command += " " + selected->get_name();
+            parsing = selected;
+        }
+        err << "sxk: " << error.what() << did_you_mean_option(*parsing, args) << "\nRun '" << command
+            << " --help' for more information.\n";
         return exit_usage;
     }
     return context.exit_code;

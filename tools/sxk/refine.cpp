@@ -41,7 +41,7 @@ std::string parse_point(const std::string& text, Point& point) {
 }
 
 int run_refine(Context& context, const RefineOptions& options) {
-    if (const auto unknown = unknown_output_format(options.output)) {
+    if (const auto unknown = unknown_format(context, options.output, true)) {
         context.err << "sxk: " << *unknown << '\n';
         return exit_usage;
     }
@@ -92,10 +92,10 @@ int run_refine(Context& context, const RefineOptions& options) {
         json["bisections"] = bisections;
         json["vertices"] = mesh->vertex_count();
         json["elements"] = mesh->element_count();
-        context.out << json.dump(2) << '\n';
+        context.report() << json.dump(2) << '\n';
         return exit_success;
     }
-    context.out << options.input << " -> " << options.output << ": " << bisections
+    context.report() << options.input << " -> " << options.output << ": " << bisections
                 << (bisections == 1 ? " bisection, " : " bisections, ") << mesh->vertex_count()
                 << " vertices, " << element_count_text(*mesh) << '\n';
     return exit_success;

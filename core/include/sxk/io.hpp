@@ -64,6 +64,9 @@ enum class Format { medit, gmsh, tetgen, off, obj, vtu, vtk, stl, ply };
 SXK_API std::string_view to_string(Format format);
 // By extension: .mesh .msh .node .ele .off .obj .vtu .vtk .stl .ply; nullopt otherwise.
 SXK_API std::optional<Format> format_from_extension(const std::filesystem::path& path);
+// The format called `name`: to_string's name ("medit", "gmsh", ...) or an extension with or
+// without its dot ("mesh", ".msh"), in any case; nullopt otherwise.
+SXK_API std::optional<Format> format_from_name(std::string_view name);
 // Those extensions as one line, for messages and help texts: ".mesh .msh .node .ele ...".
 SXK_API std::string_view known_mesh_extensions();
 
@@ -197,6 +200,10 @@ struct WriteOptions {
 // OFF, OBJ, STL and PLY hold triangles: a tetrahedral mesh is written as its boundary surface.
 // Throws OutputError.
 SXK_API void write_mesh(const Mesh& mesh, const std::filesystem::path& path,
+                        const WriteOptions& options = {});
+// The same to a stream (standard output) in `format`, `name` standing for the file in messages;
+// TetGen, a set of files, is refused. Nothing is written when a check refuses the mesh.
+SXK_API void write_mesh(const Mesh& mesh, std::ostream& out, Format format, const std::string& name,
                         const WriteOptions& options = {});
 
 }  // namespace sxk

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <istream>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -86,6 +87,15 @@ std::string_view known_mesh_extensions() {
     return list;
 }
 
+std::optional<Format> format_from_name(std::string_view name) {
+    std::string lower(name);
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const auto& [extension, format] : extensions)
+        if (lower == to_string(format) || lower == extension || lower == extension.substr(1)) return format;
+    return std::nullopt;
+}
+
 std::optional<Format> format_from_extension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -154,7 +164,8 @@ Mesh read_mesh(const std::filesystem::path& path, const ReadOptions& options, Re
     const std::optional<Format> format = format_from_extension(path);
     if (!format)
         throw InputError(name, 0,
-                         "unknown mesh file extension '" + path.extension().string() + "'");
+                         "unknown mesh file extension '" + path.extension().string() + "' (known: " +
+                             std::string(known_mesh_extensions()) + ")");
     if (*format == Format::tetgen) {
         // X.node and X.ele belong together; X.face (tetrahedra) or X.edge (triangles) carries
         // the boundary markers when it exists
@@ -242,32 +253,50 @@ std::string content_of(const Mesh& mesh, Format format, const WriteOptions& opti
 
 }  // namespace
 
-void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
-    const std::optional<Format> format = format_from_extension(path);
-    if (!format)
-        throw OutputError("cannot write " + path.string() + ": unknown mesh file extension '" +
-                          path.extension().string() + "'");
-    if (mesh.element_count() == 0)
-        throw OutputError("cannot write " + path.string() + ": the mesh has no elements");
+namespace {
+
+// The checks every writer makes first (OutputError "cannot write NAME: ..."), and the mesh to
+// write: `mesh`, or its copy with the vertices in no element dropped, kept in `compact`.
+const Mesh& writable(const Mesh& mesh, const std::string& name, const WriteOptions& options,
+                     std::optional<Mesh>& compact) {
+    if (mesh.element_count() == 0) throw OutputError("cannot write " + name + ": the mesh has no elements");
     if (options.refuse_invalid) {
         ValidateOptions checks;
         checks.orientation = true;
         if (const Outcome<Done> valid = mesh.validate(checks); !valid)
-            throw OutputError("cannot write " + path.string() + ": the mesh is invalid: " +
-                              valid.reason());
+            throw OutputError("cannot write " + name + ": the mesh is invalid: " + valid.reason());
     }
-    if (options.drop_unused_vertices) {
-        bool unused = false;
-        for (VertexId v = 0; v < mesh.vertex_count() && !unused; ++v) unused = mesh.vertex_element(v) == invalid_id;
-        if (unused) {
-            Mesh compact = mesh;
-            (void)compact.compact_vertices();  // a copy has no journal: cannot refuse
-            WriteOptions rest = options;
-            rest.drop_unused_vertices = false;
-            write_mesh(compact, path, rest);
-            return;
-        }
-    }
+    if (options.drop_unused_vertices)
+        for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+            if (mesh.vertex_element(v) == invalid_id) {
+                compact = mesh;
+                (void)compact->compact_vertices();  // a copy has no journal: cannot refuse
+                return *compact;
+            }
+    return mesh;
+}
+
+}  // namespace
+
+void write_mesh(const Mesh& mesh, std::ostream& out, Format format, const std::string& name,
+                const WriteOptions& options) {
+    if (format == Format::tetgen)
+        throw OutputError("cannot write " + name + ": a TetGen mesh is a set of files (.node, .ele, .face); write it "
+                                                   "to a file");
+    std::optional<Mesh> compact;
+    const std::string content = content_of(writable(mesh, name, options, compact), format, options);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) throw OutputError("cannot write " + name + ": the stream took no more data");
+}
+
+void write_mesh(const Mesh& original, const std::filesystem::path& path, const WriteOptions& options) {
+    const std::optional<Format> format = format_from_extension(path);
+    if (!format)
+        throw OutputError("cannot write " + path.string() + ": unknown mesh file extension '" +
+                          path.extension().string() + "' (known: " + std::string(known_mesh_extensions()) + ")");
+    std::optional<Mesh> compact;
+    const Mesh& mesh = writable(original, path.string(), options, compact);
     switch (*format) {
         case Format::medit:
         case Format::gmsh:
