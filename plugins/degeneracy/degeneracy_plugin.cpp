@@ -347,7 +347,7 @@ public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
     ServiceOffer offer(std::string_view service_id) override {
         if (service_id == DegeneracyService::service_id) return offer_of(&m_service);
-        if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
+        if (service_id == ToolFactory::service_id) return offer_of<ToolFactory>(&m_tools);
         return {};
     }
 

@@ -330,7 +330,7 @@ class NeedlePlugin final : public Plugin {
 public:
     std::span<PluginCommand* const> commands() override { return m_commands; }
     ServiceOffer offer(std::string_view service_id) override {
-        if (service_id == ToolFactory::service_id) return offer_of(&m_tools);
+        if (service_id == ToolFactory::service_id) return offer_of<ToolFactory>(&m_tools);
         return {};
     }
     void attach(const sxk::Services& services) override { m_host = &services; }
