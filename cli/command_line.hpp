@@ -27,6 +27,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "progress_line.hpp"
 #include "sxk/io.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
@@ -269,14 +270,18 @@ inline void print_read_warnings(std::ostream& err, const std::string& file, cons
 // error is printed as "sxk: FILE:LINE: reason" and nothing is returned; what the reader
 // repaired is said as print_read_warnings says it.
 inline std::optional<Mesh> load_mesh_for_command(const std::string& file, std::ostream& err,
-                                                 const ReadOptions& options = {}) {
-    ReadReport report;
-    std::variant<Mesh, std::string> read = try_read_mesh(file, options, report);
+                                                 const ReadOptions& options = {}, ReadReport* report = nullptr) {
+    ReadReport own;
+    if (report == nullptr) report = &own;
+    std::variant<Mesh, std::string> read = [&] {
+        ProgressLine progress("reading " + file);
+        return try_read_mesh(file, options, *report);
+    }();  // the progress line is gone before anything is printed
     if (std::string* error = std::get_if<std::string>(&read)) {
         err << "sxk: " << *error << '\n';
         return std::nullopt;
     }
-    print_read_warnings(err, file, report);
+    print_read_warnings(err, file, *report);
     return std::move(std::get<Mesh>(read));
 }
 
@@ -317,7 +322,11 @@ inline std::optional<std::string> unknown_output_format(const std::string& file)
 // false when the result was not written (the command then exits 1).
 inline bool save_mesh_for_command(const Mesh& mesh, const std::string& file, std::ostream& err,
                                   const WriteOptions& options = {}) {
-    if (const std::optional<std::string> error = try_write_mesh(mesh, file, options)) {
+    const std::optional<std::string> error = [&] {
+        ProgressLine progress("writing " + file);
+        return try_write_mesh(mesh, file, options);
+    }();  // the progress line is gone before anything is printed
+    if (error) {
         err << "sxk: " << *error << '\n';
         return false;
     }

@@ -3,7 +3,6 @@
 #include <sstream>
 
 #include "cli.hpp"
-#include "progress.hpp"
 
 namespace sxk::cli {
 
@@ -44,28 +43,29 @@ std::optional<Mesh> load_mesh(Context& context, const std::string& file, const R
                               ReadReport* report) {
     ReadOptions chosen = options;
     if (context.strict) chosen.split_pinched = chosen.drop_stray_faces = false;
+    if (file != "-") {
+        std::optional<Mesh> mesh = load_mesh_for_command(file, context.err, chosen, report);
+        if (!mesh) context.exit_code = exit_usage;
+        return mesh;
+    }
     ReadReport own;
     if (!report) report = &own;
-    std::variant<Mesh, std::string> read = [&]() -> std::variant<Mesh, std::string> {
-        if (file == "-") {
-            const auto format = stream_format(context, false);
-            if (const std::string* why = std::get_if<std::string>(&format)) return *why;
-            try {
-                return read_mesh(std::cin, std::get<Format>(format), "-", chosen, report);
-            } catch (const std::exception& error) {
-                return std::string(error.what());
-            }
+    const auto format = stream_format(context, false);
+    std::string why;
+    if (const std::string* refused = std::get_if<std::string>(&format)) {
+        why = *refused;
+    } else {
+        try {
+            Mesh mesh = read_mesh(std::cin, std::get<Format>(format), "-", chosen, report);
+            print_read_warnings(context.err, file, *report);
+            return mesh;
+        } catch (const std::exception& error) {
+            why = error.what();
         }
-        Progress progress("reading " + file);
-        return try_read_mesh(file, chosen, *report);
-    }();  // the progress line is gone before anything is printed
-    if (std::string* error = std::get_if<std::string>(&read)) {
-        context.err << "sxk: " << *error << '\n';
-        context.exit_code = exit_usage;
-        return std::nullopt;
     }
-    print_read_warnings(context.err, file, *report);
-    return std::move(std::get<Mesh>(read));
+    context.err << "sxk: " << why << '\n';
+    context.exit_code = exit_usage;
+    return std::nullopt;
 }
 
 bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, const WriteOptions& options) {
@@ -86,12 +86,7 @@ bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, cons
         context.out_taken = true;
         return true;
     }
-    const std::optional<std::string> error = [&] {
-        Progress progress("writing " + file);
-        return try_write_mesh(mesh, file, options);
-    }();  // the progress line is gone before anything is printed
-    if (error) context.err << "sxk: " << *error << '\n';
-    return !error;
+    return save_mesh_for_command(mesh, file, context.err, options);
 }
 
 bool read_word_lines(Context& context, const std::string& file,
