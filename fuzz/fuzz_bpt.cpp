@@ -30,6 +30,7 @@ namespace {
 
 void check_clipping(const sxk::bezier::TriangularPatch& patch) {
     using namespace sxk::bezier;
+    using sxk::minus, sxk::scaled;
     using sxk::Point;
     const auto [lower, upper] = box_of(patch.control_points());
     const double size = distance(lower, upper);

@@ -16,6 +16,7 @@
 #include "locate_trees.hpp"
 #include "sxk/locate.hpp"
 #include "sxk/predicates.hpp"
+#include "sxk/point_math.hpp"
 
 namespace sxk {
 namespace {
@@ -24,11 +25,6 @@ using detail::Kernel;
 using detail::to_cgal_2;
 using detail::to_cgal_3;
 
-Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 Point along(const Point& o, const Point& d, double t) { return {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]}; }
 
 // In a planar mesh the third coordinate of query points is ignored.

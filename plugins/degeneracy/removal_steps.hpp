@@ -16,6 +16,7 @@
 #include "remove_degeneracies.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/predicates.hpp"
+#include "sxk/point_math.hpp"
 
 namespace sxk::degeneracy::detail {
 
@@ -70,11 +71,6 @@ Refused collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const
 
 inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
     return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-}
-inline Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 inline double distance(const Point& a, const Point& b) { return std::sqrt(dot(minus(a, b), minus(a, b))); }
 

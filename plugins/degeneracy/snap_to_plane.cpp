@@ -14,17 +14,10 @@
 #include "sxk/predicates.hpp"
 #include "sxk/quality.hpp"
 #include "sxk/traversal.hpp"
+#include "sxk/point_math.hpp"
 
 namespace sxk::degeneracy {
 namespace {
-
-double dot(const Point& a, const Point& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Point minus(const Point& a, const Point& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
 
 // p projected orthogonally onto the plane; `unit` is the plane's unit normal.
 Point projected(const Point& p, const Point& on_plane, const Point& unit) {

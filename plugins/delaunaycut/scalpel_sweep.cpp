@@ -1,6 +1,8 @@
 // The moving blade against an edge (scalpel_sweep.hpp, thesis eq. 5.1).
 #include "scalpel_sweep.hpp"
 
+#include "sxk/point_math.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,16 +13,7 @@ namespace sxk::delaunaycut {
 
 namespace {
 
-using V = std::array<double, 3>;
-
-V sub(const V& p, const V& q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }
-V add(const V& p, const V& q) { return {p[0] + q[0], p[1] + q[1], p[2] + q[2]}; }
-V times(double s, const V& p) { return {s * p[0], s * p[1], s * p[2]}; }
-double dot(const V& p, const V& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; }
-V cross(const V& p, const V& q) {
-    return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
-}
-double norm(const V& p) { return std::sqrt(dot(p, p)); }
+using V = Point;
 
 // The roots of c2 s^2 + c1 s + c0 in [0, 1] (within `slack`), ascending; `zero`: what counts as a
 // vanishing coefficient. A discriminant negative by rounding only is a double root.
@@ -51,14 +44,14 @@ std::vector<double> roots_in_unit(double c2, double c1, double c0, double zero) 
 struct Frame {
     V h0, t0, dh, dt, a, v;  // the movement and the edge (v = b - a)
     double tolerance = 0;    // distances that count as touching
-    V handle(double s) const { return add(h0, times(s, dh)); }
-    V tip(double s) const { return add(t0, times(s, dt)); }
+    V handle(double s) const { return plus(h0, scaled(s, dh)); }
+    V tip(double s) const { return plus(t0, scaled(s, dt)); }
 };
 
 // Where the blade at time s meets the edge, if it does (the two segments in their common plane, or
 // overlapping on one line).
 std::optional<SweepHit> meeting_at(const Frame& f, double s) {
-    const V p = f.handle(s), u = sub(f.tip(s), p), w = sub(p, f.a);
+    const V p = f.handle(s), u = minus(f.tip(s), p), w = minus(p, f.a);
     const double uu = dot(u, u), vv = dot(f.v, f.v), uv = dot(u, f.v);
     const double det = uu * vv - uv * uv;
     double lambda = 0, mu = 0;
@@ -73,18 +66,18 @@ std::optional<SweepHit> meeting_at(const Frame& f, double s) {
             lambda = 0;
             mu = -dot(w, f.v) / vv;
         } else {
-            const double la = -dot(w, u) / uu, lb = dot(sub(add(f.a, f.v), p), u) / uu;
+            const double la = -dot(w, u) / uu, lb = dot(minus(plus(f.a, f.v), p), u) / uu;
             lambda = std::max(0.0, std::min(la, lb));
             if (lambda > std::max(la, lb)) return std::nullopt;
-            mu = dot(sub(add(p, times(lambda, u)), f.a), f.v) / vv;
+            mu = dot(minus(plus(p, scaled(lambda, u)), f.a), f.v) / vv;
         }
     }
     const double slack = 1e-9;
     if (lambda < -slack || lambda > 1 + slack || mu < -slack || mu > 1 + slack) return std::nullopt;
     lambda = std::clamp(lambda, 0.0, 1.0);
     mu = std::clamp(mu, 0.0, 1.0);
-    const V on_blade = add(p, times(lambda, u)), on_edge = add(f.a, times(mu, f.v));
-    if (norm(sub(on_blade, on_edge)) > 1e3 * f.tolerance) return std::nullopt;
+    const V on_blade = plus(p, scaled(lambda, u)), on_edge = plus(f.a, scaled(mu, f.v));
+    if (norm(minus(on_blade, on_edge)) > 1e3 * f.tolerance) return std::nullopt;
     return SweepHit{s, lambda, mu, {on_edge[0], on_edge[1], on_edge[2]}};
 }
 
@@ -105,16 +98,16 @@ std::vector<double> vector_roots(const V& q2, const V& q1, const V& q0, double z
 
 std::optional<SweepHit> first_sweep_hit(const Point& h0, const Point& t0, const Point& h1, const Point& t1,
                                         const Point& a, const Point& b) {
-    Frame f{h0, t0, sub(h1, h0), sub(t1, t0), a, sub(b, a)};
+    Frame f{h0, t0, minus(h1, h0), minus(t1, t0), a, minus(b, a)};
     double size = 0;
     for (const Point* p : {&h0, &t0, &h1, &t1, &b})
         for (std::size_t k = 0; k < 3; ++k) size = std::max(size, std::abs((*p)[k] - a[k]));
     if (size == 0) return SweepHit{0, 0, 0, a};
     f.tolerance = 1e-12 * size;
     // det[h(s) - a, t(s) - a, b - a] = (H x T) . E with H = h0 - a + s dh, T = t0 - a + s dt
-    const V H0 = sub(h0, a), T0 = sub(t0, a);
+    const V H0 = minus(h0, a), T0 = minus(t0, a);
     const double c0 = dot(cross(H0, T0), f.v);
-    const double c1 = dot(add(cross(H0, f.dt), cross(f.dh, T0)), f.v);
+    const double c1 = dot(plus(cross(H0, f.dt), cross(f.dh, T0)), f.v);
     const double c2 = dot(cross(f.dh, f.dt), f.v);
     const double zero = 1e-12 * size * size * size;
     if (std::max({std::abs(c0), std::abs(c1), std::abs(c2)}) > zero) {
@@ -130,11 +123,11 @@ std::optional<SweepHit> first_sweep_hit(const Point& h0, const Point& t0, const 
         for (const double s : vector_roots({0, 0, 0}, cross(change, f.v), cross(start, f.v), zero / size))
             times_found.push_back(s);
     // an end of the edge on the blade's line: u(s) x (e - h(s)) = 0, quadratic in s
-    const V u0 = sub(t0, h0), du = sub(f.dt, f.dh);
-    for (const V& e : {f.a, add(f.a, f.v)}) {
-        const V w0 = sub(e, h0);
-        const V q2 = times(-1, cross(du, f.dh));
-        const V q1 = sub(cross(du, w0), cross(u0, f.dh));
+    const V u0 = minus(t0, h0), du = minus(f.dt, f.dh);
+    for (const V& e : {f.a, plus(f.a, f.v)}) {
+        const V w0 = minus(e, h0);
+        const V q2 = scaled(-1, cross(du, f.dh));
+        const V q1 = minus(cross(du, w0), cross(u0, f.dh));
         for (const double s : vector_roots(q2, q1, cross(u0, w0), zero / size)) times_found.push_back(s);
     }
     std::sort(times_found.begin(), times_found.end());
@@ -145,9 +138,9 @@ std::optional<SweepHit> first_sweep_hit(const Point& h0, const Point& t0, const 
 
 double largest_safe_move(const Point& h, const Point& t, std::span<const std::array<Point, 2>> edges) {
     double safe = std::numeric_limits<double>::infinity();
-    const V u = sub(t, h);
+    const V u = minus(t, h);
     for (const auto& [x, y] : edges) {
-        const V v = sub(y, x), w = sub(x, h);
+        const V v = minus(y, x), w = minus(x, h);
         const V n = cross(u, v);
         const double nn = norm(n), uu = norm(u), vv = norm(v);
         double d = 0;

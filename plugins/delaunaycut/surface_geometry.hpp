@@ -13,15 +13,11 @@
 #include "surface_cut.hpp"
 #include "sxk/mesh.hpp"
 #include "sxk/outcome.hpp"
+#include "sxk/point_math.hpp"
 
 namespace sxk::delaunaycut {
 
-inline Point minus(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Point cross(const Point& a, const Point& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double length3(const Point& a) { return std::sqrt(dot(a, a)); }
+inline double length3(const Point& a) { return norm(a); }
 inline double distance3(const Point& a, const Point& b) { return length3(minus(a, b)); }
 inline Point lerp3(const Point& a, const Point& b, double s) {
     return {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), a[2] + s * (b[2] - a[2])};

@@ -10,12 +10,12 @@
 namespace sxk::test {
 namespace {
 
-struct CutFixture {
+struct DelaunayCutFixture {
     ScratchFolder folder;
     fs::path square = folder / "square.mesh";
     fs::path out = folder / "out.mesh";
     const std::string curve = SXK_SOURCE_DIR "/tests/data/paths/square-curve.path";
-    CutFixture() { EXPECT_EQ(sxk({"generate", square.string(), "--shape", "square", "--cells", "5"}).exit_code, 0); }
+    DelaunayCutFixture() { EXPECT_EQ(sxk({"generate", square.string(), "--shape", "square", "--cells", "5"}).exit_code, 0); }
     fs::path path(const char* name, const std::string& text) {
         const fs::path file = folder / name;
         write_file(file, text);
@@ -29,7 +29,7 @@ struct CutFixture {
 };
 
 TEST(SxkCutDelaunay, CutsTheThesisSquareByBothMethodsAndReportsEachStep) {
-    CutFixture f;
+    DelaunayCutFixture f;
     const ProcessResult delaunay = f.cut(f.curve, {"--json"});
     ASSERT_EQ(delaunay.exit_code, 0) << delaunay.err;
     EXPECT_EQ(delaunay.err, "");
@@ -54,7 +54,7 @@ TEST(SxkCutDelaunay, CutsTheThesisSquareByBothMethodsAndReportsEachStep) {
 }
 
 TEST(SxkCutDelaunay, DrawsTheCutAndTheAngleHistograms) {
-    CutFixture f;
+    DelaunayCutFixture f;
     const fs::path svg = f.folder / "cut.svg", histogram = f.folder / "angles.svg";
     const ProcessResult run = f.cut(f.curve, {"--svg", svg.string(), "--histogram", histogram.string()});
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -67,7 +67,7 @@ TEST(SxkCutDelaunay, DrawsTheCutAndTheAngleHistograms) {
 }
 
 TEST(SxkCutDelaunay, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
-    CutFixture f;
+    DelaunayCutFixture f;
     for (const char* method : {"delaunay", "subdivision"}) {
         const ProcessResult run = f.cut(f.curve, {"--undo", "all", "--method", method});
         ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -77,7 +77,7 @@ TEST(SxkCutDelaunay, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
 }
 
 TEST(SxkCutDelaunay, BadPathsAndMeshesAreRefusedWithTheirLine) {
-    CutFixture f;
+    DelaunayCutFixture f;
     struct Case {
         const char* text;
         std::string message;
@@ -161,7 +161,7 @@ TEST(SxkCutDelaunay, CutsTheThesisBellTwiceWithALineScalpel) {
 // the movement was one piece, entered ~16 units off. Samples that far (more than 1e12 mean edges
 // from the mesh's box) are refused with their line; 1e11 still cuts the square in two.
 TEST(SxkCutDelaunay, SamplesTooFarFromTheMeshAreRefusedWithTheirLine) {
-    CutFixture f;
+    DelaunayCutFixture f;
     const fs::path far = f.path("far.path", "0 -1e17 2.5\n1 1e17 2.5\n");
     const ProcessResult run = f.cut(far.string());
     EXPECT_EQ(run.exit_code, 2);
@@ -209,7 +209,7 @@ TEST(SxkCutDelaunay, BladesTooFarFromTheSurfaceAreRefusedWithTheirLine) {
 // replaced, and the message lacked "FILE:0:". Every output is checked before the cut: nothing is
 // written, OUT stays as it was.
 TEST(SxkCutDelaunay, AnUnwritablePictureIsRefusedBeforeOutIsReplaced) {
-    CutFixture f;
+    DelaunayCutFixture f;
     write_file(f.out, "the user's old result\n");
     for (const char* option : {"--svg", "--histogram"}) {
         const std::string picture = (f.folder / "nowhere" / "x.svg").string();
@@ -237,7 +237,7 @@ TEST(SxkCutDelaunay, AnUnwritablePictureIsRefusedBeforeOutIsReplaced) {
 // x.png` wrote SVG into a .png name. A picture may be neither the input, nor OUT, nor the other
 // picture, and its name must say what it holds.
 TEST(SxkCutDelaunay, APictureMayNotOverwriteTheMeshesOrCarryAnotherExtension) {
-    CutFixture f;
+    DelaunayCutFixture f;
     const std::string input = slurp(f.square);
     const std::string square = f.square.string();
     struct Case {

@@ -14,11 +14,11 @@
 namespace sxk::test {
 namespace {
 
-struct CutFixture {
+struct SnapCutFixture {
     ScratchFolder folder;
     fs::path cube = folder / "cube.mesh";
     fs::path out = folder / "out.mesh";
-    CutFixture() { EXPECT_EQ(sxk({"generate", cube.string(), "--cells", "8"}).exit_code, 0); }
+    SnapCutFixture() { EXPECT_EQ(sxk({"generate", cube.string(), "--cells", "8"}).exit_code, 0); }
     fs::path path(const char* name, const std::string& text) {
         const fs::path file = folder / name;
         write_file(file, text);
@@ -42,7 +42,7 @@ const char* grid_plane_path = R"(# time hx hy hz tx ty tz
 )";
 
 TEST(SxkCutSnap, CutsTheCubeAlongThePathAndReportsEachStep) {
-    CutFixture f;
+    SnapCutFixture f;
     const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--json"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_EQ(run.err, "");
@@ -64,7 +64,7 @@ TEST(SxkCutSnap, CutsTheCubeAlongThePathAndReportsEachStep) {
 // x = 3 and the 36 copies the dissection made, snapped onto the blade's plane x = 3.3, lie on the
 // swept surface; without snapping they stay 0.3 from it, every one.
 TEST(SxkCutSnap, TheIncisionDistanceToolMeasuresHowFarTheCutIsFromTheSweep) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const std::string tool = SXK_SOURCE_DIR "/tools/incision-distance";
     ASSERT_EQ(f.cut(path).exit_code, 0);
@@ -83,7 +83,7 @@ TEST(SxkCutSnap, TheIncisionDistanceToolMeasuresHowFarTheCutIsFromTheSweep) {
 }
 
 TEST(SxkCutSnap, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
-    CutFixture f;
+    SnapCutFixture f;
     const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--undo", "all"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_NE(run.out.find("6 steps undone"), std::string::npos) << run.out;
@@ -98,7 +98,7 @@ TEST(SxkCutSnap, UndoingEveryStepWritesTheInputAsTheWriterWritesIt) {
 }
 
 TEST(SxkCutSnap, BadPathsAreRefusedWithTheirLine) {
-    CutFixture f;
+    SnapCutFixture f;
     struct Case {
         const char* text;
         std::string message;
@@ -122,7 +122,7 @@ TEST(SxkCutSnap, BadPathsAreRefusedWithTheirLine) {
 // The same cut given as the triangles the blade sweeps (an .obj, one step each): the movement
 // from (h, t) to (h', t') sweeps (h, t, t') and (h, t', h'), so the mesh written is the same.
 TEST(SxkCutSnap, APathOfSweptTrianglesCutsAsTheScalpelPath) {
-    CutFixture f;
+    SnapCutFixture f;
     ASSERT_EQ(f.cut(f.path("plane.path", grid_plane_path)).exit_code, 0);
     const std::string by_samples = slurp(f.out);
     std::string obj = "# the blade of grid_plane_path: handles 1-6, tips 7-12\n";
@@ -158,7 +158,7 @@ TEST(SxkCutSnap, APathOfSweptTrianglesCutsAsTheScalpelPath) {
 
 // --frames: a picture before the cut and one per step, through the bezier plug-in's renderer.
 TEST(SxkCutSnap, FramesArePicturesOfEachStep) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path frames = f.folder / "frames" / "cube";  // made, parents too
     const ProcessResult run = f.cut(f.path("plane.path", grid_plane_path), {"--frames", frames.string(), "--json"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -180,7 +180,7 @@ TEST(SxkCutSnap, FramesArePicturesOfEachStep) {
 }
 
 TEST(SxkCutSnap, AScalpelThatNeverMeetsTheMeshIsAnInputError) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("away.path", "# far away\n0 20 0 5 20 0 1\n1 20 5 5 20 5 1\n");
     const ProcessResult run = f.cut(path);
     EXPECT_EQ(run.exit_code, 2);
@@ -189,7 +189,7 @@ TEST(SxkCutSnap, AScalpelThatNeverMeetsTheMeshIsAnInputError) {
 }
 
 TEST(SxkCutSnap, UsageErrors) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     EXPECT_EQ(f.cut(path, {"--undo", "7"}).err, "sxk: cut snap: --undo 7: only 6 steps were taken\n");
     const ProcessResult bad_undo = f.cut(path, {"--undo", "some"});
@@ -218,7 +218,7 @@ TEST(SxkCutSnap, ListedAsAPluginCommandAndCutsADeformingBody) {
                                "and cleaned (thesis 3.2)\n"),
               std::string::npos)
         << plugins.out;
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const ProcessResult run =
         f.cut(path, {"--json", "--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--relax-iterations", "30",
@@ -238,7 +238,7 @@ TEST(SxkCutSnap, ListedAsAPluginCommandAndCutsADeformingBody) {
 // --local N: each step relaxes a region around what it changed; the JSON says how large, and the
 // options carry it.
 TEST(SxkCutSnap, ADeformingBodyRelaxedOnlyAroundEachStep) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const ProcessResult run = f.cut(path, {"--json", "--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5",
                                            "--relax-iterations", "200", "--local", "100", "--far", "50"});
@@ -264,7 +264,7 @@ TEST(SxkCutSnap, ADeformingBodyRelaxedOnlyAroundEachStep) {
 // --undo takes decimal digits or 'all', read once: "20e-1" passed the check as a whole-valued
 // number and std::stoull then undid 20 steps; "1e3" undid 1 (issue 47).
 TEST(SxkCutSnap, UndoTakesDecimalDigitsOnly) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     for (const std::string undo : {"20e-1", "1e3", "2.0", "+2", "0x2", "-0", "18446744073709551616"}) {
         const ProcessResult run = f.cut(path, {"--undo", undo});
@@ -305,7 +305,7 @@ TEST(SxkCutSnap, RemoveLooseKeepsTheLargerPartOfEachBody) {
 // Loads whose norm overflows a double: the solve before the cut is refused (it once "converged"
 // with |r| inf <= inf and the cut went on), exit 1, nothing written; the JSON says why.
 TEST(SxkCutSnap, ADeformingBodyWithLoadsTooLargeIsRefused) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const std::string too_large =
         "relax: elasticity: the loads are too large: their norm overflows a double, so no residual can be "
@@ -329,7 +329,7 @@ TEST(SxkCutSnap, ADeformingBodyWithLoadsTooLargeIsRefused) {
 // text mode said nothing (issue 47). Refused as `sxk deform` refuses it: exit 1, nothing written,
 // the JSON's initial_relax not shown, with the reason.
 TEST(SxkCutSnap, ALoadedShapeThatCannotBeShownIsRefused) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const std::string load = "--fix y<0.001 --force y>7.99:0,1e9,0 --E 1e5";
     const ProcessResult run = f.cut(path, {"--deform", load});
@@ -352,7 +352,7 @@ TEST(SxkCutSnap, ALoadedShapeThatCannotBeShownIsRefused) {
 
 // The relaxation's options without --deform (or --far without --local) were ignored in silence.
 TEST(SxkCutSnap, RelaxationOptionsNeedADeformingBody) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const std::string hint = "Run 'sxk cut snap --help' for more information.\n";
     const std::string why = ": only with --deform (it says how the deforming body relaxes after each step)\n";
@@ -373,7 +373,7 @@ TEST(SxkCutSnap, RelaxationOptionsNeedADeformingBody) {
 // With --deform the solve before the first step writes the loaded shape outside any step:
 // `--undo all` left it in OUT, which was then not IN (issue 47). Undoing every step takes it back.
 TEST(SxkCutSnap, UndoingEveryStepOfADeformingCutWritesTheInput) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     const ProcessResult run =
         f.cut(path, {"--deform", "--fix y<0.001 --force y>7.99:0,20000,0 --E 1e5", "--undo", "all"});
@@ -395,7 +395,7 @@ TEST(SxkCutSnap, UndoingEveryStepOfADeformingCutWritesTheInput) {
 // step's removal reaches a ring beyond the stars of the nodes it snapped and split
 // (tests/plugins/degeneracy_snap_test.cpp checks that bound), so the cut keeps most of the cube.
 TEST(SxkCutSnap, TheDegeneracyRemovalStaysLocalAtAnyThreshold) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     for (const std::string aspect : {"0.41", "0.5"}) {
         const ProcessResult run = f.cut(path, {"--aspect", aspect, "--json"});
@@ -421,7 +421,7 @@ TEST(SxkCutSnap, TheDegeneracyRemovalStaysLocalAtAnyThreshold) {
 // with face labels keeps it (issue 47 found the cut faces unlabelled in a Gmsh file, whose
 // writer then gave label 0 no physical group).
 TEST(SxkCutSnap, CutLabelZeroIsALabelLikeAnyOther) {
-    CutFixture f;
+    SnapCutFixture f;
     const fs::path path = f.path("plane.path", grid_plane_path);
     for (const std::string name : {"zero.mesh", "zero.msh"}) {
         const fs::path out = f.folder / name;

@@ -28,7 +28,7 @@ struct DeformFixture {
     }
 };
 
-const std::string hint = "Run 'sxk deform --help' for more information.\n";
+const std::string deform_hint = "Run 'sxk deform --help' for more information.\n";
 
 TEST(SxkDeform, HelpNamesEveryOption) {
     const ProcessResult run = sxk({"deform", "--help"});
@@ -149,14 +149,14 @@ TEST(SxkDeform, UsageErrorsSayWhat) {
         {{"--fix", "x<0.01", "--gravity", "0,-9.8"},
          "sxk: deform: --gravity '0,-9.8': expected three numbers GX,GY,GZ, found 2\n"},
         {{"--fix", "x<0.01", "--material", "rubber"},
-         "sxk: deform: --material: rubber not in {linear,neohookean}\n" + hint},
+         "sxk: deform: --material: rubber not in {linear,neohookean}\n" + deform_hint},
         {{"--fix", "x<0.01", "--nu", "0.5"},
-         "sxk: deform: --nu: '0.5' is not in (-1, 0.5)\n" + hint},
+         "sxk: deform: --nu: '0.5' is not in (-1, 0.5)\n" + deform_hint},
         // the whole numbers go through command_line.hpp's check too (CLI11's own message once)
         {{"--fix", "x<0.01", "--max-iterations", "0"},
-         "sxk: deform: --max-iterations: '0' is not a whole number in 1..100000000\n" + hint},
+         "sxk: deform: --max-iterations: '0' is not a whole number in 1..100000000\n" + deform_hint},
         {{"--fix", "x<0.01", "--max-iterations", "nan"},
-         "sxk: deform: --max-iterations: 'nan' is not a whole number in 1..100000000\n" + hint},
+         "sxk: deform: --max-iterations: 'nan' is not a whole number in 1..100000000\n" + deform_hint},
     };
     for (const Case& c : cases) {
         const ProcessResult run = f.run(c.options);

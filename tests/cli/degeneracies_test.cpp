@@ -121,7 +121,7 @@ struct DegeneraciesFixture {
     }
 };
 
-const std::string hint = "Run 'sxk degeneracies --help' for more information.\n";
+const std::string degeneracies_hint = "Run 'sxk degeneracies --help' for more information.\n";
 
 TEST(SxkDegeneracies, HelpNamesEveryOption) {
     const ProcessResult run = sxk({"degeneracies", "--help"});
@@ -148,14 +148,14 @@ TEST(SxkDegeneracies, AspectOutOfRangeIsAUsageError) {
     const fs::path in = f.input("cap.mesh", cap_mesh);
     ProcessResult run = f.run(in, {"--aspect", "1.5"});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: '1.5' is not in (0, 1)\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: '1.5' is not in (0, 1)\n" + degeneracies_hint);
     EXPECT_EQ(run.out, "");
     run = f.run(in, {"--aspect", "0"});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: '0' is not in (0, 1)\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: '0' is not in (0, 1)\n" + degeneracies_hint);
     run = f.run(in, {"--aspect", "small"});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: expected a finite number, found 'small'\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --aspect: expected a finite number, found 'small'\n" + degeneracies_hint);
     EXPECT_FALSE(fs::exists(f.out));
 }
 
@@ -164,13 +164,13 @@ TEST(SxkDegeneracies, AngleAndToleranceOutOfRange) {
     const fs::path in = f.input("cap.mesh", cap_mesh);
     ProcessResult run = f.run(in, {"--angle", "1.5"});  // below pi/2
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --angle: '1.5' is not in (pi/2, pi)\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --angle: '1.5' is not in (pi/2, pi)\n" + degeneracies_hint);
     run = f.run(in, {"--angle", "3.15"});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --angle: '3.15' is not in (pi/2, pi)\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --angle: '3.15' is not in (pi/2, pi)\n" + degeneracies_hint);
     run = f.run(in, {"--boundary-tolerance", "-0.1"});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: --boundary-tolerance: '-0.1' is not in [0, 1)\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: --boundary-tolerance: '-0.1' is not in [0, 1)\n" + degeneracies_hint);
     EXPECT_FALSE(fs::exists(f.out));
 }
 
@@ -182,7 +182,7 @@ TEST(SxkDegeneracies, NanAndInfiniteThresholdsAreRefused) {
             const ProcessResult run = f.run(in, {option, value});
             EXPECT_EQ(run.exit_code, 2) << option << ' ' << value;
             EXPECT_EQ(run.err, "sxk: degeneracies: " + std::string(option) + ": expected a finite number, found '" +
-                                   value + "'\n" + hint);
+                                   value + "'\n" + degeneracies_hint);
         }
     EXPECT_FALSE(fs::exists(f.out));
 }
@@ -192,7 +192,7 @@ TEST(SxkDegeneracies, OperandsAreRequired) {
     const fs::path in = f.input("cap.mesh", cap_mesh);
     const ProcessResult run = sxk({"degeneracies", in.string()});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: degeneracies: OUT is required\n" + hint);
+    EXPECT_EQ(run.err, "sxk: degeneracies: OUT is required\n" + degeneracies_hint);
 }
 
 TEST(SxkDegeneracies, MissingInputFile) {

@@ -22,7 +22,7 @@ namespace sxk::test {
 namespace {
 
 const std::string teapot = SXK_TEST_DATA_DIR "/teapot.bpt";
-const std::string hint = "Run 'sxk render --help' for more information.\n";
+const std::string render_hint = "Run 'sxk render --help' for more information.\n";
 
 // Width and height from the PNG's IHDR chunk (big-endian at bytes 16 and 20), after checking
 // the signature; {0, 0} when the file is not a PNG.
@@ -200,9 +200,9 @@ TEST(SxkRender, CutLabel) {
     EXPECT_EQ(nlohmann::json::parse(run.out)["cut_triangles"], 0);
     fs::remove(f.out);
     f.expect_error(in.string(), {"--cut-label", "seven"},
-                   "sxk: render: --cut-label: 'seven' is not a whole number\n" + hint);
+                   "sxk: render: --cut-label: 'seven' is not a whole number\n" + render_hint);
     f.expect_error(teapot, {"--cut-label", "7"},
-                   "sxk: render: --cut-label needs a mesh; " + teapot + " holds patches\n" + hint);
+                   "sxk: render: --cut-label needs a mesh; " + teapot + " holds patches\n" + render_hint);
 }
 
 // Without --cut-label the label dissection gives the faces it opens (9999) marks cut faces: the
@@ -235,7 +235,7 @@ TEST(SxkRender, BadSize) {
     for (const char* size : {"12x", "x12", "12", "0x10", "10x-1", "12x12x", "20000x10"})
         f.expect_error(teapot, {"--size", size},
                        "sxk: render: --size: '" + std::string(size) +
-                           "' is not WxH (two whole numbers 1..16384, e.g. 640x480)\n" + hint);
+                           "' is not WxH (two whole numbers 1..16384, e.g. 640x480)\n" + render_hint);
 }
 
 TEST(SxkRender, BadCamera) {
@@ -243,28 +243,28 @@ TEST(SxkRender, BadCamera) {
     const std::string shape = "' is not eye,target,up (nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)\n";
     for (const char* camera : {"1,2,3", "1,2,3,4,5,6,7,8,9,10"})
         f.expect_error(teapot, {"--camera", camera},
-                       "sxk: render: --camera: '" + std::string(camera) + shape + hint);
+                       "sxk: render: --camera: '" + std::string(camera) + shape + render_hint);
     const std::string nine = " (eye,target,up: nine numbers ex,ey,ez,tx,ty,tz,ux,uy,uz)\n";
     f.expect_error(teapot, {"--camera", "1,2,3,4,5,6,7,8,x"},
-                   "sxk: render: --camera: expected a finite number, found 'x' in '1,2,3,4,5,6,7,8,x'" + nine + hint);
+                   "sxk: render: --camera: expected a finite number, found 'x' in '1,2,3,4,5,6,7,8,x'" + nine + render_hint);
     f.expect_error(teapot, {"--camera", "1,2,3,,5,6,7,8,9"},
-                   "sxk: render: --camera: expected a finite number, found '' in '1,2,3,,5,6,7,8,9'" + nine + hint);
+                   "sxk: render: --camera: expected a finite number, found '' in '1,2,3,,5,6,7,8,9'" + nine + render_hint);
     f.expect_error(teapot, {"--camera", "1,2,3,4,5,6,7,8,nan"},
                    "sxk: render: --camera: expected a finite number, found 'nan' in '1,2,3,4,5,6,7,8,nan'" + nine +
-                       hint);
+                       render_hint);
     f.expect_error(teapot, {"--camera", "inf,2,3,4,5,6,7,8,9"},
                    "sxk: render: --camera: expected a finite number, found 'inf' in 'inf,2,3,4,5,6,7,8,9'" + nine +
-                       hint);
+                       render_hint);
     f.expect_error(teapot, {"--camera", "1,1,1,1,1,1,0,0,1"},
-                   "sxk: render: --camera: '1,1,1,1,1,1,0,0,1': eye and target coincide\n" + hint);
+                   "sxk: render: --camera: '1,1,1,1,1,1,0,0,1': eye and target coincide\n" + render_hint);
     f.expect_error(teapot, {"--camera", "0,0,5,0,0,0,0,0,1"},
                    "sxk: render: --camera: '0,0,5,0,0,0,0,0,1': up is zero or parallel to the view "
                    "direction\n" +
-                       hint);
+                       render_hint);
     f.expect_error(teapot, {"--camera", "0,-5,0,0,0,0,0,0,0"},
                    "sxk: render: --camera: '0,-5,0,0,0,0,0,0,0': up is zero or parallel to the "
                    "view direction\n" +
-                       hint);
+                       render_hint);
 }
 
 // The hostile trial: cameras the renderer's frame refuses (a view direction whose length overflows
@@ -274,11 +274,11 @@ TEST(SxkRender, CamerasTheRendererCannotFrameAreUsageErrors) {
     RenderFixture f;
     f.expect_error(teapot, {"--camera", "1e308,0,0,-1e308,0,0,0,0,1"},
                    "sxk: render: --camera: '1e308,0,0,-1e308,0,0,0,0,1': camera: target - eye has no direction\n" +
-                       hint);
+                       render_hint);
     f.expect_error(teapot, {"--camera", "0,0,5,0,0,0,1e-200,0,0"},
                    "sxk: render: --camera: '0,0,5,0,0,0,1e-200,0,0': camera: the up vector is parallel to the "
                    "view and has no direction\n" +
-                       hint);
+                       render_hint);
 }
 
 TEST(SxkRender, FovOutOfRange) {
@@ -286,9 +286,9 @@ TEST(SxkRender, FovOutOfRange) {
     for (const char* fov : {"0", "180", "-10", "400"})
         f.expect_error(
             teapot, {"--fov", fov},
-            "sxk: render: --fov: '" + std::string(fov) + "' is not in (0, 180)\n" + hint);
+            "sxk: render: --fov: '" + std::string(fov) + "' is not in (0, 180)\n" + render_hint);
     f.expect_error(teapot, {"--fov", "wide"},
-                   "sxk: render: --fov: expected a finite number, found 'wide'\n" + hint);
+                   "sxk: render: --fov: expected a finite number, found 'wide'\n" + render_hint);
 }
 
 TEST(SxkRender, NanAndInfiniteNumbersAreRefused) {
@@ -297,33 +297,33 @@ TEST(SxkRender, NanAndInfiniteNumbersAreRefused) {
         for (const char* value : {"nan", "inf", "-inf"})
             f.expect_error(teapot, {option, value},
                            "sxk: render: " + std::string(option) + ": expected a finite number, found '" + value +
-                               "'\n" + hint);
-    f.expect_error(teapot, {"--segments", "nan"}, "sxk: render: --segments: 'nan' is not a whole number in 1..512\n" + hint);
+                               "'\n" + render_hint);
+    f.expect_error(teapot, {"--segments", "nan"}, "sxk: render: --segments: 'nan' is not a whole number in 1..512\n" + render_hint);
 }
 
 TEST(SxkRender, OtherBadOptions) {
     RenderFixture f;
     f.expect_error(teapot, {"--segments", "0"},
-                   "sxk: render: --segments: '0' is not a whole number in 1..512\n" + hint);
+                   "sxk: render: --segments: '0' is not a whole number in 1..512\n" + render_hint);
     f.expect_error(teapot, {"--segments", "1000"},
-                   "sxk: render: --segments: '1000' is not a whole number in 1..512\n" + hint);
+                   "sxk: render: --segments: '1000' is not a whole number in 1..512\n" + render_hint);
     f.expect_error(teapot, {"--flatness", "0"},
-                   "sxk: render: --flatness: '0' is not in (0, 1]\n" + hint);
+                   "sxk: render: --flatness: '0' is not in (0, 1]\n" + render_hint);
     f.expect_error(teapot, {"--colour", "rainbow"},
-                   "sxk: render: --colour: rainbow not in {quality,label,piece,plain}\n" + hint);
+                   "sxk: render: --colour: rainbow not in {quality,label,piece,plain}\n" + render_hint);
     f.expect_error(
         teapot, {"--colour", "quality"},
-        "sxk: render: --colour quality needs a mesh; " + teapot + " holds patches\n" + hint);
+        "sxk: render: --colour quality needs a mesh; " + teapot + " holds patches\n" + render_hint);
     const fs::path mesh = f.input("two.mesh", two_tetrahedra_mesh);
     f.expect_error(mesh.string(), {"--tessellate"},
                    "sxk: render: --tessellate applies to patch files (.bpt); " + mesh.string() +
-                       " is a mesh\n" + hint);
+                       " is a mesh\n" + render_hint);
     f.expect_error(mesh.string(), {"--flatness", "0.1"},
                    "sxk: render: --flatness applies to patch files (.bpt); " + mesh.string() +
-                       " is a mesh\n" + hint);
+                       " is a mesh\n" + render_hint);
     const ProcessResult run = sxk({"render", teapot});
     EXPECT_EQ(run.exit_code, 2);
-    EXPECT_EQ(run.err, "sxk: render: OUT is required\n" + hint);
+    EXPECT_EQ(run.err, "sxk: render: OUT is required\n" + render_hint);
 }
 
 TEST(SxkRender, UnreadableInputs) {
@@ -465,18 +465,18 @@ TEST(SxkRender, RefusesWhatCannotBeDoneInReasonableTimeAndMemory) {
     f.expect_error(teapot, {"--size", "16384x8192"},
                    "sxk: render: --size 16384x8192 has 134217728 pixels, more than the 67108864 "
                    "allowed (8192x8192)\n" +
-                       hint);
+                       render_hint);
     // a flatness below the teapot's rounding: 1e-12 x (diagonal + largest coordinate) / diagonal
     f.expect_error(teapot, {"--flatness", "1e-13"},
                    "sxk: render: --flatness 1e-13 is below what double rounding resolves in " +
-                       teapot + "; the smallest accepted is 1.43e-12\n" + hint);
+                       teapot + "; the smallest accepted is 1.43e-12\n" + render_hint);
     // 2^30 bytes of sextic sub-patches (928 bytes each) are 1157049; the teapot needs more at
     // 1e-9 (and at 1e-6)
     f.expect_error(teapot, {"--flatness", "1e-9"},
                    "sxk: render: --flatness 1e-09 splits the patches of " + teapot +
                        " into more sub-patches than fit in 1024 MiB (1157049 made when it "
                        "stopped); use a larger --flatness\n" +
-                       hint);
+                       render_hint);
     // 200 bilinear patches are 400 triangular ones: 2^24 triangles allow 204 segments
     std::string bilinear = "200\n";
     for (int p = 0; p < 200; ++p)
@@ -486,7 +486,7 @@ TEST(SxkRender, RefusesWhatCannotBeDoneInReasonableTimeAndMemory) {
     f.expect_error(many.string(), {"--tessellate", "--segments", "205"},
                    "sxk: render: --segments 205 gives 400 patches x 205^2 = 16810000 triangles, "
                    "more than the 16777216 allowed; use --segments 204 or fewer\n" +
-                       hint);
+                       render_hint);
     // one flat 20 x 20 patch is two of degree 40: 11480 de Casteljau steps per vertex, 2^31
     // steps allow 431 segments
     std::string flat = "1\n20 20\n";
@@ -498,7 +498,7 @@ TEST(SxkRender, RefusesWhatCannotBeDoneInReasonableTimeAndMemory) {
                    "sxk: render: --segments 432 evaluates 2 patches x 93961 points x 11480 de "
                    "Casteljau steps (degree 40) = 2157344560, more than the 2147483648 allowed; "
                    "use --segments 431 or fewer\n" +
-                       hint);
+                       render_hint);
 }
 
 // An application renders a mesh it holds (run_on_mesh: the arguments without INPUT).
@@ -533,7 +533,7 @@ TEST(SxkRender, RunsOnAMeshInMemory) {
               2);
     EXPECT_EQ(
         standard_err.str(),
-        "sxk: render: --tessellate applies to patch files (.bpt); my mesh is a mesh\n" + hint);
+        "sxk: render: --tessellate applies to patch files (.bpt); my mesh is a mesh\n" + render_hint);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "bezier_teapot.hpp"
 #include "bezier_clipping.hpp"
 #include "bezier_random.hpp"
 #include "core/fixtures.hpp"
@@ -22,10 +23,7 @@ namespace {
 using test_random::random_patch;
 using test_random::random_point;
 
-Point along(const Ray& ray, double t) {
-    return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
-            ray.origin[2] + t * ray.direction[2]};
-}
+using test_teapot::along;
 
 double diagonal(const TriangularPatch& patch) { return box_of(patch.control_points()).diagonal(); }
 

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "bezier_teapot.hpp"
 #include "bezier_reference.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
@@ -49,7 +50,7 @@ Point cross(const Point& a, const Point& b) {
 double length(const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 Point unit(const Point& a) { return scaled(1 / length(a), a); }
 
-std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
+using test_teapot::teapot;
 
 // The teapot: its patches, the reference over them, and the scene under test.
 struct Teapot {

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bezier_teapot.hpp"
 #include "patch_scene.hpp"
 #include "read_bpt.hpp"
 #include "render.hpp"
@@ -42,7 +43,7 @@ Camera above(double height = 4) {
     return Camera{{0, 0, height}, {0, 0, 0}, {0, 1, 0}, degrees(2 * std::atan(0.5))};
 }
 
-std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
+using test_teapot::teapot;
 
 // The sRGB byte of a linear intensity (IEC 61966-2-1), written out here independently.
 int srgb(double linear) {

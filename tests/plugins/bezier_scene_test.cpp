@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bezier_teapot.hpp"
 #include "bezier_random.hpp"
 #include "core/fixtures.hpp"
 #include "flat_subdivision.hpp"
@@ -30,10 +31,7 @@ namespace {
 
 using test_random::random_point;
 
-Point along(const Ray& ray, double t) {
-    return {ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
-            ray.origin[2] + t * ray.direction[2]};
-}
+using test_teapot::along;
 
 TriangularPatch flat_patch() {
     return TriangularPatch(1, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
@@ -43,7 +41,7 @@ Ray downward(double x, double y) {
     return Ray{{x, y, 5}, {0, 0, -1}};
 }
 
-std::vector<TriangularPatch> teapot() { return to_triangular(read_bpt(SXK_TEST_DATA_DIR "/teapot.bpt")); }
+using test_teapot::teapot;
 
 // A curved patch of the given degree over the unit triangle: a flat net lifted and jittered,
 // so that it bends but does not fold over itself.
