@@ -18,7 +18,7 @@ std::vector<ElementId> with_vertex_in(const SpatialIndex::Trees& trees, const Me
     detail::element_tree<D>(trees).tree.query(detail::bgi::intersects(Tree::box_of(corners)),
                                               std::back_inserter(candidates));
     auto inside = [&](VertexId v) {
-        const Point& p = detail::position(mesh, v, positions);
+        const Point& p = position(mesh, v, positions);
         for (std::size_t k = 0; k < static_cast<std::size_t>(D); ++k)
             if (p[k] < low[k] || p[k] > high[k]) return false;
         return true;

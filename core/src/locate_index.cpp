@@ -94,7 +94,7 @@ void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) 
     }
     for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
         if (mesh.vertex_element(v) == invalid_id) continue;
-        const Point& p = detail::position(mesh, v, positions);
+        const Point& p = position(mesh, v, positions);
         for (std::size_t k = 0; k < 3; ++k) {
             grid.low[k] = std::min(grid.low[k], p[k]);
             high[k] = std::max(high[k], p[k]);
@@ -119,7 +119,7 @@ void build_seeds(detail::SeedGrid& grid, const Mesh& mesh, Positions positions) 
         const Simplex& s = mesh.simplex(t);
         Point centroid{0, 0, 0};
         for (int j = 0; j < s.count(); ++j)
-            for (std::size_t k = 0; k < 3; ++k) centroid[k] += detail::position(mesh, s.vertex(j), positions)[k] / s.count();
+            for (std::size_t k = 0; k < 3; ++k) centroid[k] += position(mesh, s.vertex(j), positions)[k] / s.count();
         if (const std::size_t cell = grid.cell_of(centroid, d); cell != detail::SeedGrid::npos)
             grid.seeds[cell].store(t, std::memory_order_relaxed);
     }

@@ -8,11 +8,6 @@
 namespace sxk {
 namespace {
 
-// Boost orders the candidates by distances it computes in the boxes' single precision: a later
-// box may be nearer, in double precision, than the current one by a few float units. Stopping
-// only past this factor keeps every box that may hold something nearer.
-constexpr double slack = 1 + 1e-5;
-
 template <int D>
 BoundaryPoint nearest(const SpatialIndex::Trees& trees, const Mesh& mesh, const Point& x, Positions positions) {
     using Tree = detail::BoxTree<D>;
@@ -26,7 +21,7 @@ BoundaryPoint nearest(const SpatialIndex::Trees& trees, const Mesh& mesh, const 
     const auto everything = static_cast<unsigned>(tree.size());
     for (auto it = tree.qbegin(detail::bgi::nearest(q, everything)); it != tree.qend(); ++it) {
         const double box_distance = std::sqrt(static_cast<double>(detail::bg::comparable_distance(q, it->first)));
-        if (best.found() && box_distance > best.distance * slack) break;
+        if (best.found() && box_distance > best.distance * detail::float_box_slack) break;
         boxes.any_member(it->second, [&](FaceId f) {
             const BoundaryPoint candidate = nearest_point_on_face(mesh, f, x, positions);
             if (candidate.distance < best.distance) best = candidate;

@@ -59,7 +59,7 @@ Location locate_on_surface(const SpatialIndex::Trees& trees, const Mesh& mesh, c
                 Point p{};
                 for (int j = 0; j < 3; ++j)
                     for (std::size_t k = 0; k < 3; ++k)
-                        p[k] += found.barycentric[static_cast<std::size_t>(j)] * detail::position(mesh, s.vertex(j), positions)[k];
+                        p[k] += found.barycentric[static_cast<std::size_t>(j)] * position(mesh, s.vertex(j), positions)[k];
                 return p;
             }();
             if (const double distance = detail::distance_squared(q, x); distance < best_distance) {

@@ -8,11 +8,6 @@
 namespace sxk {
 namespace {
 
-// Boost orders the candidates by distances it computes in the boxes' single precision: a later
-// box may be nearer, in double precision, than the current one by a few float units. Stopping
-// only past this factor keeps every box that may hold something nearer.
-constexpr double slack = 1 + 1e-5;
-
 template <int D>
 RayHit first_hit(const detail::BoxTree<D>& boxes, const Mesh& mesh, const Point& o, const Point& d, Positions positions,
                  bool surface) {
@@ -41,7 +36,7 @@ RayHit first_hit(const detail::BoxTree<D>& boxes, const Mesh& mesh, const Point&
          it != tree.qend(); ++it) {
         // a box's distance from the origin bounds the distance of every hit inside it
         const double box_distance = std::sqrt(static_cast<double>(detail::bg::comparable_distance(origin, it->first)));
-        if (best.found() && box_distance > best.t * length * slack) break;
+        if (best.found() && box_distance > best.t * length * detail::float_box_slack) break;
         boxes.any_member(it->second, [&](std::uint32_t id) {
             const RayHit hit = surface ? ray_meets_triangle_element(mesh, id, o, d, positions)
                                        : ray_meets_face(mesh, id, o, d, positions);

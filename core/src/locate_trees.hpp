@@ -33,10 +33,11 @@ namespace sxk::detail {
 namespace bg = boost::geometry;
 namespace bgi = boost::geometry::index;
 
-// Where the index reads positions.
-inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
-    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-}
+// Boost orders the candidates by distances it computes in the boxes' single precision: a later
+// box may be nearer, in double precision, than the current one by a few float units. A search
+// for the nearest stops only past this factor, which keeps every box that may hold something
+// nearer.
+inline constexpr double float_box_slack = 1 + 1e-5;
 
 // std::nextafter toward -inf (+inf) for a finite float, by its bits: the libm call was an eighth
 // of re-boxing every element of a frame (perf, the 1M Kuhn cube bending). Zero steps to the

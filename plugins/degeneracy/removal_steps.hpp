@@ -69,9 +69,6 @@ Refused collapse_one_way(Mesh& mesh, VertexId a, VertexId b, bool reverse, const
 
 // ---- geometry in the measured positions -----------------------------------------------------
 
-inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
-    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-}
 inline double distance(const Point& a, const Point& b) { return std::sqrt(dot(minus(a, b), minus(a, b))); }
 
 // Thesis aspect ratio of the simplex with these vertices (3 or 4), in the measured positions.

@@ -329,7 +329,7 @@ private:
             const Simplex& tau = m_mesh.simplex(t);
             std::array<Point, 4> x{};
             for (int i = 0; i < tau.count(); ++i)
-                x[static_cast<std::size_t>(i)] = detail::position(m_mesh, tau.vertex(i), m_options.positions);
+                x[static_cast<std::size_t>(i)] = position(m_mesh, tau.vertex(i), m_options.positions);
             const std::span<const Point> points(x.data(), static_cast<std::size_t>(tau.count()));
             auto take = [&](const auto& values) {
                 for (const double a : values) {

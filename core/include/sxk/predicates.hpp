@@ -43,6 +43,15 @@ SXK_API Sign normal_alignment(const Point& a, const Point& b, const Point& c, co
 
 enum class Positions { reference, deformed };
 
+// "reference" or "deformed", as messages name the set.
+inline const char* to_string(Positions positions) {
+    return positions == Positions::reference ? "reference" : "deformed";
+}
+// The position of v in `positions`.
+inline const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
+    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
+}
+
 // Compares the distances of a and b from the plane through p, q, r, exactly: negative when a
 // is nearer, positive when b is, zero when they are equally far (or p, q, r are collinear).
 // For a segment ab that crosses the plane it tells which end is nearer the crossing, measured

@@ -258,7 +258,7 @@ private:
                                        operation + ": new element " + to_text(child) +
                                            (after == Sign::zero ? " would be flat"
                                                                 : " would be inverted") +
-                                           " in the " + positions_text(positions) + " positions"};
+                                           " in the " + to_string(positions) + " positions"};
                     }
                 }
             }

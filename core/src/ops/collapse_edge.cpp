@@ -50,7 +50,7 @@ bool on_hull_of(const Simplex& face, const Mesh& mesh, const Point& p, Positions
 }
 
 std::string in_the(Positions positions) {
-    return std::string(" in the ") + detail::positions_text(positions) + " positions";
+    return std::string(" in the ") + to_string(positions) + " positions";
 }
 
 Outcome<VertexId> collapse(Mesh& mesh, VertexId from, VertexId to, const detail::MovedVertex& moved,

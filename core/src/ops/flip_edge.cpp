@@ -32,13 +32,6 @@ std::string vertex_set(VertexId u, VertexId v) {
     return "{" + std::to_string(u) + "," + std::to_string(v) + "}";
 }
 
-const char* positions_name(Positions positions) {
-    return positions == Positions::reference ? "reference" : "deformed";
-}
-
-const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
-    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-}
 
 }  // namespace
 
@@ -94,7 +87,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
                     return Refusal{detail::orientation_code(s),
                                    "flip_edge: new triangle " + vertex_set(triangle) +
                                        " would be " + (s == Sign::zero ? "flat" : "inverted") +
-                                       " in the " + positions_name(positions) + " positions"};
+                                       " in the " + to_string(positions) + " positions"};
             }
         } else {
             // a triangle in space has no orientation of its own, but a collinear one has no
@@ -109,7 +102,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
                     return Refusal{RefusalCode::would_flatten,
                                    "flip_edge: new triangle " + vertex_set(triangle) +
                                    " would be degenerate (collinear vertices) in the " +
-                                   positions_name(positions) + " positions"};
+                                   to_string(positions) + " positions"};
             }
             // the new triangles' normals point in opposite directions: the surface would fold
             // over the new edge (thesis §5.3: flips on 3D surfaces must be checked for failure
@@ -122,7 +115,7 @@ Outcome<std::array<ElementId, 2>> flip_edge(Mesh& mesh, FaceId edge, const FlipO
                                    vertex_set(c, d) +
                                    " would fold the surface (the new triangles' normals are "
                                    "opposite) in the " +
-                                   positions_name(positions) + " positions"};
+                                   to_string(positions) + " positions"};
         }
     }
 

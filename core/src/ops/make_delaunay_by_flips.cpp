@@ -10,10 +10,6 @@
 namespace sxk {
 namespace {
 
-const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
-    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-}
-
 bool is_planar_triangle_mesh(const Mesh& mesh) {
     return mesh.topological_dimension() == 2 && mesh.ambient_dimension() == 2;
 }

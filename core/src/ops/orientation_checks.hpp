@@ -18,10 +18,6 @@
 
 namespace sxk::detail {
 
-inline const char* positions_text(Positions positions) {
-    return positions == Positions::reference ? "reference" : "deformed";
-}
-
 // A vertex whose position is about to change (the new vertex of a split, the surviving vertex
 // of a collapse to a point): its two positions override the mesh's.
 struct MovedVertex {
@@ -89,7 +85,7 @@ inline std::optional<Refusal> refuse_bad_children(const Mesh& mesh,
                 return Refusal{orientation_code(child),
                                std::string(operation) + ": new element " + to_text(children[i]) +
                                    (child == Sign::zero ? " would be flat" : " would be inverted") +
-                                   " in the " + positions_text(positions) + " positions",
+                                   " in the " + to_string(positions) + " positions",
                                i};
         }
     }

@@ -17,7 +17,7 @@ namespace sxk {
 namespace {
 
 // The checks every entry point makes before locating x; nothing when they pass.
-std::optional<Refusal> refuse_arguments(const Mesh& mesh, double h) {
+std::optional<Refusal> refuse_planar_arguments(const Mesh& mesh, double h) {
     if (mesh.topological_dimension() == 3)
         return Refusal{RefusalCode::wrong_dimension,
                        "refine_around: tetrahedral meshes use refine_around_tetrahedra"};
@@ -63,14 +63,14 @@ Outcome<RefineAroundResult> refine_from(Mesh& mesh, ElementId start, const Point
 }  // namespace
 
 Outcome<RefineAroundResult> refine_around(Mesh& mesh, const Point& x, double h, ElementId hint) {
-    if (auto refused = refuse_arguments(mesh, h))
+    if (auto refused = refuse_planar_arguments(mesh, h))
         return *refused;
     return refine_from(mesh, locate_triangle(mesh, x, hint), x, h);
 }
 
 Outcome<RefineAroundResult> refine_around(Mesh& mesh, const Point& x, double h, const SpatialIndex& index,
                                           ElementId hint) {
-    if (auto refused = refuse_arguments(mesh, h))
+    if (auto refused = refuse_planar_arguments(mesh, h))
         return *refused;
     if (auto refused = detail::refuse_index(mesh, index, "refine_around"))
         return *refused;

@@ -18,7 +18,7 @@ namespace sxk {
 namespace {
 
 // The checks every entry point makes before locating x; nothing when they pass.
-std::optional<Refusal> refuse_arguments(const Mesh& mesh, double h) {
+std::optional<Refusal> refuse_tetrahedral_arguments(const Mesh& mesh, double h) {
     if (mesh.topological_dimension() != 3)
         return Refusal{RefusalCode::wrong_dimension,
                        "refine_around_tetrahedra: the mesh has triangles, not tetrahedra"};
@@ -97,26 +97,26 @@ Outcome<std::size_t> refine_stateless(Mesh& mesh, ElementId t, const Point& x, d
 }  // namespace
 
 Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h) {
-    if (auto refused = refuse_arguments(state.mesh(), h)) return *refused;
+    if (auto refused = refuse_tetrahedral_arguments(state.mesh(), h)) return *refused;
     if (auto refused = refuse_stale(state)) return *refused;
     return refine_with_state(state, locate_tetrahedron(state.mesh(), x, state.last_child()), x, h);
 }
 
 Outcome<std::size_t> refine_around_tetrahedra(TetBisection& state, const Point& x, double h,
                                               const SpatialIndex& index) {
-    if (auto refused = refuse_arguments(state.mesh(), h)) return *refused;
+    if (auto refused = refuse_tetrahedral_arguments(state.mesh(), h)) return *refused;
     if (auto refused = refuse_stale(state)) return *refused;
     if (auto refused = detail::refuse_index(state.mesh(), index, "refine_around_tetrahedra")) return *refused;
     return refine_with_state(state, index.locate(x, state.last_child()).element, x, h);
 }
 
 Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h) {
-    if (auto refused = refuse_arguments(mesh, h)) return *refused;
+    if (auto refused = refuse_tetrahedral_arguments(mesh, h)) return *refused;
     return refine_stateless(mesh, locate_tetrahedron(mesh, x, invalid_id), x, h);
 }
 
 Outcome<std::size_t> refine_around_tetrahedra(Mesh& mesh, const Point& x, double h, const SpatialIndex& index) {
-    if (auto refused = refuse_arguments(mesh, h)) return *refused;
+    if (auto refused = refuse_tetrahedral_arguments(mesh, h)) return *refused;
     if (auto refused = detail::refuse_index(mesh, index, "refine_around_tetrahedra")) return *refused;
     return refine_stateless(mesh, index.locate(x).element, x, h);
 }

@@ -19,14 +19,6 @@ using Triangle = std::array<VertexId, 3>;  // counter-clockwise
 
 constexpr std::array<Positions, 2> both_positions{Positions::reference, Positions::deformed};
 
-const char* positions_name(Positions positions) {
-    return positions == Positions::reference ? "reference" : "deformed";
-}
-
-const Point& position(const Mesh& mesh, VertexId v, Positions positions) {
-    return positions == Positions::reference ? mesh.reference(v) : mesh.deformed(v);
-}
-
 // The triangle (a, b, c) is proper in both position sets: counter-clockwise (orient2d strictly
 // positive) in the plane; not collinear on a surface in space.
 bool turns_left_in_both(const Mesh& mesh, VertexId a, VertexId b, VertexId c) {
@@ -202,7 +194,7 @@ Outcome<std::vector<ElementId>> remove_node(Mesh& mesh, VertexId v, Positions po
                 return Refusal{RefusalCode::not_applicable,
                                "remove_node: element " + std::to_string(t) + " of the star of " +
                                vertex_text + " is not counter-clockwise in the " +
-                               positions_name(s) + " positions"};
+                               to_string(s) + " positions"};
     const auto [lowest, highest] = std::minmax_element(
         around.begin(), around.end(),
         [&](ElementId s, ElementId t) { return mesh.label(s) < mesh.label(t); });

@@ -127,7 +127,7 @@ std::optional<Refusal> AmpClosurePlan::bisect(int n, std::vector<int>& work) {
                 return Refusal{orientation_code(after),
                                "new element " + to_text(children[i]) +
                                    (after == Sign::zero ? " would be flat" : " would be inverted") +
-                                   " in the " + positions_text(positions) + " positions",
+                                   " in the " + to_string(positions) + " positions",
                                i};
             }
         }

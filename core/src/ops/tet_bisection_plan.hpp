@@ -242,7 +242,7 @@ private:
                         orientation_code(after),
                         "split_edge: new element " + to_text(children[i]) +
                             (after == Sign::zero ? " would be flat" : " would be inverted") +
-                            " in the " + positions_text(positions) + " positions",
+                            " in the " + to_string(positions) + " positions",
                         i};
                 }
             }
