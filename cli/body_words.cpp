@@ -124,7 +124,7 @@ Outcome<elasticity::Options> body_options(std::span<const std::string> words) {
     BodyWords parsed;
     CLI::App app("elasticity simulation", "deform");
     add_body_options(app, parsed);
-    if (auto refused = parse_tool_words(app, words, "deform")) return *refused;
+    if (auto refused = parse_words(app, words, "deform")) return *refused;
     return body_options(parsed);
 }
 

@@ -1,12 +1,12 @@
 // What every plug-in command does with its arguments and its mesh, as the built-in sxk commands
 // do: CLI11 parses the arguments; --help prints the usage and succeeds (exit 0); a usage error
 // prints "sxk: NAME: reason" and a pointer to --help (exit 2); an unreadable mesh prints
-// "sxk: FILE:LINE: reason"; --strict (add_read_options) refuses what the readers repair. Header-only,
-// for the plug-ins in this folder (sxk_add_plugin puts the folder on their include path).
+// "sxk: FILE:LINE: reason"; --strict (add_read_options) refuses what the readers repair. Part of
+// the command-line library (cli/, simplexkit::cli), which sxk_add_plugin links into every plug-in.
 //
-// The checks of numeric options below are shared with the built-in commands too
-// (tools/sxk/cli.hpp includes this header): one reading of a number for every command, so that
-// `nan` or `inf` cannot slip through one command's option while another's refuses it.
+// The built-in commands use it too (tools/sxk/cli.hpp includes this header): one reading of a
+// number for every command, so that `nan` or `inf` cannot slip through one command's option while
+// another's refuses it; one reading and writing of a command's mesh; one "did you mean".
 #pragma once
 
 #include <algorithm>
@@ -378,15 +378,16 @@ inline std::vector<std::string> words_of(const std::string& text) {
     return words;
 }
 
-// The option words a ToolFactory's begin() gets ("--depth", "0.01"), parsed into `app` as the
-// command line would be; a refusal (bad_argument, "TOOL: --depth: ...") when they do not parse.
-inline std::optional<Refusal> parse_tool_words(CLI::App& app, std::span<const std::string> words,
-                                               std::string_view tool) {
+// Another command's option words carried in one option (`--deform WORDS`, split by words_of),
+// parsed into `app` as that command's line would be; a refusal (bad_argument, "COMMAND: --fix:
+// ...") when they do not parse.
+inline std::optional<Refusal> parse_words(CLI::App& app, std::span<const std::string> words,
+                                          std::string_view command) {
     std::vector<std::string> arguments(words.rbegin(), words.rend());  // CLI11 parses from the back
     try {
         app.parse(arguments);
     } catch (const CLI::ParseError& error) {
-        return Refusal{RefusalCode::bad_argument, std::string(tool) + ": " + error.what()};
+        return Refusal{RefusalCode::bad_argument, std::string(command) + ": " + error.what()};
     }
     return std::nullopt;
 }

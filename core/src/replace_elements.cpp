@@ -28,7 +28,9 @@ namespace sxk {
 
 using detail::check_simplex;
 
-namespace {
+// The faces ReplacePlan (below) lists: in detail, not in an anonymous namespace, because the plan
+// is named in mesh.hpp (a class of a named namespace may not hold an anonymous one's types).
+namespace detail {
 
 struct NewFace {
     Simplex sigma;
@@ -43,6 +45,13 @@ struct OldFace {
     FaceId face;
     ElementId across;  // the neighbour across the face (the cache of Mesh::neighbor)
 };
+
+}  // namespace detail
+
+using detail::NewFace;
+using detail::OldFace;
+
+namespace {
 
 template <class Sorted, class T>
 bool sorted_contains(const Sorted& sorted, const T& value) {

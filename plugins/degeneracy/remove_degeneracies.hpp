@@ -73,8 +73,8 @@
 namespace sxk::degeneracy {
 
 // Finds every degenerate element of the mesh and removes them. Refuses (mesh untouched) when
-// an option is out of range: "remove_degeneracies: aspect ratio threshold must be in (0, 1),
-// not X" and the like. Elements that are flat or inverted already (exact orientation zero or
+// an option is out of range (Options::check: "remove_degeneracies: aspect_ratio 2 is not in
+// (0, 1)" and the like). Elements that are flat or inverted already (exact orientation zero or
 // negative) are degenerate too, but splits refuse to cut them (their pieces would not be
 // positive), so only collapses, flips or cutting free remove them.
 Outcome<Report> remove_degeneracies(Mesh& mesh, const Options& options = {});

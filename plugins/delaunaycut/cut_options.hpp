@@ -1,5 +1,5 @@
-// The planar cutter's options as words: `sxk cut delaunay` and the ToolFactory's sessions read
-// them the same way.
+// The Delaunay cutters' options as `sxk cut delaunay`'s words, read into the tool's Options
+// (sxk/plugins/delaunaycut.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>

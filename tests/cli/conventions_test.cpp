@@ -30,7 +30,9 @@ TEST(SxkConventions, HelpCommandPrintsTheCommandsHelp) {
     EXPECT_EQ(all.out, sxk({"--help"}).out);
     EXPECT_NE(all.out.find("Run 'sxk help COMMAND' (or 'sxk COMMAND --help') for a command's options."),
               std::string::npos);
-    if (SXK_HAVE_STATS) EXPECT_EQ(sxk({"help", "stats"}).out, sxk({"stats", "--help"}).out);
+    if (SXK_HAVE_STATS) {
+        EXPECT_EQ(sxk({"help", "stats"}).out, sxk({"stats", "--help"}).out);
+    }
 }
 
 TEST(SxkConventions, AMistypedCommandGetsWhatWasMeant) {
@@ -75,6 +77,11 @@ TEST(SxkConventions, ConvertReportsWhatItWrote) {
                                ": 26 vertices, 48 triangles (the boundary of 48 tetrahedra)\n");
     const ProcessResult volume = sxk({"convert", mesh.string(), vtu.string()});
     EXPECT_EQ(volume.out, mesh.string() + " -> " + vtu.string() + ": 27 vertices, 48 tetrahedra\n");
+    // generate too: a cube to STL on standard output is its boundary, said on standard error
+    const ProcessResult stl = sxk({"generate", "-", "--format", "stl", "--cells", "1"});
+    EXPECT_EQ(stl.exit_code, 0) << stl.err;
+    EXPECT_EQ(stl.err, "-: 8 vertices, 12 triangles (the boundary of 6 tetrahedra)\n");
+    EXPECT_EQ(stl.out.size(), 84u + 12u * 50u);  // binary STL: header, count, 50 bytes a triangle
     const ProcessResult json = sxk({"convert", mesh.string(), off.string(), "--json"});
     EXPECT_EQ(json.exit_code, 0) << json.err;
     EXPECT_EQ(json.out, "{\n  \"input\": \"" + mesh.string() + "\",\n  \"output\": \"" + off.string() +

@@ -66,7 +66,9 @@ TEST(FlatMap, AgreesWithStdMapThroughGrowth) {
         const auto it = peer.find(key);
         const std::uint32_t* value = map.find(key);
         ASSERT_EQ(value != nullptr, it != peer.end()) << "key " << key << " (seed " << seed << ")";
-        if (value != nullptr) ASSERT_EQ(*value, it->second) << "key " << key << " (seed " << seed << ")";
+        if (value != nullptr) {
+            ASSERT_EQ(*value, it->second) << "key " << key << " (seed " << seed << ")";
+        }
     }
     *map.find(peer.begin()->first) = 7;  // found values are the map's own
     EXPECT_EQ(*map.find(peer.begin()->first), 7u);

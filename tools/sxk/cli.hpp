@@ -81,6 +81,19 @@ bool save_mesh(Context& context, const Mesh& mesh, const std::string& file, cons
 bool read_word_lines(Context& context, const std::string& file,
                      const std::function<std::string(std::size_t line, const std::vector<std::string>& words)>& take);
 
+// The format of a mesh file name: by extension, or --format for "-"; nullopt when it names none.
+std::optional<Format> format_of(const Context& context, const std::string& file);
+
+// What a file of `format` holds of `mesh`: the vertices and elements, or for a tetrahedral mesh in
+// a format of triangles (.off .obj .stl .ply) its boundary surface's vertices and triangles.
+struct Written {
+    std::size_t vertices = 0, elements = 0;
+    bool surface = false;  // the boundary of the tetrahedra
+};
+Written written_of(const Mesh& mesh, Format format);
+// "27 vertices, 48 tetrahedra", or "26 vertices, 48 triangles (the boundary of 48 tetrahedra)".
+std::string written_text(const Mesh& mesh, const Written& written);
+
 // "tetrahedron" / "triangle"; element_count_text: "1 tetrahedron", "2 tetrahedra".
 const char* element_kind(const Mesh& mesh);
 std::string element_count_text(const Mesh& mesh, std::size_t count);

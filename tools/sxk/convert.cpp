@@ -3,7 +3,6 @@
 // orders the elements by their lowest vertex before writing. What is reported is what OUT holds: a
 // tetrahedral mesh written to a format of triangles (.off .obj .stl .ply) is its boundary surface.
 #include <memory>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -24,24 +23,6 @@ struct ConvertOptions {
     bool json = false;
 };
 
-// What a file of `format` holds of `mesh`: the vertices and elements, or for a tetrahedral mesh in
-// a format of triangles its boundary surface's vertices and triangles.
-struct Written {
-    std::size_t vertices = 0, elements = 0;
-    bool surface = false;  // the boundary of the tetrahedra
-};
-
-Written written_of(const Mesh& mesh, Format format) {
-    const bool triangles_only =
-        format == Format::off || format == Format::obj || format == Format::stl || format == Format::ply;
-    if (!triangles_only || mesh.topological_dimension() != 3) return {mesh.vertex_count(), mesh.element_count(), false};
-    const std::vector<FaceId> boundary = mesh.boundary_faces();
-    std::set<VertexId> on_boundary;
-    for (const FaceId f : boundary)
-        for (const VertexId v : mesh.face_simplex(f).vertices()) on_boundary.insert(v);
-    return {on_boundary.size(), boundary.size(), true};
-}
-
 int run_convert(Context& context, const ConvertOptions& options) {
     // refuse an unknown output format before spending time on the input
     if (const auto unknown = unknown_format(context, options.output, true)) {
@@ -49,8 +30,7 @@ int run_convert(Context& context, const ConvertOptions& options) {
         return exit_usage;
     }
     // a format with one encoding would silently ignore the request
-    const Format format = *(options.output == "-" ? format_from_name(context.format)  // checked above
-                                                  : format_from_extension(options.output));
+    const Format format = *format_of(context, options.output);  // checked above
     const bool has_encodings = format == Format::gmsh || format == Format::vtu || format == Format::vtk ||
                                format == Format::stl || format == Format::ply;
     if (options.encoding == "binary" && !has_encodings) {
@@ -93,13 +73,7 @@ int run_convert(Context& context, const ConvertOptions& options) {
         context.report() << json.dump(2) << '\n';
         return exit_success;
     }
-    context.report() << options.input << " -> " << options.output << ": ";
-    if (written.surface)
-        context.report() << written.vertices << " vertices, " << written.elements
-                    << (written.elements == 1 ? " triangle" : " triangles") << " (the boundary of "
-                    << element_count_text(*mesh) << ")";
-    else
-        context.report() << mesh->vertex_count() << " vertices, " << element_count_text(*mesh);
+    context.report() << options.input << " -> " << options.output << ": " << written_text(*mesh, written);
     if (options.reorient) context.report() << ", " << report.reoriented << " reoriented";
     if (options.reorder)
         context.report() << ", bandwidth " << bandwidth_before << " -> " << vertex_bandwidth(*mesh);

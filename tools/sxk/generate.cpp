@@ -50,7 +50,7 @@ int write_generated(Context& context, const Outcome<Mesh>& mesh, const std::stri
         return exit_usage;
     }
     if (!save_mesh(context, *mesh, output)) return exit_refused;
-    context.report() << output << ": " << mesh->vertex_count() << " vertices, " << element_count_text(*mesh) << '\n';
+    context.report() << output << ": " << written_text(*mesh, written_of(*mesh, *format_of(context, output))) << '\n';
     return exit_success;
 }
 

@@ -1,5 +1,6 @@
 #include <iostream>
 #include <new>
+#include <set>
 #include <sstream>
 
 #include "cli.hpp"
@@ -113,6 +114,27 @@ bool read_word_lines(Context& context, const std::string& file,
         }
     }
     return true;
+}
+
+std::optional<Format> format_of(const Context& context, const std::string& file) {
+    return file == "-" ? format_from_name(context.format) : format_from_extension(file);
+}
+
+Written written_of(const Mesh& mesh, Format format) {
+    const bool triangles_only =
+        format == Format::off || format == Format::obj || format == Format::stl || format == Format::ply;
+    if (!triangles_only || mesh.topological_dimension() != 3) return {mesh.vertex_count(), mesh.element_count(), false};
+    const std::vector<FaceId> boundary = mesh.boundary_faces();
+    std::set<VertexId> on_boundary;
+    for (const FaceId f : boundary)
+        for (const VertexId v : mesh.face_simplex(f).vertices()) on_boundary.insert(v);
+    return {on_boundary.size(), boundary.size(), true};
+}
+
+std::string written_text(const Mesh& mesh, const Written& written) {
+    if (!written.surface) return std::to_string(mesh.vertex_count()) + " vertices, " + element_count_text(mesh);
+    return std::to_string(written.vertices) + " vertices, " + std::to_string(written.elements) +
+           (written.elements == 1 ? " triangle" : " triangles") + " (the boundary of " + element_count_text(mesh) + ")";
 }
 
 std::string element_count_text(const Mesh& mesh, std::size_t count) {

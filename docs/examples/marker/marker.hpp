@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "sxk/outcome.hpp"
+#include "sxk/plugins/option_checks.hpp"
 
 namespace sxk::marker {
 
@@ -23,11 +24,11 @@ struct Options {
     int label = 1;
     double radius = 0.1;
 
-    // What begin_tool refuses before a session begins, with a code.
+    // What begin_tool refuses before a session begins, with a code: the message every plug-in's
+    // options give for a number out of range ("marker: radius 0 is not in (0, 1e+300]").
     Outcome<Done> check() const {
-        if (!(radius > 0 && radius < 1e300))
-            return Refusal{RefusalCode::bad_argument, "marker: radius " + std::to_string(radius) + " is not positive"};
-        return Done{};
+        using namespace option_checks;
+        return first_refusal({in(tool_name, "radius", radius, {0, 1e300, true, false})});
     }
 };
 

@@ -65,7 +65,7 @@ TEST(Marker, RefusesOptionsWithTheReason) {
     const auto refused = host().begin_tool(mesh, options);
     ASSERT_FALSE(refused);
     EXPECT_EQ(refused.code(), RefusalCode::bad_argument);
-    EXPECT_EQ(refused.reason(), "marker: radius 0.000000 is not positive");
+    EXPECT_EQ(refused.reason(), "marker: radius 0 is not in (0, 1e+300]");
     EXPECT_TRUE(mesh.validate().ok());
 }
 
