@@ -1,7 +1,7 @@
 // The files a plug-in command will write, checked before it reads or changes anything: OUT and
 // its side outputs (pictures: `cut delaunay --svg`, `--histogram`). A command that replaced OUT
 // and then failed on a picture would exit 1 with OUT already changed, and a picture named like
-// the input mesh would overwrite it. Header-only, for the plug-ins in this folder, beside
+// the input mesh would overwrite it. Part of the command-line library (cli/), beside
 // command_line.hpp (whose write_error_line gives the "FILE:0: cannot write: why" form).
 #pragma once
 

@@ -1,7 +1,7 @@
 // A spinner with the elapsed time on stderr, for work that may take more than about a second
 // (reading a big mesh, a quality pass over 200k tetrahedra, removing the degeneracies of the
 // femur). The built-in commands (tools/sxk/progress.hpp) and the plug-ins' commands share it, as
-// they share command_line.hpp: header-only, so a plug-in needs nothing linked for it.
+// they share command_line.hpp (the command-line library, cli/).
 //
 // It draws nothing during the first `delay`, so quick runs stay quiet, and nothing at all unless
 // stderr is a terminal: pipes, logs and tests never see control characters. The line is erased

@@ -22,7 +22,7 @@
 // failed or killed, OUT.pvd is a valid collection of exactly the files this run wrote whole (a
 // failed .vtu write leaves no file and stops the command with exit 1). The cost is one small file
 // per written step, beside the step's .vtu itself.
-// Header-only, for the plug-ins in this folder (plugins/ is on every plug-in's include path).
+// Part of the command-line library (cli/), which every plug-in links.
 #pragma once
 
 #include <fcntl.h>
