@@ -126,8 +126,8 @@ struct ToolContext {
     // A simulation of the session's mesh (the elasticity plug-in's, or the application's own),
     // owned by the application, outliving the session. A tool that works on a deforming body
     // (the snap cutter relaxes it after every step, the needle holds the nodes on its shaft)
-    // uses it; nullptr: the tool's own default (geometry only, or a body the tool makes from
-    // its options).
+    // uses it; nullptr: the tool works on the shape as it is (the snap cutter relaxes nothing,
+    // the needle is geometry only and its first step says so).
     Simulation* simulation = nullptr;
 };
 
