@@ -128,4 +128,15 @@ Outcome<elasticity::Options> body_options(std::span<const std::string> words) {
     return body_options(parsed);
 }
 
+Outcome<std::unique_ptr<Simulation>> simulation_from_words(const Services* host, Mesh& mesh,
+                                                           const std::string& words) {
+    auto elasticity = host ? host->service<elasticity::ElasticityService>()
+                           : Outcome<elasticity::ElasticityService*>(
+                                 Refusal{RefusalCode::not_found, "no plug-in host"});
+    if (!elasticity) return Refusal{elasticity.code(), elasticity.reason() + " (the elasticity plug-in)"};
+    const Outcome<elasticity::Options> body = body_options(words_of(words));
+    if (!body) return body.refusal();
+    return (*elasticity)->simulate(mesh, *body);
+}
+
 }  // namespace sxk::cli

@@ -8,6 +8,7 @@
 //     --tol  --max-iterations  --stop reactions|external  --rounding
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include "sxk/outcome.hpp"
+#include "sxk/plugin.hpp"
 #include "sxk/plugins/elasticity.hpp"
 
 namespace sxk::cli {
@@ -44,5 +46,12 @@ Outcome<elasticity::Options> body_options(const BodyWords& words, std::string_vi
 // The options of `--deform WORDS` (the words split as a shell would not: at spaces); refuses
 // what CLI11 or body_options refuses, as "deform: " + the reason.
 Outcome<elasticity::Options> body_options(std::span<const std::string> words);
+
+// The simulation `--deform WORDS` asks for (`sxk cut snap`, `sxk needle`), not yet solved: the
+// elasticity plug-in's service from `host`, the words read, the body made on `mesh`. Refuses
+// with what went wrong, for the command to print after "--deform: " (a missing plug-in says
+// "(the elasticity plug-in)").
+Outcome<std::unique_ptr<Simulation>> simulation_from_words(const Services* host, Mesh& mesh,
+                                                           const std::string& words);
 
 }  // namespace sxk::cli

@@ -197,19 +197,7 @@ public:
         }
         std::unique_ptr<Simulation> simulation;
         if (!o.deform.empty()) {
-            auto elasticity = m_host ? m_host->service<elasticity::ElasticityService>()
-                                          : Outcome<elasticity::ElasticityService*>(
-                                                Refusal{RefusalCode::not_found, "no plug-in host"});
-            if (!elasticity) {
-                err << "sxk: needle: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
-                return cli::exit_usage;
-            }
-            const Outcome<elasticity::Options> body = cli::body_options(words_of(o.deform));
-            if (!body) {
-                err << "sxk: needle: --deform: " << body.reason() << '\n';
-                return cli::exit_usage;
-            }
-            auto made = (*elasticity)->simulate(*mesh, *body);
+            auto made = cli::simulation_from_words(m_host, *mesh, o.deform);
             if (!made) {
                 err << "sxk: needle: --deform: " << made.reason() << '\n';
                 return cli::exit_usage;

@@ -175,19 +175,7 @@ public:
         std::unique_ptr<Simulation> simulation;
         std::vector<Point> unloaded;  // with --deform: IN's deformed positions, before the first solve
         if (!options.deform.empty()) {
-            auto elasticity = m_host ? m_host->service<elasticity::ElasticityService>()
-                                          : Outcome<elasticity::ElasticityService*>(
-                                                Refusal{RefusalCode::not_found, "no plug-in host"});
-            if (!elasticity) {
-                err << "sxk: cut snap: --deform: " << elasticity.reason() << " (the elasticity plug-in)\n";
-                return cli::exit_usage;
-            }
-            const Outcome<elasticity::Options> body = cli::body_options(words_of(options.deform));
-            if (!body) {
-                err << "sxk: cut snap: --deform: " << body.reason() << '\n';
-                return cli::exit_usage;
-            }
-            auto made = (*elasticity)->simulate(*mesh, *body);
+            auto made = cli::simulation_from_words(m_host, *mesh, options.deform);
             if (!made) {
                 err << "sxk: cut snap: --deform: " << made.reason() << '\n';
                 return cli::exit_usage;
